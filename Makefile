@@ -1,0 +1,101 @@
+# pathlab: build, test, bench. `make help` says which target you want first.
+
+# ---- settings ---------------------------------------------------------------------------------
+CC      ?= cc
+OPT     ?= -O2
+SAN     ?= 0   # 1: AddressSanitizer + UndefinedBehaviorSanitizer build, in build/san and bin/san
+WERROR  ?= 0   # 1: warnings are errors (CI sets it)
+V       ?= 0   # 1: print whole commands instead of "CC file.c"
+PKGS    := libxml-2.0 stb
+TPKGS   := cmocka
+SUITES  := framework part1 part2 part3 part4 part5
+
+# ---- flags ------------------------------------------------------------------------------------
+WARN     := -Wall -Wextra -Wpedantic -Wshadow -Wno-unused-parameter
+CPPFLAGS += -D_GNU_SOURCE -MMD -MP $(shell pkg-config --cflags $(PKGS))
+CFLAGS   += -std=c11 $(OPT) -g $(WARN) -pthread
+LDLIBS   += $(shell pkg-config --libs $(PKGS)) -lm -pthread
+ifeq ($(WERROR),1)
+  CFLAGS += -Werror
+endif
+ifeq ($(SAN),1)
+  OPT      := -O1
+  CFLAGS   += -fsanitize=address,undefined -fno-omit-frame-pointer -fno-sanitize-recover=undefined
+  LDFLAGS  += -fsanitize=address,undefined
+  BUILD    := build/san
+  BIN      := bin/san
+else
+  BUILD    := build/release
+  BIN      := bin
+endif
+ifeq ($(V),1)
+  Q :=
+  say = @true
+else
+  Q := @
+  say = @printf '  %-6s %s\n'
+endif
+
+# ---- sources: every .c under these folders is built; no list to keep in sync -------------------
+FRAMEWORK_SRC := $(filter-out framework/main.c,$(wildcard framework/*.c))
+PARTS_SRC     := $(wildcard parts/*/*.c)
+COMMON_SRC    := $(wildcard tests/common/*.c)
+LIB_OBJ       := $(patsubst %.c,$(BUILD)/%.o,$(FRAMEWORK_SRC) $(PARTS_SRC))
+COMMON_OBJ    := $(patsubst %.c,$(BUILD)/%.o,$(COMMON_SRC))
+suite_obj      = $(patsubst %.c,$(BUILD)/%.o,$(wildcard tests/$(1)/*.c))
+
+.PHONY: all help test $(addprefix test-,$(SUITES)) clean bench
+.DEFAULT_GOAL := all
+
+all: $(BIN)/pathtracer
+
+help:
+	@echo "pathlab targets:"
+	@echo "  make                  build bin/pathtracer (start here)"
+	@echo "  make test-part1       run part 1's tests (likewise test-part2 .. test-part5)"
+	@echo "  make test-framework   run the framework's tests"
+	@echo "  make test             run every suite"
+	@echo "  make test SAN=1       the same under AddressSanitizer + UBSan"
+	@echo "  make bench            speed figures (not a test)"
+	@echo "  make clean            remove build/ and bin/"
+	@echo "settings: V=1 (full commands), WERROR=1, SAN=1, OPT=-O0"
+
+$(BIN)/pathtracer: $(BUILD)/framework/main.o $(LIB_OBJ)
+	$(say) LD $@
+	@mkdir -p $(dir $@)
+	$(Q)$(CC) $(LDFLAGS) -o $@ $^ $(LDLIBS)
+
+$(BUILD)/%.o: %.c
+	$(say) CC $<
+	@mkdir -p $(dir $@)
+	$(Q)$(CC) $(CPPFLAGS) $(CFLAGS) -c -o $@ $<
+
+# Tests: tests/<suite>/*.c link into one binary per suite, so a crash in one part costs no other.
+$(BUILD)/tests/%.o: CPPFLAGS += $(shell pkg-config --cflags $(TPKGS))
+
+define suite_rules
+$(BIN)/test-$(1): $(call suite_obj,$(1)) $(COMMON_OBJ) $(LIB_OBJ)
+	$$(say) LD $$@
+	@mkdir -p $$(dir $$@)
+	$$(Q)$$(CC) $$(LDFLAGS) -o $$@ $$^ $$(LDLIBS) $$(shell pkg-config --libs $(TPKGS))
+
+test-$(1): $(if $(call suite_obj,$(1)),$(BIN)/test-$(1) $(BIN)/pathtracer)
+ifeq ($(strip $(call suite_obj,$(1))),)
+	@echo "test-$(1): no tests yet"
+else
+	@echo "== test-$(1)"
+	$$(Q)$(BIN)/test-$(1)
+endif
+endef
+$(foreach s,$(SUITES),$(eval $(call suite_rules,$(s))))
+
+# Every suite runs even when one fails; the target fails if any did.
+test:
+	@fail=0; for s in $(SUITES); do $(MAKE) --no-print-directory test-$$s || fail=1; done; \
+	 if [ $$fail = 0 ]; then echo "all suites passed"; else echo "some suites FAILED"; exit 1; fi
+
+clean:
+	rm -rf build bin
+
+include $(wildcard tools/*.mk bench/*.mk tests/mutants/*.mk)
+-include $(shell find build -name '*.d' 2>/dev/null)

@@ -1,0 +1,36 @@
+/* Ray-scene queries for the renderer: part 2's BVH when it is implemented, otherwise a linear scan
+ * over every primitive. The linear scan is also the oracle the BVH tests compare against. */
+#ifndef PL_ACCEL_H
+#define PL_ACCEL_H
+
+#include <stdbool.h>
+#include <stdint.h>
+#include "scene.h"
+#include "status.h"
+#include "../parts/part2_bvh/part2.h"
+
+typedef struct {
+    const scene *scene;   /* not owned */
+    bvh bvh;              /* valid when use_bvh */
+    bool use_bvh;         /* false: linear scan (part 2 not implemented, or --no-bvh) */
+    double build_seconds; /* time bvh_build took */
+} accel;
+
+/* Builds the BVH with part 2's bvh_build; a stub (PL_ERR_TODO) or want_bvh = false falls back to
+ * the linear scan and still returns PL_OK. Other failures are returned. */
+pl_status accel_build(accel *out, const scene *s, bool want_bvh, int max_leaf_size, pl_diag *diag);
+void accel_free(accel *a);  /* NULL-safe */
+
+/* Closest hit in [r->min_t, r->max_t]; shrinks r->max_t and fills *h on a hit. */
+bool accel_intersect(const accel *a, ray *r, hit *h);
+/* Any hit in [r->min_t, r->max_t] (shadow rays). */
+bool accel_occluded(const accel *a, const ray *r);
+
+/* The oracle: every primitive, in order. */
+bool linear_intersect(const scene *s, ray *r, hit *h);
+bool linear_occluded(const scene *s, const ray *r);
+
+/* Rays traced by accel_intersect / accel_occluded on the calling thread since its last call. */
+uint64_t accel_take_ray_count(void);
+
+#endif

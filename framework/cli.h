@@ -1,0 +1,18 @@
+/* The command line: CS184's flags plus pathlab's long options, parsed into options. */
+#ifndef PL_CLI_H
+#define PL_CLI_H
+
+#include <stdio.h>
+#include "options.h"
+#include "status.h"
+
+typedef enum { CLI_RUN = 0, CLI_HELP } cli_action;
+
+/* Parses argv into *out. Returns PL_OK (and *action) or PL_ERR_INVALID with a one-line message
+ * in diag ("-s: expected a positive integer, got 'abc'"). Strings in *out point into argv, except
+ * command_line, which must be released with cli_free. */
+pl_status cli_parse(int argc, char **argv, options *out, cli_action *action, pl_diag *diag);
+void cli_free(options *o);
+void cli_print_usage(FILE *f, const char *prog);
+
+#endif

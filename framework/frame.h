@@ -1,0 +1,35 @@
+/* Local shading frames. At a hit, BSDFs work in a frame where the normal is +z, so cos(theta) is
+ * just w.z. frame_from_normal builds an orthonormal basis (Duff et al. 2017, "Building an
+ * Orthonormal Basis, Revisited"), continuous everywhere but at n = (0, 0, -1). */
+#ifndef PL_FRAME_H
+#define PL_FRAME_H
+
+#include "vec.h"
+
+typedef struct { vec3 s, t, n; } frame;  /* tangent, bitangent, normal: a right-handed basis */
+
+static inline frame frame_from_normal(vec3 n)
+{
+    float sign = copysignf(1.0f, n.z);
+    float a = -1.0f / (sign + n.z);
+    float b = n.x * n.y * a;
+    frame f;
+    f.s = vec3_make(1.0f + sign * n.x * n.x * a, sign * b, -sign * n.x);
+    f.t = vec3_make(b, sign + n.y * n.y * a, -n.y);
+    f.n = n;
+    return f;
+}
+/* World direction -> local (z along the normal). */
+static inline vec3 frame_to_local(const frame *f, vec3 w)
+{
+    return vec3_make(vec3_dot(w, f->s), vec3_dot(w, f->t), vec3_dot(w, f->n));
+}
+/* Local direction -> world. */
+static inline vec3 frame_to_world(const frame *f, vec3 w)
+{
+    return vec3_add(vec3_add(vec3_scale(f->s, w.x), vec3_scale(f->t, w.y)), vec3_scale(f->n, w.z));
+}
+static inline float cos_theta(vec3 w_local) { return w_local.z; }
+static inline float abs_cos_theta(vec3 w_local) { return fabsf(w_local.z); }
+
+#endif

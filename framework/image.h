@@ -1,0 +1,38 @@
+/* Float images and their files. Pixels are linear rgb, stored top row first (row 0 = top), as
+ * image files are. Writers go to a temporary file in the same folder and rename it into place,
+ * so a killed render never leaves a half-written image. */
+#ifndef PL_IMAGE_H
+#define PL_IMAGE_H
+
+#include <stdint.h>
+#include "vec.h"
+#include "status.h"
+
+typedef struct {
+    int width, height;
+    rgb *pixels;  /* width * height, row-major, top row first; owned */
+} image;
+
+pl_status image_alloc(image *img, int width, int height);  /* black; PL_ERR_NOMEM on failure */
+void image_free(image *img);                                /* NULL-safe */
+static inline rgb image_get(const image *img, int x, int y) { return img->pixels[(long)y * img->width + x]; }
+static inline void image_set(image *img, int x, int y, rgb c) { img->pixels[(long)y * img->width + x] = c; }
+
+/* CS184's tone curve: clamp((v * sqrt(2))^(1/2.2), 0, 1) per channel, then 8 bits. */
+uint8_t tonemap_channel(float v);
+
+/* PNG through CS184's tone curve. */
+pl_status image_write_png(const image *img, const char *path, pl_diag *diag);
+/* Radiance HDR (RGBE), linear values. */
+pl_status image_write_hdr(const image *img, const char *path, pl_diag *diag);
+/* By extension: .png or .hdr; anything else is PL_ERR_INVALID. */
+pl_status image_write(const image *img, const char *path, pl_diag *diag);
+/* 8-bit RGB, 3 bytes a pixel, top row first, written as-is (rate maps, heat maps, diffs). */
+pl_status image_write_png_rgb8(const uint8_t *rgb8, int width, int height, const char *path, pl_diag *diag);
+/* Reads a .hdr (linear values) or a .png (8-bit values / 255, no inverse tone curve). */
+pl_status image_read(const char *path, image *out, pl_diag *diag);
+
+/* Writes len bytes to path through a temporary file and rename: all or nothing. */
+pl_status file_write_atomic(const char *path, const void *data, size_t len, pl_diag *diag);
+
+#endif

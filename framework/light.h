@@ -1,0 +1,23 @@
+/* Lights for direct illumination: sampling an incident direction at a shading point.
+ * Radiance units per kind are in scene.h (light_kind). */
+#ifndef PL_LIGHT_H
+#define PL_LIGHT_H
+
+#include <stdbool.h>
+#include "scene.h"
+
+typedef struct {
+    rgb L;        /* incident radiance arriving at p along -wi (already attenuated for point/spot) */
+    vec3 wi;      /* unit direction from p towards the light, world space */
+    float dist;   /* distance from p to the sampled point (INFINITY for directional/ambient) */
+    float pdf;    /* solid-angle density of wi; for delta lights 1 (and is_delta true) */
+    bool is_delta;/* point, spot, directional: a single direction, sample once */
+} light_sample;
+
+/* Samples light l as seen from point p with uniform numbers u in [0,1)^2. Returns false when the
+ * light contributes nothing at p (behind a one-sided area light, outside a spot cone, pdf 0). */
+bool light_sample_L(const light *l, vec3 p, vec2 u, light_sample *out);
+/* True for lights with a single direction (one sample per shading point suffices). */
+bool light_is_delta(const light *l);
+
+#endif

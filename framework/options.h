@@ -1,0 +1,39 @@
+/* Render options: one struct, filled in one place (cli.c) from CS184's flags and pathlab's long
+ * options, read everywhere else. Defaults are CS184's. */
+#ifndef PL_OPTIONS_H
+#define PL_OPTIONS_H
+
+#include <stdbool.h>
+#include <stdint.h>
+
+typedef struct {
+    int spp;                  /* -s: camera rays per pixel (1) */
+    int light_samples;        /* -l: samples per area light (1) */
+    int threads;              /* -t / --threads: worker threads (1) */
+    int max_depth;            /* -m: max ray depth, 0 = emission only (1) */
+    bool accumulate;          /* -o 1: sum all bounces; -o 0: only the bounce at depth -m (1) */
+    const char *envmap;       /* -e: environment map (not supported yet: rejected) */
+    float lens_radius;        /* -b: aperture radius (0) */
+    float focal_distance;     /* -d: focal distance (4.7) */
+    const char *output;       /* -f: output .png or .hdr; NULL = no file (print stats only) */
+    int width, height;        /* -r W H: frame size (800 600) */
+    const char *camera_file;  /* -c: CS184 camera settings file */
+    bool adaptive;            /* -a given: use part 5's adaptive estimate */
+    int adaptive_batch;       /* -a B: samples between convergence checks (32) */
+    float adaptive_tol;       /* -a T: relative half-width of the 95% interval (0.05) */
+    bool hemisphere;          /* -H: direct light by uniform hemisphere sampling */
+    uint64_t seed;            /* --seed: base of every per-sample RNG stream (0) */
+    bool normals;             /* --normals: shade by surface normal (parts 1 and 2) */
+    bool cs184_framing;       /* --cs184-camera: CS184's orbit framing instead of the file's camera */
+    bool linear_scan;         /* --no-bvh: skip part 2, intersect by linear scan */
+    int max_leaf_size;        /* --leaf-size: BVH max primitives per leaf (4) */
+    const char *heatmap;      /* --heatmap FILE.png: BVH nodes visited per pixel */
+    bool verbose;             /* -v: print build and traversal statistics */
+    bool quiet;               /* -q: no progress bar or summary */
+    const char *scene_path;   /* the positional argument */
+    const char *command_line; /* argv joined with spaces, for the JSON sidecar (owned by cli) */
+} options;
+
+options options_default(void);
+
+#endif

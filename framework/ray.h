@@ -1,0 +1,36 @@
+/* Rays: origin, unit-or-not direction, and the parametric interval [min_t, max_t] a hit must fall in.
+ * Intersection routines shrink max_t to the nearest hit found so far, so the interval doubles as
+ * the "closest hit so far" of a traversal. */
+#ifndef PL_RAY_H
+#define PL_RAY_H
+
+#include "vec.h"
+
+/* Offset for secondary rays (bounce and shadow rays start at min_t = EPS_F), as in CS184. */
+#define EPS_F 1e-5f
+
+typedef struct {
+    vec3 o;       /* origin, world space */
+    vec3 d;       /* direction, world space; camera and bounce rays are unit length */
+    float min_t;  /* hits with t < min_t are ignored */
+    float max_t;  /* hits with t > max_t are ignored; shrunk to the nearest hit found */
+    int depth;    /* bounces taken before this ray: 0 for camera rays */
+} ray;
+
+static inline ray ray_make(vec3 o, vec3 d, float min_t, float max_t)
+{
+    ray r = {o, d, min_t, max_t, 0};
+    return r;
+}
+static inline vec3 ray_at(const ray *r, float t) { return vec3_add(r->o, vec3_scale(r->d, t)); }
+
+/* What a ray hit: filled by the intersection routines, read by the shaders. */
+typedef struct {
+    float t;       /* ray parameter of the hit */
+    vec3 n;        /* unit shading normal, world space (interpolated for triangles) */
+    float b1, b2;  /* triangle barycentrics of p1 and p2 (p0 has 1 - b1 - b2); 0 for spheres */
+    int prim;      /* primitive index in the scene (see scene_prim_count) */
+    int material;  /* index into scene.materials */
+} hit;
+
+#endif

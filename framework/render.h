@@ -1,0 +1,61 @@
+/* The render: what every estimator reads (render_ctx), the radiance dispatch the options select,
+ * and the tiled, multi-threaded loop over pixels.
+ *
+ * Pixel coordinates follow CS184: pixel (x, y) has (0, 0) at the BOTTOM-left of the image and
+ * covers film coordinates [x/W, (x+1)/W] x [y/H, (y+1)/H]. The loop stores pixel (x, y) in image
+ * row H - 1 - y, since image files are written top row first. */
+#ifndef PL_RENDER_H
+#define PL_RENDER_H
+
+#include <stdint.h>
+#include "scene.h"
+#include "options.h"
+#include "accel.h"
+#include "image.h"
+#include "rng.h"
+
+typedef struct render_ctx {
+    const scene *scene;    /* not owned */
+    const accel *accel;    /* not owned */
+    const options *opts;   /* not owned */
+    camera camera;         /* the scene's camera with aspect and framing applied */
+    int width, height;     /* pixels */
+} render_ctx;
+
+/* Fills ctx from its parts: camera from the scene (or the default), aspect from width/height,
+ * CS184 framing when opts->cs184_framing. */
+void render_ctx_init(render_ctx *ctx, const scene *s, const accel *a, const options *o);
+
+/* The RNG stream of one camera sample: seeded from (opts->seed, pixel index, sample index). */
+rng render_rng(const render_ctx *ctx, int x, int y, int sample);
+
+/* Closest hit and shadow queries through the accelerator (BVH or linear scan). */
+bool render_intersect(const render_ctx *ctx, ray *r, hit *h);
+bool render_occluded(const render_ctx *ctx, const ray *r);
+
+/* Radiance arriving along camera ray r (CS184's est_radiance_global_illumination). The options
+ * pick the estimator: --normals -> normal_shade; -m 0 -> zero bounce; -m 1 -> zero bounce + direct
+ * light; deeper -> zero bounce + at_least_one_bounce_radiance. With -o 0 only the bounce at depth
+ * -m is kept. A miss is black. */
+rgb radiance_estimate(const render_ctx *ctx, ray *r, rng *g);
+
+/* Direct light at a hit by the sampler the options pick (-H: hemisphere, else light importance). */
+rgb one_bounce_radiance(const render_ctx *ctx, const ray *r, const hit *h, rng *g);
+
+typedef struct {
+    double seconds;         /* wall time of the pixel loop */
+    uint64_t rays;          /* rays traced (camera, bounce, shadow) */
+    uint64_t samples;       /* camera samples taken, all pixels */
+    int bad_pixels;         /* pixels whose estimate was NaN, Inf or negative */
+    int first_bad_x, first_bad_y;
+} render_stats;
+
+/* Renders every pixel into out (allocated by the caller at ctx->width x ctx->height) with
+ * opts->threads threads. samples_per_pixel (may be NULL) receives the camera samples each pixel
+ * took, indexed like the image (top row first). Bit-identical for any thread count. */
+pl_status render_image(const render_ctx *ctx, image *out, int *samples_per_pixel, render_stats *stats, pl_diag *diag);
+
+/* The pixel estimate the options select: part 5's adaptive one with -a, else part 1's fixed rate. */
+rgb render_pixel(const render_ctx *ctx, int x, int y, int *samples_taken);
+
+#endif

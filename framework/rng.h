@@ -1,0 +1,28 @@
+/* Random numbers with explicit state: PCG32 (O'Neill, pcg-random.org, minimal variant).
+ * There is no global generator. Every (pixel, sample) pair gets its own stream, seeded from
+ * (seed, pixel index, sample index), so an image is bit-identical whatever the thread count or
+ * tile order, and a test can replay one pixel's sample exactly. */
+#ifndef PL_RNG_H
+#define PL_RNG_H
+
+#include <stdint.h>
+#include "vec.h"
+
+typedef struct { uint64_t state, inc; } rng;
+
+/* A generator for one (pixel, sample) of a render with the given seed. */
+rng rng_for_sample(uint64_t seed, uint64_t pixel, uint64_t sample);
+/* A generator from a single 64-bit seed and stream id (tests, tools). */
+rng rng_seeded(uint64_t seed, uint64_t stream);
+
+uint32_t rng_u32(rng *r);
+/* Uniform in [0, 1): never returns 1.0f. */
+float rng_uniform(rng *r);
+static inline vec2 rng_uniform2(rng *r)
+{
+    float a = rng_uniform(r);
+    float b = rng_uniform(r);
+    return vec2_make(a, b);
+}
+
+#endif

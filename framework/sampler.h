@@ -1,0 +1,34 @@
+/* Samplers: pure functions from uniform numbers in [0,1)^2 to directions or points, each with a
+ * pdf twin that returns the density of the same distribution (per steradian for directions, per
+ * unit area for points). Directions are in the local shading frame, where +z is the normal. */
+#ifndef PL_SAMPLER_H
+#define PL_SAMPLER_H
+
+#include "vec.h"
+
+#ifndef PL_PI
+#define PL_PI 3.14159265358979323846f
+#endif
+#define PL_INV_PI 0.31830988618379067154f
+#define PL_INV_2PI 0.15915494309189533577f
+
+/* Uniform over the hemisphere z >= 0: pdf 1 / (2 pi). */
+vec3 sample_uniform_hemisphere(vec2 u);
+float sample_uniform_hemisphere_pdf(vec3 w);
+
+/* Cosine-weighted over the hemisphere z >= 0: pdf cos(theta) / pi. */
+vec3 sample_cosine_hemisphere(vec2 u);
+float sample_cosine_hemisphere_pdf(vec3 w);
+
+/* Uniform over the unit sphere: pdf 1 / (4 pi). */
+vec3 sample_uniform_sphere(vec2 u);
+float sample_uniform_sphere_pdf(vec3 w);
+
+/* Uniform over the unit disk (concentric map): pdf 1 / pi. */
+vec2 sample_uniform_disk(vec2 u);
+float sample_uniform_disk_pdf(vec2 p);
+
+/* Uniform barycentrics (b1, b2) over a triangle: pdf 2 in barycentric space (1 / area in world). */
+vec2 sample_uniform_triangle(vec2 u);
+
+#endif

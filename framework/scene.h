@@ -1,0 +1,116 @@
+/* The scene: everything a render reads, in world space (Y up, metres), built by the COLLADA loader
+ * (dae.h) or by code (tests). A scene owns all its arrays; scene_free releases them.
+ *
+ * Primitives are numbered 0 .. scene_prim_count() - 1: first the triangles, then the spheres.
+ * The BVH and the linear scan both work on these indices. */
+#ifndef PL_SCENE_H
+#define PL_SCENE_H
+
+#include <stdbool.h>
+#include "vec.h"
+#include "mat4.h"
+#include "aabb.h"
+#include "ray.h"
+
+/* What the file asked for. Parts 1-5 shade every material as diffuse + emission; the others load
+ * (with one warning) so course scenes that use them still render. */
+typedef enum {
+    MATERIAL_DIFFUSE = 0,
+    MATERIAL_MIRROR,
+    MATERIAL_GLASS,
+    MATERIAL_REFRACTION,
+    MATERIAL_MICROFACET
+} material_kind;
+
+typedef struct {
+    material_kind kind;  /* what the file declared; shading treats all kinds as diffuse */
+    rgb albedo;          /* diffuse reflectance in [0,1] per channel (grey 0.5 when unspecified) */
+    rgb Le;              /* emitted radiance (W / (sr m^2)); black for non-emitters */
+    char name[64];       /* the file's material id, for messages */
+} material;
+
+typedef struct {
+    vec3 p0, p1, p2;  /* vertices, world space, counter-clockwise seen from the front */
+    vec3 n0, n1, n2;  /* unit vertex normals, world space (the face normal when the file has none) */
+    int material;     /* index into scene.materials */
+} triangle;
+
+typedef struct {
+    vec3 center;   /* world space */
+    float radius;  /* metres, > 0 */
+    int material;  /* index into scene.materials */
+} sphere;
+
+typedef enum {
+    LIGHT_POINT = 0,    /* isotropic point: radiance = intensity (W/sr) */
+    LIGHT_DIRECTIONAL,  /* at infinity: radiance = irradiance on a surface facing it (W/m^2) */
+    LIGHT_SPOT,         /* point with a cone: intensity on the axis, falloff outside */
+    LIGHT_AREA,         /* CGL parallelogram, one-sided: radiance = emitted radiance */
+    LIGHT_AMBIENT       /* CS184: uniform radiance from the whole upper hemisphere (world +Y) */
+} light_kind;
+
+typedef struct {
+    light_kind kind;
+    rgb radiance;          /* see light_kind for the unit of each kind */
+    vec3 position;         /* point, spot: position; area: centre */
+    vec3 direction;        /* directional: direction the light travels; spot: cone axis (unit);
+                              area: the side it emits towards (unit normal) */
+    vec3 edge_u, edge_v;   /* area: full edge vectors; corners are position +- edge_u/2 +- edge_v/2 */
+    float area;            /* area: |edge_u x edge_v| in m^2 */
+    float attenuation[3];  /* point, spot: constant, linear, quadratic (COLLADA); 1,0,0 = none */
+    float falloff_deg;     /* spot: half-angle of the cone in degrees */
+    float falloff_exp;     /* spot: exponent of the cos falloff inside the cone */
+} light;
+
+/* A pinhole camera. It looks down its local -Z with local +Y up (COLLADA's convention). */
+typedef struct {
+    mat4 camera_to_world;  /* rigid transform: rotation + translation, no scale */
+    vec3 position;         /* camera_to_world applied to the origin */
+    float hfov, vfov;      /* full horizontal and vertical field of view, degrees */
+    float znear, zfar;     /* camera rays span [znear, zfar] */
+    float lens_radius;     /* thin lens (not used by parts 1-5) */
+    float focal_distance;  /* thin lens (not used by parts 1-5) */
+    bool fov_is_vertical;  /* which fov the file fixed: the other follows the image aspect */
+} camera;
+
+typedef struct scene {
+    triangle *triangles; int num_triangles;
+    sphere *spheres;     int num_spheres;
+    material *materials; int num_materials;
+    light *lights;       int num_lights;
+    camera camera;
+    bool has_camera;     /* false: scene_default_camera frames the bounds */
+    char path[512];      /* the file it came from ("" for code-built scenes) */
+} scene;
+
+/* Releases the arrays and zeroes s. NULL-safe. */
+void scene_free(scene *s);
+
+static inline int scene_prim_count(const scene *s) { return s->num_triangles + s->num_spheres; }
+aabb scene_prim_bounds(const scene *s, int prim);
+vec3 scene_prim_centroid(const scene *s, int prim);
+aabb scene_bounds(const scene *s);
+
+/* Intersects one primitive through part 1's triangle_intersect / sphere_intersect, setting
+ * h->prim and h->material on a hit. Shrinks r->max_t on a hit, like them. */
+bool scene_prim_intersect(const scene *s, int prim, ray *r, hit *h);
+
+/* Appending, for loaders and tests. Each returns the new element's index, or -1 without memory. */
+int scene_add_material(scene *s, material m);
+int scene_add_triangle(scene *s, triangle t);
+int scene_add_sphere(scene *s, sphere sp);
+int scene_add_light(scene *s, light l);
+
+/* A diffuse material with the given reflectance and emission. */
+material material_make(rgb albedo, rgb Le);
+/* A triangle with its face normal at all three vertices. */
+triangle triangle_make(vec3 p0, vec3 p1, vec3 p2, int mat);
+
+/* Camera helpers: the fov not fixed by the file follows the image's aspect ratio (width/height). */
+void camera_set_aspect(camera *c, float aspect);
+/* A camera looking at the centre of the bounds from +Z, for scenes without one. */
+camera scene_default_camera(const scene *s);
+/* CS184's framing: keep only the view direction, orbit the bounds' centre at 1.5 x its diagonal. */
+camera camera_cs184_framing(const camera *c, aabb bounds);
+
+#endif

@@ -1,0 +1,39 @@
+/* Stubs for student tasks.
+ * The release replaces each solution with a line such as `return PL_TODO_RGB("3.4", "direct_hemisphere");`.
+ * A stub prints "Part 3, task 3.4: direct_hemisphere() is not implemented yet" once per function,
+ * counts the call (tests read the count to say "not implemented" instead of "wrong"), and returns
+ * a neutral value: magenta for radiance, so a missing part shows in the picture, never as black. */
+#ifndef PL_TODO_H
+#define PL_TODO_H
+
+#include <stdbool.h>
+#include "status.h"
+#include "vec.h"
+#include "ray.h"
+
+/* Reports the missing task (once per function name) and counts the call. */
+void pl_todo_report(const char *task, const char *function);
+
+/* How many stub calls have happened since the last reset (all threads). */
+int pl_todo_count(void);
+void pl_todo_reset(void);
+/* The function name of the most recent stub call, or NULL. */
+const char *pl_todo_last(void);
+/* Silences the printed line (tests keep stdout clean); counting continues. */
+void pl_todo_set_quiet(bool quiet);
+
+static inline pl_status pl_todo_status(const char *task, const char *fn) { pl_todo_report(task, fn); return PL_ERR_TODO; }
+static inline rgb pl_todo_rgb(const char *task, const char *fn) { pl_todo_report(task, fn); return rgb_magenta(); }
+static inline bool pl_todo_false(const char *task, const char *fn) { pl_todo_report(task, fn); return false; }
+static inline ray pl_todo_ray(const char *task, const char *fn)
+{
+    pl_todo_report(task, fn);
+    return ray_make(vec3_make(0, 0, 0), vec3_make(0, 0, -1), 0.0f, 0.0f);
+}
+
+#define PL_TODO(task, fn) pl_todo_status(task, fn)
+#define PL_TODO_RGB(task, fn) pl_todo_rgb(task, fn)
+#define PL_TODO_FALSE(task, fn) pl_todo_false(task, fn)
+#define PL_TODO_RAY(task, fn) pl_todo_ray(task, fn)
+
+#endif

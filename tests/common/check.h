@@ -1,0 +1,27 @@
+/* Test machinery: not part of any assignment.
+ * Shared cmocka asserts that print both values, and the "not implemented" check that turns a
+ * stub call into a clear message instead of a wrong-value failure. Include after <cmocka.h>'s
+ * prerequisites: use tests/common/test.h, which includes everything in the right order. */
+#ifndef PL_CHECK_H
+#define PL_CHECK_H
+
+#include "../../framework/vec.h"
+#include "../../framework/todo.h"
+
+void check_vec3_near(vec3 expected, vec3 got, float eps, const char *what, const char *file, int line);
+void check_rgb_near(rgb expected, rgb got, float eps, const char *what, const char *file, int line);
+void check_float_near(double expected, double got, double eps, const char *what, const char *file, int line);
+void check_implemented(const char *file, int line);
+
+/* Fails with both vectors printed when any component differs by more than eps. */
+#define assert_vec3_near(expected, got, eps) check_vec3_near((expected), (got), (eps), #got, __FILE__, __LINE__)
+#define assert_rgb_near(expected, got, eps) check_rgb_near((expected), (got), (eps), #got, __FILE__, __LINE__)
+#define assert_float_near(expected, got, eps) check_float_near((expected), (got), (eps), #got, __FILE__, __LINE__)
+/* Fails with "not implemented: Part N, task N.M: fn()" if a stub ran since the last reset.
+ * Call pl_todo_reset() in setup (test_setup does), then this after calling student code. */
+#define assert_implemented() check_implemented(__FILE__, __LINE__)
+
+/* cmocka setup/teardown that reset and silence the stub counter; use for every student-code test. */
+int test_setup(void **state);
+
+#endif
