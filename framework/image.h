@@ -4,6 +4,7 @@
 #ifndef PL_IMAGE_H
 #define PL_IMAGE_H
 
+#include <stddef.h>
 #include <stdint.h>
 #include "vec.h"
 #include "status.h"

@@ -1,14 +1,177 @@
-/* Part 3 placeholder: the solution is being written. */
+/* Part 3: direct illumination: the diffuse BSDF, emission, and the two direct light estimators.
+ * Handout: handout/part3.md. */
 #include "part3.h"
+#include "../../framework/render.h"
+#include "../../framework/light.h"
+#include "../../framework/sampler.h"
 #include "../../framework/todo.h"
 
-rgb bsdf_f(const material *m, vec3 wo, vec3 wi) { return PL_TODO_RGB("3.1", "bsdf_f"); }
+vec3 hit_point(const ray *r, const hit *h)
+{
+    return ray_at(r, h->t);
+}
+
+frame shading_frame(const ray *r, const hit *h)
+{
+    vec3 n = h->n;
+    if (vec3_dot(n, r->d) > 0.0f)
+        n = vec3_neg(n);
+    return frame_from_normal(n);
+}
+
+/* === PART 3 | TASK 3.1 | bsdf_f =====================================================
+ * The Lambertian BSDF: reflectance spread evenly over the hemisphere (handout/part3.md, 3.1).
+ * In:  m (albedo in [0,1] per channel), wo, wi in the local shading frame.
+ * Out: f in 1/sr: albedo / pi when wo.z > 0 and wi.z > 0, black otherwise.
+ * Must: energy conservation: integral of f cos over the hemisphere = albedo.
+ * Test: make test-part3
+ * =================================================================================== */
+rgb bsdf_f(const material *m, vec3 wo, vec3 wi)
+{
+    /* BEGIN SOLUTION */
+    if (cos_theta(wo) <= 0.0f || cos_theta(wi) <= 0.0f)
+        return rgb_gray(0.0f);
+    return rgb_scale(m->albedo, PL_INV_PI);
+    /* END SOLUTION */
+    /* STUB: return PL_TODO_RGB("3.1", "bsdf_f"); */
+}
+
+/* === PART 3 | TASK 3.2 | bsdf_pdf ===================================================
+ * The density of the directions bsdf_sample_f draws (handout/part3.md, 3.2).
+ * In:  m, wo, wi in the local shading frame.
+ * Out: pdf per steradian of wi; 0 below the surface.
+ * Must: integrates to 1 over the hemisphere and matches the histogram of bsdf_sample_f.
+ * Test: make test-part3
+ * =================================================================================== */
+float bsdf_pdf(const material *m, vec3 wo, vec3 wi)
+{
+    /* BEGIN SOLUTION */
+    if (cos_theta(wo) <= 0.0f)
+        return 0.0f;
+    return sample_cosine_hemisphere_pdf(wi);
+    /* END SOLUTION */
+    /* STUB: return (float)PL_TODO_FALSE("3.2", "bsdf_pdf"); */
+}
+
+/* === PART 3 | TASK 3.2 | bsdf_sample_f ==============================================
+ * Importance-sample the diffuse BSDF (handout/part3.md, 3.2). Cosine-weighted sampling makes
+ * f * cos / pdf exactly the albedo; uniform sampling is also correct, only noisier.
+ * In:  m, wo (local), u uniform in [0,1)^2.
+ * Out: *wi (local, unit, wi.z >= 0), *pdf = bsdf_pdf(m, wo, *wi); returns bsdf_f(m, wo, *wi).
+ * Must: histogram of wi matches bsdf_pdf (chi-square); mean of f cos / pdf = albedo.
+ * Test: make test-part3
+ * =================================================================================== */
 rgb bsdf_sample_f(const material *m, vec3 wo, vec2 u, vec3 *wi, float *pdf)
 {
-    *wi = vec3_make(0, 0, 1);
-    *pdf = 0.0f;
-    return PL_TODO_RGB("3.2", "bsdf_sample_f");
+    /* BEGIN SOLUTION */
+    *wi = sample_cosine_hemisphere(u);
+    *pdf = bsdf_pdf(m, wo, *wi);
+    return bsdf_f(m, wo, *wi);
+    /* END SOLUTION */
+    /* STUB: *wi = vec3_make(0.0f, 0.0f, 1.0f); *pdf = 0.0f; return PL_TODO_RGB("3.2", "bsdf_sample_f"); */
 }
-rgb zero_bounce_radiance(const struct render_ctx *ctx, const ray *r, const hit *h) { return PL_TODO_RGB("3.3", "zero_bounce_radiance"); }
-rgb direct_hemisphere(const struct render_ctx *ctx, const ray *r, const hit *h, rng *g) { return PL_TODO_RGB("3.4", "direct_hemisphere"); }
-rgb direct_importance(const struct render_ctx *ctx, const ray *r, const hit *h, rng *g) { return PL_TODO_RGB("3.5", "direct_importance"); }
+
+/* === PART 3 | TASK 3.3 | zero_bounce_radiance =======================================
+ * Light emitted by the surface a ray hit, with no reflection (handout/part3.md, 3.3).
+ * In:  r, the ray; h, its hit (h->material indexes ctx->scene->materials).
+ * Out: the material's Le when r arrives on the emitting side (h->n faces r's origin), else black.
+ * Must: -m 0 renders only emitters; a light seen from behind is black.
+ * Test: make test-part3
+ * =================================================================================== */
+rgb zero_bounce_radiance(const struct render_ctx *ctx, const ray *r, const hit *h)
+{
+    /* BEGIN SOLUTION */
+    if (vec3_dot(h->n, r->d) >= 0.0f)
+        return rgb_gray(0.0f);
+    return ctx->scene->materials[h->material].Le;
+    /* END SOLUTION */
+    /* STUB: return PL_TODO_RGB("3.3", "zero_bounce_radiance"); */
+}
+
+/* === PART 3 | TASK 3.4 | direct_hemisphere ==========================================
+ * Direct light by uniform hemisphere sampling (-H) (handout/part3.md, 3.4):
+ *   L = 1/N sum_j Le(p, wi_j) f(wo, wi_j) cos(theta_j) / pdf(wi_j),  pdf = 1 / (2 pi),
+ * with Le(p, wi_j) the emission (zero_bounce_radiance) of whatever the ray from p along wi_j hits.
+ * In:  r, h (the surface being lit), g (this sample's random numbers).
+ * Out: reflected radiance towards r's origin. N = num_lights * light_samples, at least 1.
+ * Must: agrees in expectation with direct_importance for area lights (point lights are invisible
+ *       to it: no ray can hit them); rays start at the hit point with min_t = EPS_F.
+ * Test: make test-part3
+ * =================================================================================== */
+rgb direct_hemisphere(const struct render_ctx *ctx, const ray *r, const hit *h, rng *g)
+{
+    /* BEGIN SOLUTION */
+    const material *m = &ctx->scene->materials[h->material];
+    frame f = shading_frame(r, h);
+    vec3 p = hit_point(r, h);
+    vec3 wo = frame_to_local(&f, vec3_neg(r->d));
+    int n = ctx->scene->num_lights * ctx->opts->light_samples;
+    if (n < 1)
+        n = 1;
+    rgb sum = rgb_gray(0.0f);
+    for (int j = 0; j < n; j++) {
+        vec3 wi = sample_uniform_hemisphere(rng_uniform2(g));
+        float pdf = sample_uniform_hemisphere_pdf(wi);
+        ray shadow = ray_make(p, frame_to_world(&f, wi), EPS_F, INFINITY);
+        shadow.depth = r->depth + 1;
+        hit lit;
+        if (pdf <= 0.0f || !render_intersect(ctx, &shadow, &lit))
+            continue;
+        rgb Le = zero_bounce_radiance(ctx, &shadow, &lit);
+        if (rgb_is_black(Le))
+            continue;
+        rgb fr = bsdf_f(m, wo, wi);
+        sum = rgb_add(sum, rgb_scale(rgb_mul(Le, fr), cos_theta(wi) / pdf));
+    }
+    return rgb_scale(sum, 1.0f / (float)n);
+    /* END SOLUTION */
+    /* STUB: return PL_TODO_RGB("3.4", "direct_hemisphere"); */
+}
+
+/* === PART 3 | TASK 3.5 | direct_importance ==========================================
+ * Direct light by sampling the lights (handout/part3.md, 3.5): for each light k,
+ *   L_k = 1/N_k sum_j V(p, y_j) Li_j f(wo, wi_j) cos(theta_j) / pdf_j,
+ * with (Li, wi, dist, pdf) from light_sample_L, N_k = 1 for delta lights (light_is_delta) and
+ * light_samples otherwise; the result is the sum over the lights.
+ * In:  r, h, g as in 3.4.
+ * Out: reflected radiance towards r's origin.
+ * Must: skip samples below the surface (cos <= 0) or with pdf 0; the shadow ray starts at the hit
+ *       point with min_t = EPS_F and stops at dist - EPS_F, short of the light itself (the
+ *       Cornell boxes hold an emissive quad exactly where the area light is).
+ * Test: make test-part3
+ * =================================================================================== */
+rgb direct_importance(const struct render_ctx *ctx, const ray *r, const hit *h, rng *g)
+{
+    /* BEGIN SOLUTION */
+    const scene *s = ctx->scene;
+    const material *m = &s->materials[h->material];
+    frame f = shading_frame(r, h);
+    vec3 p = hit_point(r, h);
+    vec3 wo = frame_to_local(&f, vec3_neg(r->d));
+    rgb L = rgb_gray(0.0f);
+    for (int k = 0; k < s->num_lights; k++) {
+        const light *l = &s->lights[k];
+        int n = light_is_delta(l) ? 1 : (ctx->opts->light_samples > 0 ? ctx->opts->light_samples : 1);
+        rgb sum = rgb_gray(0.0f);
+        for (int j = 0; j < n; j++) {
+            light_sample ls;
+            if (!light_sample_L(l, p, rng_uniform2(g), &ls) || !(ls.pdf > 0.0f))
+                continue;
+            vec3 wi = frame_to_local(&f, ls.wi);
+            if (cos_theta(wi) <= 0.0f)
+                continue;
+            rgb fr = bsdf_f(m, wo, wi);
+            if (rgb_is_black(fr) || rgb_is_black(ls.L))
+                continue;
+            ray shadow = ray_make(p, ls.wi, EPS_F, ls.dist - EPS_F);
+            shadow.depth = r->depth + 1;
+            if (render_occluded(ctx, &shadow))
+                continue;
+            sum = rgb_add(sum, rgb_scale(rgb_mul(ls.L, fr), cos_theta(wi) / ls.pdf));
+        }
+        L = rgb_add(L, rgb_scale(sum, 1.0f / (float)n));
+    }
+    return L;
+    /* END SOLUTION */
+    /* STUB: return PL_TODO_RGB("3.5", "direct_importance"); */
+}

@@ -1,0 +1,116 @@
+/* Lights: sampling one incident direction at a shading point, with its solid-angle density.
+ * Every kind returns radiance arriving at p (attenuation already applied), so the estimator in
+ * part 3 is the same for all of them: L * f * cos / pdf. */
+#include "light.h"
+#include "frame.h"
+#include "sampler.h"
+
+bool light_is_delta(const light *l)
+{
+    return l->kind == LIGHT_POINT || l->kind == LIGHT_SPOT || l->kind == LIGHT_DIRECTIONAL;
+}
+
+/* COLLADA attenuation: intensity / (constant + linear d + quadratic d^2). The inverse square law
+ * is not in here: sample_point divides by d^2 for every point light. A denominator <= 0 (a file
+ * with all zeros) means "no attenuation", as Blender's exporter intends. */
+static float attenuation(const light *l, float dist)
+{
+    float den = l->attenuation[0] + l->attenuation[1] * dist + l->attenuation[2] * dist * dist;
+    return den > 0.0f ? 1.0f / den : 1.0f;
+}
+
+/* A point source at q with intensity I (W/sr) gives irradiance I / d^2 on a surface facing it.
+ * As a delta light it reports that as its "radiance" with pdf 1: the estimator's L cos / pdf is
+ * then the irradiance, the integral over the delta direction. */
+static bool sample_point(const light *l, vec3 p, light_sample *out)
+{
+    vec3 d = vec3_sub(l->position, p);
+    float dist2 = vec3_dot(d, d);
+    if (!(dist2 > 0.0f))
+        return false;
+    float dist = sqrtf(dist2);
+    out->wi = vec3_scale(d, 1.0f / dist);
+    out->dist = dist;
+    out->pdf = 1.0f;
+    out->is_delta = true;
+    out->L = rgb_scale(l->radiance, attenuation(l, dist) / dist2);
+    return true;
+}
+
+/* A spot light is a point light times a cone profile: full intensity on the axis, falling off as
+ * cos^falloff_exp of the angle to the axis, and nothing beyond falloff_deg. */
+static bool sample_spot(const light *l, vec3 p, light_sample *out)
+{
+    if (!sample_point(l, p, out))
+        return false;
+    float cos_axis = -vec3_dot(out->wi, vec3_normalize(l->direction));
+    float cos_cone = cosf(l->falloff_deg * (PL_PI / 180.0f));
+    if (cos_axis <= cos_cone)
+        return false;
+    float profile = l->falloff_exp > 0.0f ? powf(cos_axis, l->falloff_exp) : 1.0f;
+    out->L = rgb_scale(out->L, profile);
+    return true;
+}
+
+static bool sample_directional(const light *l, light_sample *out)
+{
+    out->wi = vec3_neg(vec3_normalize(l->direction));
+    out->dist = INFINITY;
+    out->pdf = 1.0f;
+    out->is_delta = true;
+    out->L = l->radiance;
+    return true;
+}
+
+/* A point uniform on the parallelogram has density 1 / area per unit area; per unit solid angle
+ * seen from p that is dist^2 / (cos_light * area), cos_light taken against the UNIT direction.
+ * (CS184 used an unnormalised vector here, which scales its light by the distance.) */
+static bool sample_area(const light *l, vec3 p, vec2 u, light_sample *out)
+{
+    vec3 q = vec3_add(l->position, vec3_add(vec3_scale(l->edge_u, u.x - 0.5f),
+                                            vec3_scale(l->edge_v, u.y - 0.5f)));
+    vec3 d = vec3_sub(q, p);
+    float dist2 = vec3_dot(d, d);
+    if (!(dist2 > 0.0f) || !(l->area > 0.0f))
+        return false;
+    float dist = sqrtf(dist2);
+    vec3 wi = vec3_scale(d, 1.0f / dist);
+    float cos_light = -vec3_dot(wi, l->direction);
+    if (cos_light <= 0.0f)  /* one-sided: p is behind the light, or in its plane */
+        return false;
+    float pdf = dist2 / (cos_light * l->area);
+    if (!isfinite(pdf))
+        return false;
+    out->wi = wi;
+    out->dist = dist;
+    out->pdf = pdf;
+    out->is_delta = false;
+    out->L = l->radiance;
+    return true;
+}
+
+/* CS184's ambient light: constant radiance from every direction of the upper hemisphere (world
+ * +Y), sampled uniformly over that hemisphere. */
+static bool sample_ambient(const light *l, vec2 u, light_sample *out)
+{
+    frame up = frame_from_normal(vec3_make(0.0f, 1.0f, 0.0f));
+    vec3 w = sample_uniform_hemisphere(u);
+    out->wi = frame_to_world(&up, w);
+    out->dist = INFINITY;
+    out->pdf = sample_uniform_hemisphere_pdf(w);
+    out->is_delta = false;
+    out->L = l->radiance;
+    return out->pdf > 0.0f;
+}
+
+bool light_sample_L(const light *l, vec3 p, vec2 u, light_sample *out)
+{
+    switch (l->kind) {
+    case LIGHT_POINT:       return sample_point(l, p, out);
+    case LIGHT_SPOT:        return sample_spot(l, p, out);
+    case LIGHT_DIRECTIONAL: return sample_directional(l, out);
+    case LIGHT_AREA:        return sample_area(l, p, u, out);
+    case LIGHT_AMBIENT:     return sample_ambient(l, u, out);
+    }
+    return false;
+}
