@@ -22,6 +22,7 @@ typedef struct {
     int adaptive_batch;       /* -a B: samples between convergence checks (32) */
     float adaptive_tol;       /* -a T: relative half-width of the 95% interval (0.05) */
     bool hemisphere;          /* -H: direct light by uniform hemisphere sampling */
+    bool no_roulette;         /* --no-rr: part 4 follows every path to -m, no Russian roulette (false) */
     uint64_t seed;            /* --seed: base of every per-sample RNG stream (0) */
     bool normals;             /* --normals: shade by surface normal (parts 1 and 2) */
     bool cs184_framing;       /* --cs184-camera: CS184's orbit framing instead of the file's camera */
