@@ -1,0 +1,127 @@
+/* BVH heat map: how many BVH nodes each pixel's centre ray visits, as a false-colour PNG with a
+ * legend strip underneath. A good tree is dark blue almost everywhere; red patches show where
+ * rays wade through many boxes (long thin triangles, overlapping leaves, a poor split). */
+#include "heatmap.h"
+#include "render.h"
+#include "colormap.h"
+#include "../parts/part1_raygen/part1.h"
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+/* Per-thread visit counter: bvh_intersect / bvh_occluded add to it once per query, so the hot
+ * path pays one thread-local add per ray and no atomics. */
+static _Thread_local uint64_t node_visits;
+
+void bvh_count_visits(int nodes) { node_visits += (uint64_t)nodes; }
+
+uint64_t bvh_take_visits(void)
+{
+    uint64_t n = node_visits;
+    node_visits = 0;
+    return n;
+}
+
+/* ---- The legend: a colour bar and three numbers, drawn with a 3x5 digit font ---------------- */
+
+#define LEGEND_HEIGHT 36   /* pixels below the image */
+#define FONT_SCALE 2       /* each font pixel drawn as a 2x2 block */
+
+/* Rows of the digits 0-9, 3 bits wide (bit 2 = left column), top row first. */
+static const uint8_t DIGIT_FONT[10][5] = {
+    {7, 5, 5, 5, 7}, {2, 6, 2, 2, 7}, {7, 1, 7, 4, 7}, {7, 1, 7, 1, 7}, {5, 5, 7, 1, 1},
+    {7, 4, 7, 1, 7}, {7, 4, 7, 5, 7}, {7, 1, 1, 1, 1}, {7, 5, 7, 5, 7}, {7, 5, 7, 1, 7},
+};
+
+static void put_pixel(uint8_t *rgb8, int width, int height, int x, int y, const uint8_t c[3])
+{
+    if (x < 0 || y < 0 || x >= width || y >= height) return;
+    memcpy(rgb8 + 3 * ((size_t)y * width + x), c, 3);
+}
+
+/* Draws the decimal number v with its left edge at x (or centred on x, or right-aligned to x). */
+static void draw_number(uint8_t *rgb8, int width, int height, int x, int y, unsigned v, int align)
+{
+    char text[16];
+    int len = snprintf(text, sizeof text, "%u", v);
+    int glyph_w = 4 * FONT_SCALE;  /* 3 columns plus one of spacing */
+    int left = align < 0 ? x : align == 0 ? x - len * glyph_w / 2 : x - len * glyph_w;
+    static const uint8_t white[3] = {255, 255, 255};
+    for (int i = 0; i < len; i++)
+        for (int row = 0; row < 5 * FONT_SCALE; row++)
+            for (int col = 0; col < 3 * FONT_SCALE; col++)
+                if (DIGIT_FONT[text[i] - '0'][row / FONT_SCALE] & (4 >> (col / FONT_SCALE)))
+                    put_pixel(rgb8, width, height, left + i * glyph_w + col, y + row, white);
+}
+
+/* The smallest 1, 2 or 5 times a power of ten that is >= v: a scale the legend can label. */
+static unsigned nice_ceiling(unsigned v)
+{
+    unsigned step = 1;
+    for (;;) {
+        if (v <= step) return step;
+        if (v <= 2 * step) return 2 * step;
+        if (v <= 5 * step) return 5 * step;
+        step *= 10;
+    }
+}
+
+/* Colour bar from 0 (blue) to scale (red) across the strip under the image, labelled at both
+ * ends and the middle. */
+static void draw_legend(uint8_t *rgb8, int width, int height, int top, unsigned scale)
+{
+    int margin = 8, bar_h = 10;
+    for (int x = margin; x < width - margin; x++) {
+        uint8_t c[3];
+        colormap_rate((float)(x - margin) / (float)(width - 2 * margin - 1), c);
+        for (int y = top + 4; y < top + 4 + bar_h; y++) put_pixel(rgb8, width, height, x, y, c);
+    }
+    int text_y = top + 4 + bar_h + 4;
+    draw_number(rgb8, width, height, margin, text_y, 0, -1);
+    draw_number(rgb8, width, height, width / 2, text_y, scale / 2, 0);
+    draw_number(rgb8, width, height, width - margin, text_y, scale, 1);
+}
+
+pl_status render_heatmap(const struct render_ctx *ctx, const char *path, pl_diag *diag)
+{
+    if (!ctx->accel->use_bvh)
+        return pl_fail(diag, PL_ERR_INVALID,
+                       "%s: the heat map needs part 2's BVH (it is not implemented yet, or --no-bvh was given)", path);
+    int w = ctx->width, h = ctx->height;
+    unsigned *visits = malloc((size_t)w * h * sizeof *visits);
+    uint8_t *rgb8 = calloc((size_t)w * (h + LEGEND_HEIGHT), 3);
+    if (!visits || !rgb8) {
+        free(visits);
+        free(rgb8);
+        return pl_fail(diag, PL_ERR_NOMEM, "%s: out of memory for a %dx%d heat map", path, w, h);
+    }
+
+    /* One ray through each pixel centre; pixel (x, y) counts from the bottom, rows from the top. */
+    unsigned most = 0;
+    bvh_take_visits();
+    for (int y = 0; y < h; y++) {
+        for (int x = 0; x < w; x++) {
+            ray r = camera_generate_ray(&ctx->camera, (x + 0.5f) / w, (y + 0.5f) / h);
+            hit hi;
+            bvh_intersect(&ctx->accel->bvh, ctx->scene, &r, &hi);
+            uint64_t n = bvh_take_visits();
+            unsigned v = n > UINT32_MAX ? UINT32_MAX : (unsigned)n;
+            visits[(size_t)(h - 1 - y) * w + x] = v;
+            if (v > most) most = v;
+        }
+    }
+    if (most == 0) {
+        free(visits);
+        free(rgb8);
+        return pl_fail(diag, PL_ERR_INVALID,
+                       "%s: bvh_intersect reported no node visits: it must call bvh_count_visits (part2.h)", path);
+    }
+
+    unsigned scale = nice_ceiling(most);
+    for (size_t i = 0; i < (size_t)w * h; i++) colormap_rate((float)visits[i] / (float)scale, rgb8 + 3 * i);
+    draw_legend(rgb8, w, h + LEGEND_HEIGHT, h, scale);
+    pl_status st = image_write_png_rgb8(rgb8, w, h + LEGEND_HEIGHT, path, diag);
+    free(visits);
+    free(rgb8);
+    return st;
+}
