@@ -1,0 +1,28 @@
+# Instructor tooling: the student release (included by the Makefile; students never need it).
+#   make release         release/student: the tracked tree with every solution replaced by its stub
+#   make release-check   the same, then proves it sound (tools/make_release says what it checks)
+
+.PHONY: release release-check
+
+# The stripper's core is a library so tests/framework/test_strip.c can test its rules directly.
+STRIP_OBJ     := $(BUILD)/tools/strip.o
+TOOL_LIB_OBJ  := $(BUILD)/framework/image.o $(BUILD)/framework/status.o
+
+$(BIN)/strip_solutions: $(BUILD)/tools/strip_solutions.o $(STRIP_OBJ) $(TOOL_LIB_OBJ)
+	$(say) LD $@
+	@mkdir -p $(dir $@)
+	$(Q)$(CC) $(LDFLAGS) -o $@ $^ $(LDLIBS)
+
+$(BIN)/image_stats: $(BUILD)/tools/image_stats.o $(TOOL_LIB_OBJ)
+	$(say) LD $@
+	@mkdir -p $(dir $@)
+	$(Q)$(CC) $(LDFLAGS) -o $@ $^ $(LDLIBS)
+
+# An extra prerequisite lands in the suite rule's $^, so the framework tests link the stripper.
+$(BIN)/test-framework: $(STRIP_OBJ)
+
+release: $(BIN)/strip_solutions
+	$(Q)sh tools/make_release build $(BIN)/strip_solutions
+
+release-check: release $(BIN)/image_stats
+	$(Q)sh tools/make_release check $(BIN)/strip_solutions $(BIN)/image_stats
