@@ -49,6 +49,16 @@ suite_obj      = $(patsubst %.c,$(BUILD)/%.o,$(wildcard tests/$(1)/*.c))
 
 all: $(BIN)/pathtracer
 
+# The code version for the JSON sidecar; the header changes only when the version does.
+VERSION := $(shell git describe --always --dirty 2>/dev/null || echo unknown)
+CPPFLAGS += -I$(BUILD)/gen
+$(BUILD)/gen/version.h: FORCE
+	@mkdir -p $(dir $@)
+	@echo '#define PL_VERSION "$(VERSION)"' > $@.tmp
+	@cmp -s $@.tmp $@ || mv $@.tmp $@; rm -f $@.tmp
+$(BUILD)/framework/sidecar.o: $(BUILD)/gen/version.h
+.PHONY: FORCE
+
 help:
 	@echo "pathlab targets:"
 	@echo "  make                  build bin/pathtracer (start here)"

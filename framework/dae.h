@@ -6,6 +6,7 @@
 #ifndef PL_DAE_H
 #define PL_DAE_H
 
+#include <stddef.h>
 #include "scene.h"
 #include "status.h"
 

@@ -20,6 +20,9 @@ typedef struct render_ctx {
     const options *opts;   /* not owned */
     camera camera;         /* the scene's camera with aspect and framing applied */
     int width, height;     /* pixels */
+    /* Progress reports while render_image runs (from the calling thread); NULL for none. */
+    void (*on_progress)(void *user, int tiles_done, int tiles_total);
+    void *progress_user;
 } render_ctx;
 
 /* Fills ctx from its parts: camera from the scene (or the default), aspect from width/height,

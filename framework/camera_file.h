@@ -1,0 +1,13 @@
+/* CS184 camera settings files (-c): the camera a course saved from the original viewer. */
+#ifndef PL_CAMERA_FILE_H
+#define PL_CAMERA_FILE_H
+
+#include "scene.h"
+#include "status.h"
+
+/* Reads the six lines (hfov vfov aspect near far / pos.xyz target.xyz / phi theta r min_r max_r /
+ * the 9 entries of the camera-to-world rotation, row by row / screen_w screen_h screen_dist /
+ * focal_distance lens_radius) into *out. Errors name the file, the line and the field. */
+pl_status camera_file_load(const char *path, camera *out, pl_diag *diag);
+
+#endif

@@ -1,0 +1,173 @@
+/* The command line: CS184's short flags (some take two values) and pathlab's long options.
+ * Parsed by hand because getopt cannot take the two-value flags -r W H and -a B T. */
+#include "cli.h"
+#include <errno.h>
+#include <limits.h>
+#include <stdlib.h>
+#include <string.h>
+#include <math.h>
+
+options options_default(void)
+{
+    options o;
+    memset(&o, 0, sizeof o);
+    o.spp = 1;
+    o.light_samples = 1;
+    o.threads = 1;
+    o.max_depth = 1;
+    o.accumulate = true;
+    o.focal_distance = 4.7f;
+    o.width = 800;
+    o.height = 600;
+    o.adaptive_batch = 32;
+    o.adaptive_tol = 0.05f;
+    o.max_leaf_size = 4;
+    return o;
+}
+
+void cli_print_usage(FILE *f, const char *prog)
+{
+    fprintf(f,
+            "usage: %s [options] scene.dae\n"
+            "  -s N        camera rays per pixel (1)\n"
+            "  -l N        samples per area light (1)\n"
+            "  -t N        render threads (1); also --threads N\n"
+            "  -m N        max ray depth: 0 emission only, 1 direct light, ... (1)\n"
+            "  -o 0|1      1: add up all bounces; 0: only the bounce at depth -m (1)\n"
+            "  -e FILE     environment map (not supported yet)\n"
+            "  -b R        lens radius (0)\n"
+            "  -d D        focal distance (4.7)\n"
+            "  -f FILE     write the render: .png (tone-mapped) or .hdr (linear), plus FILE.json\n"
+            "  -r W H      image size in pixels (800 600)\n"
+            "  -c FILE     CS184 camera settings file\n"
+            "  -a B T      adaptive sampling: check every B samples, tolerance T (32 0.05)\n"
+            "  -H          direct light by uniform hemisphere sampling instead of light sampling\n"
+            "  -v          print BVH and traversal statistics\n"
+            "  -q          no progress bar or summary\n"
+            "  -h, --help  this text\n"
+            "  --seed N          seed of every random stream (0)\n"
+            "  --normals         shade by surface normal (parts 1 and 2)\n"
+            "  --cs184-camera    CS184's framing: orbit the scene centre along the file's view direction\n"
+            "  --no-bvh          intersect by linear scan even when part 2 is implemented\n"
+            "  --leaf-size N     BVH max primitives per leaf (4)\n"
+            "  --heatmap FILE    write a PNG of BVH nodes visited per pixel\n",
+            prog);
+}
+
+/* Value parsers: each checks the whole string and the range, and names the flag when it fails. */
+static pl_status parse_int(const char *flag, const char *text, int lo, int hi, int *out, pl_diag *d)
+{
+    char *end;
+    errno = 0;
+    long v = text ? strtol(text, &end, 10) : 0;
+    if (!text || *text == '\0' || *end != '\0' || errno || v < lo || v > hi)
+        return pl_fail(d, PL_ERR_INVALID, "%s: expected an integer from %d to %d, got '%s'", flag, lo, hi,
+                       text ? text : "nothing");
+    *out = (int)v;
+    return PL_OK;
+}
+
+static pl_status parse_float(const char *flag, const char *text, float lo, float *out, pl_diag *d)
+{
+    char *end;
+    errno = 0;
+    float v = text ? strtof(text, &end) : 0.0f;
+    if (!text || *text == '\0' || *end != '\0' || errno || !(v >= lo) || !isfinite(v))
+        return pl_fail(d, PL_ERR_INVALID, "%s: expected a number >= %g, got '%s'", flag, lo, text ? text : "nothing");
+    *out = v;
+    return PL_OK;
+}
+
+static pl_status parse_u64(const char *flag, const char *text, uint64_t *out, pl_diag *d)
+{
+    char *end;
+    errno = 0;
+    unsigned long long v = text ? strtoull(text, &end, 10) : 0;
+    if (!text || *text == '\0' || *text == '-' || *end != '\0' || errno)
+        return pl_fail(d, PL_ERR_INVALID, "%s: expected a non-negative integer, got '%s'", flag, text ? text : "nothing");
+    *out = (uint64_t)v;
+    return PL_OK;
+}
+
+static char *join_args(int argc, char **argv)
+{
+    size_t n = 1;
+    for (int i = 0; i < argc; i++) n += strlen(argv[i]) + 1;
+    char *s = malloc(n);
+    if (!s) return NULL;
+    s[0] = '\0';
+    for (int i = 0; i < argc; i++) {
+        if (i) strcat(s, " ");
+        strcat(s, argv[i]);
+    }
+    return s;
+}
+
+void cli_free(options *o)
+{
+    if (!o) return;
+    free((char *)o->command_line);
+    o->command_line = NULL;
+}
+
+pl_status cli_parse(int argc, char **argv, options *out, cli_action *action, pl_diag *d)
+{
+    options o = options_default();
+    *action = CLI_RUN;
+    pl_status s = PL_OK;
+    /* next(k): the k-th value after the flag at i, or NULL when the command line ends first. */
+#define VALUE(k) (i + (k) < argc ? argv[i + (k)] : NULL)
+    int i;
+    for (i = 1; i < argc && s == PL_OK; i++) {
+        const char *a = argv[i];
+        if (a[0] != '-' || a[1] == '\0') {
+            if (o.scene_path) return pl_fail(d, PL_ERR_INVALID, "expected one scene file, got '%s' and '%s'", o.scene_path, a);
+            o.scene_path = a;
+            continue;
+        }
+        if (!strcmp(a, "-h") || !strcmp(a, "--help")) { *action = CLI_HELP; *out = o; return PL_OK; }
+        else if (!strcmp(a, "-s")) s = parse_int(a, VALUE(1), 1, 1 << 24, &o.spp, d), i++;
+        else if (!strcmp(a, "-l")) s = parse_int(a, VALUE(1), 1, 1 << 20, &o.light_samples, d), i++;
+        else if (!strcmp(a, "-t") || !strcmp(a, "--threads")) s = parse_int(a, VALUE(1), 1, 1024, &o.threads, d), i++;
+        else if (!strcmp(a, "-m")) s = parse_int(a, VALUE(1), 0, 100000, &o.max_depth, d), i++;
+        else if (!strcmp(a, "-o")) {
+            int v = 0;
+            s = parse_int(a, VALUE(1), 0, 1, &v, d), i++;
+            o.accumulate = v == 1;
+        }
+        else if (!strcmp(a, "-e")) { if (!VALUE(1)) s = pl_fail(d, PL_ERR_INVALID, "-e: expected a file name"); o.envmap = VALUE(1); i++; }
+        else if (!strcmp(a, "-b")) s = parse_float(a, VALUE(1), 0.0f, &o.lens_radius, d), i++;
+        else if (!strcmp(a, "-d")) s = parse_float(a, VALUE(1), 0.0f, &o.focal_distance, d), i++;
+        else if (!strcmp(a, "-f")) { if (!VALUE(1)) s = pl_fail(d, PL_ERR_INVALID, "-f: expected an output file name"); o.output = VALUE(1); i++; }
+        else if (!strcmp(a, "-c")) { if (!VALUE(1)) s = pl_fail(d, PL_ERR_INVALID, "-c: expected a camera settings file"); o.camera_file = VALUE(1); i++; }
+        else if (!strcmp(a, "-r")) {
+            s = parse_int("-r W", VALUE(1), 1, 1 << 15, &o.width, d);
+            if (s == PL_OK) s = parse_int("-r H", VALUE(2), 1, 1 << 15, &o.height, d);
+            i += 2;
+        }
+        else if (!strcmp(a, "-a")) {
+            s = parse_int("-a B", VALUE(1), 2, 1 << 24, &o.adaptive_batch, d);
+            if (s == PL_OK) s = parse_float("-a T", VALUE(2), 0.0f, &o.adaptive_tol, d);
+            o.adaptive = true;
+            i += 2;
+        }
+        else if (!strcmp(a, "-H")) o.hemisphere = true;
+        else if (!strcmp(a, "-v")) o.verbose = true;
+        else if (!strcmp(a, "-q")) o.quiet = true;
+        else if (!strcmp(a, "--seed")) s = parse_u64(a, VALUE(1), &o.seed, d), i++;
+        else if (!strcmp(a, "--normals")) o.normals = true;
+        else if (!strcmp(a, "--cs184-camera")) o.cs184_framing = true;
+        else if (!strcmp(a, "--no-bvh")) o.linear_scan = true;
+        else if (!strcmp(a, "--leaf-size")) s = parse_int(a, VALUE(1), 1, 255, &o.max_leaf_size, d), i++;
+        else if (!strcmp(a, "--heatmap")) { if (!VALUE(1)) s = pl_fail(d, PL_ERR_INVALID, "--heatmap: expected a .png file name"); o.heatmap = VALUE(1); i++; }
+        else return pl_fail(d, PL_ERR_INVALID, "unknown option '%s'", a);
+    }
+#undef VALUE
+    if (s != PL_OK) return s;
+    if (!o.scene_path) return pl_fail(d, PL_ERR_INVALID, "expected a scene file (.dae)");
+    if (o.envmap) return pl_fail(d, PL_ERR_INVALID, "-e %s: environment maps are not supported yet", o.envmap);
+    o.command_line = join_args(argc, argv);
+    if (!o.command_line) return pl_fail(d, PL_ERR_NOMEM, "out of memory");
+    *out = o;
+    return PL_OK;
+}

@@ -1,0 +1,144 @@
+/* bin/pathtracer: load a scene, build the accelerator, render, write the image and its sidecar.
+ * Exit status: 0 success, 2 bad input (flags, scene, camera file), 1 failure while rendering or writing. */
+#include "cli.h"
+#include "dae.h"
+#include "camera_file.h"
+#include "render.h"
+#include "sidecar.h"
+#include "colormap.h"
+#include "heatmap.h"
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <time.h>
+#include <unistd.h>
+
+static double now_seconds(void)
+{
+    struct timespec ts;
+    clock_gettime(CLOCK_MONOTONIC, &ts);
+    return ts.tv_sec + ts.tv_nsec * 1e-9;
+}
+
+static void print_progress(void *user, int done, int total)
+{
+    (void)user;
+    int width = 40, filled = total ? done * width / total : width;
+    fprintf(stderr, "\r  [%.*s%*s] %3d%%", filled, "########################################", width - filled, "",
+            total ? done * 100 / total : 100);
+    if (done == total) fprintf(stderr, "\n");
+    fflush(stderr);
+}
+
+static int fail(const char *prog, pl_diag *d, int code)
+{
+    fprintf(stderr, "%s: %s\n", prog, d->error);
+    return code;
+}
+
+/* Everything after the options are parsed; owns no memory the caller must free. */
+static int run(const options *o, const char *prog)
+{
+    pl_diag diag = pl_diag_default();
+    scene s;
+    int code = 0;
+    image img = {0};
+    int *samples = NULL;
+    char *json = NULL, *rate = NULL;
+    accel a;
+    memset(&a, 0, sizeof a);
+
+    double t0 = now_seconds();
+    if (dae_load(o->scene_path, &s, &diag) != PL_OK) return fail(prog, &diag, 2);
+    if (o->camera_file) {
+        if (camera_file_load(o->camera_file, &s.camera, &diag) != PL_OK) {
+            scene_free(&s);
+            return fail(prog, &diag, 2);
+        }
+        s.has_camera = true;
+    }
+    double load_seconds = now_seconds() - t0;
+
+    if (accel_build(&a, &s, !o->linear_scan, o->max_leaf_size, &diag) != PL_OK) { code = fail(prog, &diag, 1); goto done; }
+    render_ctx ctx;
+    render_ctx_init(&ctx, &s, &a, o);
+    if (!o->quiet && isatty(STDERR_FILENO)) ctx.on_progress = print_progress;
+
+    if (o->heatmap && render_heatmap(&ctx, o->heatmap, &diag) != PL_OK) { code = fail(prog, &diag, 1); goto done; }
+
+    samples = calloc((size_t)o->width * (size_t)o->height, sizeof *samples);
+    if (!samples || image_alloc(&img, o->width, o->height) != PL_OK) {
+        fprintf(stderr, "%s: out of memory for a %dx%d image\n", prog, o->width, o->height);
+        code = 1;
+        goto done;
+    }
+    render_stats stats;
+    if (render_image(&ctx, &img, samples, &stats, &diag) != PL_OK) { code = fail(prog, &diag, 1); goto done; }
+    if (stats.bad_pixels)
+        fprintf(stderr, "%s: warning: %d pixels have NaN, infinite or negative radiance (first at x=%d y=%d, "
+                        "counted from the bottom-left)\n", prog, stats.bad_pixels, stats.first_bad_x, stats.first_bad_y);
+
+    double t1 = now_seconds();
+    if (o->output) {
+        json = path_with_suffix(o->output, "", ".json");
+        rate = path_with_suffix(o->output, "_rate", ".png");
+        if (!json || !rate) { fprintf(stderr, "%s: out of memory\n", prog); code = 1; goto done; }
+        if (image_write(&img, o->output, &diag) != PL_OK ||
+            rate_map_write(rate, samples, o->width, o->height, o->spp, &diag) != PL_OK) {
+            code = fail(prog, &diag, 1);
+            goto done;
+        }
+        sidecar_info info = {load_seconds, a.build_seconds, now_seconds() - t1, &stats, o->adaptive ? samples : NULL};
+        if (sidecar_write(json, &ctx, &info, &diag) != PL_OK) { code = fail(prog, &diag, 1); goto done; }
+    }
+    if (!o->quiet) {
+        double secs = stats.seconds > 0 ? stats.seconds : 1e-9;
+        printf("[pathlab] %d primitives (%d triangles, %d spheres), %d lights; loaded in %.4f s\n",
+               scene_prim_count(&s), s.num_triangles, s.num_spheres, s.num_lights, load_seconds);
+        if (a.use_bvh)
+            printf("[pathlab] BVH: %d nodes built in %.4f s\n", a.bvh.num_nodes, a.build_seconds);
+        else
+            printf("[pathlab] no BVH (%s): linear scan over every primitive\n",
+                   o->linear_scan ? "--no-bvh" : "part 2 not implemented");
+        printf("[pathlab] rendered %dx%d in %.4f s on %d threads: %llu rays, %.3f million rays/s, %.2f samples/pixel\n",
+               o->width, o->height, stats.seconds, o->threads, (unsigned long long)stats.rays, stats.rays / secs * 1e-6,
+               (double)stats.samples / ((double)o->width * o->height));
+        if (o->output) printf("[pathlab] wrote %s, %s, %s\n", o->output, rate, json);
+    }
+done:
+    free(json);
+    free(rate);
+    free(samples);
+    image_free(&img);
+    accel_free(&a);
+    scene_free(&s);
+    return code;
+}
+
+int main(int argc, char **argv)
+{
+    const char *prog = "pathtracer";
+    options o;
+    cli_action action;
+    pl_diag diag = pl_diag_default();
+    if (cli_parse(argc, argv, &o, &action, &diag) != PL_OK) {
+        fprintf(stderr, "%s: %s\nTry '%s -h' for help.\n", prog, diag.error, prog);
+        return 2;
+    }
+    if (action == CLI_HELP) {
+        cli_print_usage(stdout, prog);
+        return 0;
+    }
+    if (o.output) {
+        /* Check the name before a long render, not after. */
+        size_t n = strlen(o.output);
+        if (!(n > 4 && (!strcasecmp(o.output + n - 4, ".png") || !strcasecmp(o.output + n - 4, ".hdr")))) {
+            fprintf(stderr, "%s: -f %s: expected a file name ending in .png or .hdr\nTry '%s -h' for help.\n", prog, o.output, prog);
+            cli_free(&o);
+            return 2;
+        }
+    }
+    int code = run(&o, prog);
+    cli_free(&o);
+    return code;
+}

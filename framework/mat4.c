@@ -1,0 +1,134 @@
+/* 4x4 affine transforms: row-major, column vectors (p' = M p). */
+#include "mat4.h"
+#include <math.h>
+
+mat4 mat4_identity(void)
+{
+    mat4 r = {{{1, 0, 0, 0}, {0, 1, 0, 0}, {0, 0, 1, 0}, {0, 0, 0, 1}}};
+    return r;
+}
+
+mat4 mat4_mul(mat4 a, mat4 b)
+{
+    mat4 r;
+    for (int i = 0; i < 4; i++)
+        for (int j = 0; j < 4; j++) {
+            float s = 0.0f;
+            for (int k = 0; k < 4; k++) s += a.m[i][k] * b.m[k][j];
+            r.m[i][j] = s;
+        }
+    return r;
+}
+
+mat4 mat4_translate(vec3 t)
+{
+    mat4 r = mat4_identity();
+    r.m[0][3] = t.x;
+    r.m[1][3] = t.y;
+    r.m[2][3] = t.z;
+    return r;
+}
+
+mat4 mat4_scale(vec3 s)
+{
+    mat4 r = mat4_identity();
+    r.m[0][0] = s.x;
+    r.m[1][1] = s.y;
+    r.m[2][2] = s.z;
+    return r;
+}
+
+/* Rodrigues' rotation formula as a matrix. */
+mat4 mat4_rotate(vec3 axis, float degrees)
+{
+    vec3 a = vec3_normalize(axis);
+    float rad = degrees * 3.14159265358979323846f / 180.0f;
+    float c = cosf(rad), s = sinf(rad), k = 1.0f - c;
+    mat4 r = mat4_identity();
+    r.m[0][0] = a.x * a.x * k + c;
+    r.m[0][1] = a.x * a.y * k - a.z * s;
+    r.m[0][2] = a.x * a.z * k + a.y * s;
+    r.m[1][0] = a.y * a.x * k + a.z * s;
+    r.m[1][1] = a.y * a.y * k + c;
+    r.m[1][2] = a.y * a.z * k - a.x * s;
+    r.m[2][0] = a.z * a.x * k - a.y * s;
+    r.m[2][1] = a.z * a.y * k + a.x * s;
+    r.m[2][2] = a.z * a.z * k + c;
+    return r;
+}
+
+mat4 mat4_lookat(vec3 eye, vec3 target, vec3 up)
+{
+    vec3 back = vec3_normalize(vec3_sub(eye, target));  /* local +Z: the camera looks down -Z */
+    vec3 right = vec3_normalize(vec3_cross(up, back));
+    vec3 true_up = vec3_cross(back, right);
+    mat4 r = mat4_identity();
+    vec3 cols[4] = {right, true_up, back, eye};
+    for (int j = 0; j < 4; j++) {
+        r.m[0][j] = cols[j].x;
+        r.m[1][j] = cols[j].y;
+        r.m[2][j] = cols[j].z;
+    }
+    return r;
+}
+
+mat4 mat4_transpose(mat4 a)
+{
+    mat4 r;
+    for (int i = 0; i < 4; i++)
+        for (int j = 0; j < 4; j++) r.m[i][j] = a.m[j][i];
+    return r;
+}
+
+/* Gauss-Jordan elimination with partial pivoting, in double for stability. */
+bool mat4_inverse(mat4 a, mat4 *out)
+{
+    double m[4][8];
+    for (int i = 0; i < 4; i++)
+        for (int j = 0; j < 4; j++) {
+            m[i][j] = a.m[i][j];
+            m[i][j + 4] = (i == j) ? 1.0 : 0.0;
+        }
+    for (int col = 0; col < 4; col++) {
+        int pivot = col;
+        for (int i = col + 1; i < 4; i++)
+            if (fabs(m[i][col]) > fabs(m[pivot][col])) pivot = i;
+        if (fabs(m[pivot][col]) < 1e-12) return false;
+        for (int j = 0; j < 8; j++) {
+            double t = m[col][j];
+            m[col][j] = m[pivot][j];
+            m[pivot][j] = t;
+        }
+        double inv = 1.0 / m[col][col];
+        for (int j = 0; j < 8; j++) m[col][j] *= inv;
+        for (int i = 0; i < 4; i++) {
+            if (i == col) continue;
+            double f = m[i][col];
+            for (int j = 0; j < 8; j++) m[i][j] -= f * m[col][j];
+        }
+    }
+    for (int i = 0; i < 4; i++)
+        for (int j = 0; j < 4; j++) out->m[i][j] = (float)m[i][j + 4];
+    return true;
+}
+
+vec3 mat4_point(mat4 a, vec3 p)
+{
+    return vec3_make(a.m[0][0] * p.x + a.m[0][1] * p.y + a.m[0][2] * p.z + a.m[0][3],
+                     a.m[1][0] * p.x + a.m[1][1] * p.y + a.m[1][2] * p.z + a.m[1][3],
+                     a.m[2][0] * p.x + a.m[2][1] * p.y + a.m[2][2] * p.z + a.m[2][3]);
+}
+
+vec3 mat4_dir(mat4 a, vec3 v)
+{
+    return vec3_make(a.m[0][0] * v.x + a.m[0][1] * v.y + a.m[0][2] * v.z,
+                     a.m[1][0] * v.x + a.m[1][1] * v.y + a.m[1][2] * v.z,
+                     a.m[2][0] * v.x + a.m[2][1] * v.y + a.m[2][2] * v.z);
+}
+
+vec3 mat4_normal(mat4 a, vec3 n)
+{
+    mat4 inv;
+    if (!mat4_inverse(a, &inv)) return vec3_normalize(mat4_dir(a, n));
+    return vec3_normalize(mat4_dir(mat4_transpose(inv), n));
+}

@@ -1,0 +1,186 @@
+/* The render: estimator dispatch and the tiled, multi-threaded pixel loop. */
+#include "render.h"
+#include "../parts/part1_raygen/part1.h"
+#include "../parts/part3_direct/part3.h"
+#include "../parts/part4_global/part4.h"
+#include "../parts/part5_adaptive/part5.h"
+#include <math.h>
+#include <pthread.h>
+#include <stdatomic.h>
+#include <stdlib.h>
+#include <string.h>
+#include <time.h>
+
+#define TILE 16
+
+/* CS184's framing fixes the lens for an 800x600 frame; other sizes crop or extend it. */
+static void apply_cs184_framing(camera *c, const scene *s, int width, int height)
+{
+    camera_set_aspect(c, 800.0f / 600.0f);
+    *c = camera_cs184_framing(c, scene_bounds(s));
+    float to_rad = 3.14159265358979323846f / 180.0f;
+    c->hfov = 2.0f * atanf(tanf(c->hfov * to_rad * 0.5f) * width / 800.0f) / to_rad;
+    c->vfov = 2.0f * atanf(tanf(c->vfov * to_rad * 0.5f) * height / 600.0f) / to_rad;
+}
+
+void render_ctx_init(render_ctx *ctx, const scene *s, const accel *a, const options *o)
+{
+    memset(ctx, 0, sizeof *ctx);
+    ctx->scene = s;
+    ctx->accel = a;
+    ctx->opts = o;
+    ctx->width = o->width;
+    ctx->height = o->height;
+    ctx->camera = s->has_camera ? s->camera : scene_default_camera(s);
+    if (o->cs184_framing)
+        apply_cs184_framing(&ctx->camera, s, o->width, o->height);
+    else
+        camera_set_aspect(&ctx->camera, (float)o->width / (float)o->height);
+    ctx->camera.lens_radius = o->lens_radius;
+    ctx->camera.focal_distance = o->focal_distance;
+}
+
+rng render_rng(const render_ctx *ctx, int x, int y, int sample)
+{
+    uint64_t pixel = (uint64_t)y * (uint64_t)ctx->width + (uint64_t)x;
+    return rng_for_sample(ctx->opts->seed, pixel, (uint64_t)sample);
+}
+
+bool render_intersect(const render_ctx *ctx, ray *r, hit *h) { return accel_intersect(ctx->accel, r, h); }
+bool render_occluded(const render_ctx *ctx, const ray *r) { return accel_occluded(ctx->accel, r); }
+
+rgb one_bounce_radiance(const render_ctx *ctx, const ray *r, const hit *h, rng *g)
+{
+    return ctx->opts->hemisphere ? direct_hemisphere(ctx, r, h, g) : direct_importance(ctx, r, h, g);
+}
+
+rgb radiance_estimate(const render_ctx *ctx, ray *r, rng *g)
+{
+    hit h;
+    if (!render_intersect(ctx, r, &h)) return rgb_gray(0.0f);
+    const options *o = ctx->opts;
+    if (o->normals) return normal_shade(&h);
+
+    /* Emission seen directly counts when bounces accumulate, or when it is the only bounce asked for. */
+    rgb L = (o->accumulate || o->max_depth == 0) ? zero_bounce_radiance(ctx, r, &h) : rgb_gray(0.0f);
+    if (o->max_depth == 1)
+        L = rgb_add(L, one_bounce_radiance(ctx, r, &h, g));
+    else if (o->max_depth >= 2)
+        L = rgb_add(L, at_least_one_bounce_radiance(ctx, r, &h, g));
+    return L;
+}
+
+rgb render_pixel(const render_ctx *ctx, int x, int y, int *samples_taken)
+{
+    return ctx->opts->adaptive ? pixel_estimate_adaptive(ctx, x, y, samples_taken)
+                               : pixel_estimate_fixed(ctx, x, y, samples_taken);
+}
+
+/* ---- the tiled loop ------------------------------------------------------------------------- */
+
+typedef struct {
+    const render_ctx *ctx;
+    image *out;
+    int *samples;
+    int tiles_x, tiles_total;
+    atomic_int next_tile;   /* tiles are handed out in order; any thread may take any tile */
+    atomic_int tiles_done;
+    atomic_uint_fast64_t rays, camera_samples;
+    atomic_int bad_pixels;
+    atomic_int first_bad;   /* image index of the lowest bad pixel, INT32_MAX if none */
+} render_job;
+
+static bool radiance_is_valid(rgb c) { return rgb_is_finite(c) && c.r >= 0.0f && c.g >= 0.0f && c.b >= 0.0f; }
+
+static void render_tile(render_job *job, int tile)
+{
+    const render_ctx *ctx = job->ctx;
+    int x0 = (tile % job->tiles_x) * TILE, y0 = (tile / job->tiles_x) * TILE;
+    int x1 = x0 + TILE < ctx->width ? x0 + TILE : ctx->width;
+    int y1 = y0 + TILE < ctx->height ? y0 + TILE : ctx->height;
+    uint64_t samples = 0;
+    for (int y = y0; y < y1; y++)
+        for (int x = x0; x < x1; x++) {
+            int taken = 0;
+            rgb c = render_pixel(ctx, x, y, &taken);
+            int index = (ctx->height - 1 - y) * ctx->width + x;  /* pixel y counts from the bottom */
+            if (!radiance_is_valid(c)) {
+                atomic_fetch_add(&job->bad_pixels, 1);
+                int seen = atomic_load(&job->first_bad);
+                while (index < seen && !atomic_compare_exchange_weak(&job->first_bad, &seen, index)) {}
+            }
+            job->out->pixels[index] = c;
+            if (job->samples) job->samples[index] = taken;
+            samples += (uint64_t)taken;
+        }
+    atomic_fetch_add(&job->camera_samples, samples);
+}
+
+static void *render_worker(void *arg)
+{
+    render_job *job = arg;
+    accel_take_ray_count();  /* start this thread's count from zero */
+    for (;;) {
+        int tile = atomic_fetch_add(&job->next_tile, 1);
+        if (tile >= job->tiles_total) break;
+        render_tile(job, tile);
+        atomic_fetch_add(&job->tiles_done, 1);
+    }
+    atomic_fetch_add(&job->rays, accel_take_ray_count());
+    return NULL;
+}
+
+static double now_seconds(void)
+{
+    struct timespec ts;
+    clock_gettime(CLOCK_MONOTONIC, &ts);
+    return ts.tv_sec + ts.tv_nsec * 1e-9;
+}
+
+pl_status render_image(const render_ctx *ctx, image *out, int *samples_per_pixel, render_stats *stats, pl_diag *diag)
+{
+    if (out->width != ctx->width || out->height != ctx->height)
+        return pl_fail(diag, PL_ERR_INVALID, "render_image: image is %dx%d, the render %dx%d",
+                       out->width, out->height, ctx->width, ctx->height);
+    render_job job = {.ctx = ctx, .out = out, .samples = samples_per_pixel};
+    job.tiles_x = (ctx->width + TILE - 1) / TILE;
+    job.tiles_total = job.tiles_x * ((ctx->height + TILE - 1) / TILE);
+    atomic_init(&job.next_tile, 0);
+    atomic_init(&job.tiles_done, 0);
+    atomic_init(&job.rays, 0);
+    atomic_init(&job.camera_samples, 0);
+    atomic_init(&job.bad_pixels, 0);
+    atomic_init(&job.first_bad, INT32_MAX);
+
+    int nthreads = ctx->opts->threads > 0 ? ctx->opts->threads : 1;
+    pthread_t *threads = calloc((size_t)nthreads, sizeof *threads);
+    if (!threads) return pl_fail(diag, PL_ERR_NOMEM, "render_image: out of memory");
+    double t0 = now_seconds();
+    int started = 0;
+    for (; started < nthreads; started++)
+        if (pthread_create(&threads[started], NULL, render_worker, &job) != 0) break;
+    if (started == 0) render_worker(&job);  /* no thread could start: render on this one */
+
+    /* The calling thread reports progress until the workers finish. */
+    while (ctx->on_progress && atomic_load(&job.tiles_done) < job.tiles_total && started > 0) {
+        ctx->on_progress(ctx->progress_user, atomic_load(&job.tiles_done), job.tiles_total);
+        struct timespec pause = {0, 100 * 1000 * 1000};
+        nanosleep(&pause, NULL);
+    }
+    for (int i = 0; i < started; i++) pthread_join(threads[i], NULL);
+    free(threads);
+    if (ctx->on_progress) ctx->on_progress(ctx->progress_user, job.tiles_total, job.tiles_total);
+
+    if (stats) {
+        memset(stats, 0, sizeof *stats);
+        stats->seconds = now_seconds() - t0;
+        stats->rays = atomic_load(&job.rays);
+        stats->samples = atomic_load(&job.camera_samples);
+        stats->bad_pixels = atomic_load(&job.bad_pixels);
+        int first = atomic_load(&job.first_bad);
+        /* Report the bad pixel in the same bottom-left coordinates the estimators use. */
+        stats->first_bad_x = stats->bad_pixels ? first % ctx->width : -1;
+        stats->first_bad_y = stats->bad_pixels ? ctx->height - 1 - first / ctx->width : -1;
+    }
+    return PL_OK;
+}

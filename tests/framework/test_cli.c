@@ -1,0 +1,114 @@
+/* Test machinery: not part of any assignment. Command-line parsing: CS184's flags and defaults. */
+#include "../common/test.h"
+#include "../../framework/cli.h"
+#include <string.h>
+
+/* Parses a NULL-terminated list of arguments (after the program name). */
+static pl_status parse(options *o, pl_diag *d, const char **args)
+{
+    char *argv[32] = {"pathtracer"};
+    int argc = 1;
+    while (args[argc - 1]) {
+        argv[argc] = (char *)args[argc - 1];
+        argc++;
+    }
+    cli_action action;
+    return cli_parse(argc, argv, o, &action, d);
+}
+
+static void test_cli__defaults_are_cs184s(void **state)
+{
+    options o;
+    pl_diag d = pl_diag_default();
+    assert_int_equal(PL_OK, parse(&o, &d, (const char *[]){"s.dae", NULL}));
+    assert_int_equal(1, o.spp);
+    assert_int_equal(1, o.light_samples);
+    assert_int_equal(1, o.threads);
+    assert_int_equal(1, o.max_depth);
+    assert_true(o.accumulate);
+    assert_int_equal(800, o.width);
+    assert_int_equal(600, o.height);
+    assert_int_equal(32, o.adaptive_batch);
+    assert_float_near(0.05, o.adaptive_tol, 1e-7);
+    assert_float_near(4.7, o.focal_distance, 1e-6);
+    assert_false(o.adaptive);
+    assert_false(o.hemisphere);
+    assert_string_equal("s.dae", o.scene_path);
+    cli_free(&o);
+}
+
+static void test_cli__every_flag_is_read(void **state)
+{
+    options o;
+    pl_diag d = pl_diag_default();
+    assert_int_equal(PL_OK, parse(&o, &d, (const char *[]){"-s", "64", "-l", "4", "-t", "2", "-m", "5", "-o", "0", "-b", "0.1",
+                                                           "-d", "3", "-f", "x.png", "-r", "480", "360", "-a", "16", "0.1",
+                                                           "-H", "--seed", "99", "--normals", "--cs184-camera",
+                                                           "--no-bvh", "--leaf-size", "8", "-v", "scene.dae", NULL}));
+    assert_int_equal(64, o.spp);
+    assert_int_equal(4, o.light_samples);
+    assert_int_equal(2, o.threads);
+    assert_int_equal(5, o.max_depth);
+    assert_false(o.accumulate);
+    assert_float_near(0.1, o.lens_radius, 1e-6);
+    assert_float_near(3.0, o.focal_distance, 1e-6);
+    assert_string_equal("x.png", o.output);
+    assert_int_equal(480, o.width);
+    assert_int_equal(360, o.height);
+    assert_true(o.adaptive);
+    assert_int_equal(16, o.adaptive_batch);
+    assert_float_near(0.1, o.adaptive_tol, 1e-6);
+    assert_true(o.hemisphere && o.normals && o.cs184_framing && o.linear_scan && o.verbose);
+    assert_int_equal(99, (int)o.seed);
+    assert_int_equal(8, o.max_leaf_size);
+    assert_non_null(strstr(o.command_line, "-r 480 360"));
+    cli_free(&o);
+}
+
+/* Each bad command line fails with PL_ERR_INVALID and a message containing `expect`. */
+static void expect_error(const char **args, const char *expect)
+{
+    options o;
+    pl_diag d = pl_diag_default();
+    pl_status s = parse(&o, &d, args);
+    if (s != PL_ERR_INVALID || !strstr(d.error, expect))
+        fail_msg("expected an error containing '%s', got status %d: '%s'", expect, s, d.error);
+}
+
+static void test_cli__bad_values_are_named(void **state)
+{
+    expect_error((const char *[]){"-s", "abc", "s.dae", NULL}, "-s: expected an integer");
+    expect_error((const char *[]){"-s", "0", "s.dae", NULL}, "-s: expected an integer from 1");
+    expect_error((const char *[]){"-s", NULL}, "-s: expected an integer");
+    expect_error((const char *[]){"-r", "100", NULL}, "-r H");
+    expect_error((const char *[]){"-r", "100", "x", "s.dae", NULL}, "-r H");
+    expect_error((const char *[]){"-a", "32", NULL}, "-a T");
+    expect_error((const char *[]){"-o", "2", "s.dae", NULL}, "-o");
+    expect_error((const char *[]){"-b", "-1", "s.dae", NULL}, "-b");
+    expect_error((const char *[]){"--seed", "-3", "s.dae", NULL}, "--seed");
+    expect_error((const char *[]){"--bogus", "s.dae", NULL}, "unknown option '--bogus'");
+    expect_error((const char *[]){NULL}, "expected a scene file");
+    expect_error((const char *[]){"a.dae", "b.dae", NULL}, "expected one scene file");
+    expect_error((const char *[]){"-e", "sky.exr", "s.dae", NULL}, "not supported yet");
+}
+
+static void test_cli__help_wins(void **state)
+{
+    options o;
+    char *argv[] = {"pathtracer", "-s", "4", "-h"};
+    cli_action action;
+    pl_diag d = pl_diag_default();
+    assert_int_equal(PL_OK, cli_parse(4, argv, &o, &action, &d));
+    assert_int_equal(CLI_HELP, action);
+}
+
+int cli_tests(void)
+{
+    const struct CMUnitTest tests[] = {
+        cmocka_unit_test(test_cli__defaults_are_cs184s),
+        cmocka_unit_test(test_cli__every_flag_is_read),
+        cmocka_unit_test(test_cli__bad_values_are_named),
+        cmocka_unit_test(test_cli__help_wins),
+    };
+    return cmocka_run_group_tests_name("cli", tests, NULL, NULL);
+}

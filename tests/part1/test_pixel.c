@@ -1,0 +1,178 @@
+/* Test machinery: not part of any assignment. Task 1.4: the fixed-rate pixel estimate, and a whole
+ * normal-shaded render checked against an independent oracle.
+ *
+ * Statistics: the coverage tests are binomial proportions checked with a two-sided z-test at
+ * ALPHA = 1e-4 each (three tests: Sidak over the suite gives 3e-4 < 1e-3). Seeds are fixed (SEED). */
+#include "../common/test.h"
+#include "../../parts/part1_raygen/part1.h"
+#include "../../framework/render.h"
+#include <math.h>
+#include <stdio.h>
+#include <string.h>
+
+#define ALPHA 1e-4
+#define Z_CRIT 3.8906  /* two-sided standard normal quantile for ALPHA */
+#define SEED 20261121u
+
+/* A 1x1-pixel film looking down -Z with a 90-degree fov: film x in [0,1] maps to the plane
+ * z = -1 at x in [-1, 1]. A quad on that plane covers x in [x0, 10], y in [y0, 10]. */
+static void build_edge_scene(scene *s, float x0, float y0)
+{
+    memset(s, 0, sizeof *s);
+    int m = scene_add_material(s, material_make(rgb_gray(0.5f), rgb_gray(0)));
+    vec3 a = {x0, y0, -1}, b = {10, y0, -1}, c = {10, 10, -1}, d = {x0, 10, -1};
+    scene_add_triangle(s, triangle_make(a, b, c, m));
+    scene_add_triangle(s, triangle_make(a, c, d, m));
+    s->has_camera = true;
+    s->camera.camera_to_world = mat4_identity();
+    s->camera.hfov = s->camera.vfov = 90.0f;
+    s->camera.znear = 1e-3f;
+    s->camera.zfar = 100.0f;
+}
+
+/* Fraction of the pixel covered, estimated from the blue channel (normal (0,0,1) shades blue 1). */
+static double covered_fraction(float x0, float y0, int spp, int *taken)
+{
+    scene s;
+    build_edge_scene(&s, x0, y0);
+    accel a;
+    pl_diag d = pl_diag_default();
+    assert_int_equal(PL_OK, accel_build(&a, &s, false, 4, &d));
+    options o = options_default();
+    o.width = o.height = 1;
+    o.spp = spp;
+    o.normals = true;
+    o.seed = SEED;
+    render_ctx ctx;
+    render_ctx_init(&ctx, &s, &a, &o);
+    rgb c = pixel_estimate_fixed(&ctx, 0, 0, taken);
+    accel_free(&a);
+    scene_free(&s);
+    return c.b;
+}
+
+static void expect_fraction(float x0, float y0, double expected, int spp)
+{
+    int taken = 0;
+    double got = covered_fraction(x0, y0, spp, &taken);
+    assert_implemented();
+    if (taken != spp) fail_msg("wrong: *samples_taken = %d, expected %d (the -s value)", taken, spp);
+    double tolerance = Z_CRIT * sqrt(expected * (1 - expected) / spp);
+    if (!(fabs(got - expected) <= tolerance))
+        fail_msg("wrong: %d samples cover %.4f of the pixel, expected %.4f +- %.4f (alpha %g, seed %u): "
+                 "are samples spread uniformly over the whole pixel?", spp, got, expected, tolerance, ALPHA, SEED);
+}
+
+static void test_pixel_estimate_fixed__one_sample_goes_through_the_centre(void **state)
+{
+    int taken = 0;
+    double hit_left = covered_fraction(-0.2f, -10, 1, &taken);  /* the centre (x = 0) is covered */
+    assert_implemented();
+    assert_int_equal(1, taken);
+    assert_float_near(1.0, hit_left, 1e-6);
+    double miss = covered_fraction(0.2f, -10, 1, &taken);       /* the centre is not covered */
+    assert_float_near(0.0, miss, 1e-6);
+}
+
+static void test_pixel_estimate_fixed__samples_cover_the_pixel_uniformly_in_x(void **state)
+{
+    expect_fraction(0.2f, -10, 0.4, 4096);  /* x in [0.2, 1] of [-1, 1] */
+}
+
+static void test_pixel_estimate_fixed__samples_cover_the_pixel_uniformly_in_y(void **state)
+{
+    expect_fraction(-10, 0.5f, 0.25, 4096); /* y in [0.5, 1] of [-1, 1]: film y = 0 is the bottom */
+}
+
+static void test_pixel_estimate_fixed__corner_quarter(void **state)
+{
+    expect_fraction(0.0f, 0.0f, 0.25, 4096);
+}
+
+/* ---- a whole render against an oracle written independently, in double precision ---------- */
+
+static const struct { double c[3], r; } oracle_spheres[] = {{{-0.6, 0.1, -4.0}, 0.8}, {{0.9, -0.2, -5.0}, 1.0}};
+
+/* Normal colour the oracle expects at film point (u, v), or black on a miss. */
+static rgb oracle_normal(double u, double v, double tan_h, double tan_v)
+{
+    double d[3] = {tan_h * (2 * u - 1), tan_v * (2 * v - 1), -1};
+    double len = sqrt(d[0] * d[0] + d[1] * d[1] + d[2] * d[2]);
+    for (int k = 0; k < 3; k++) d[k] /= len;
+    double best = INFINITY;
+    rgb colour = rgb_gray(0);
+    for (int i = 0; i < 2; i++) {
+        const double *c = oracle_spheres[i].c;
+        double b = -(d[0] * c[0] + d[1] * c[1] + d[2] * c[2]);
+        double cc = c[0] * c[0] + c[1] * c[1] + c[2] * c[2] - oracle_spheres[i].r * oracle_spheres[i].r;
+        double disc = b * b - cc;
+        if (disc < 0) continue;
+        double t = -b - sqrt(disc);
+        if (t > 0 && t < best) {
+            best = t;
+            double n[3];
+            for (int k = 0; k < 3; k++) n[k] = (t * d[k] - c[k]) / oracle_spheres[i].r;
+            colour = rgb_make((float)(0.5 * n[0] + 0.5), (float)(0.5 * n[1] + 0.5), (float)(0.5 * n[2] + 0.5));
+        }
+    }
+    return colour;
+}
+
+static void test_render__normal_image_matches_oracle(void **state)
+{
+    scene s;
+    memset(&s, 0, sizeof s);
+    int m = scene_add_material(&s, material_make(rgb_gray(0.5f), rgb_gray(0)));
+    for (int i = 0; i < 2; i++) {
+        const double *c = oracle_spheres[i].c;
+        scene_add_sphere(&s, (sphere){{(float)c[0], (float)c[1], (float)c[2]}, (float)oracle_spheres[i].r, m});
+    }
+    s.has_camera = true;
+    s.camera.camera_to_world = mat4_identity();
+    s.camera.hfov = 60.0f;
+    s.camera.znear = 1e-3f;
+    s.camera.zfar = 100.0f;
+    options o = options_default();
+    o.width = 64, o.height = 48, o.normals = true, o.threads = 2;
+    accel a;
+    pl_diag d = pl_diag_default();
+    assert_int_equal(PL_OK, accel_build(&a, &s, true, 4, &d));
+    render_ctx ctx;
+    render_ctx_init(&ctx, &s, &a, &o);
+    image img;
+    assert_int_equal(PL_OK, image_alloc(&img, o.width, o.height));
+    render_stats st;
+    assert_int_equal(PL_OK, render_image(&ctx, &img, NULL, &st, &d));
+    assert_implemented();
+
+    double tan_h = tan(ctx.camera.hfov * M_PI / 360.0), tan_v = tan(ctx.camera.vfov * M_PI / 360.0);
+    int wrong = 0, first_x = -1, first_y = -1;
+    for (int y = 0; y < o.height; y++)
+        for (int x = 0; x < o.width; x++) {
+            rgb want = oracle_normal((x + 0.5) / o.width, (y + 0.5) / o.height, tan_h, tan_v);
+            rgb got = image_get(&img, x, o.height - 1 - y);
+            if (fabsf(want.r - got.r) + fabsf(want.g - got.g) + fabsf(want.b - got.b) > 3e-3f) {
+                if (wrong++ == 0) first_x = x, first_y = y;
+            }
+        }
+    /* Silhouette pixels may flip between hit and miss by rounding; a handful at most. */
+    if (wrong > 4)
+        fail_msg("wrong: %d of %d pixels differ from the expected normal image (first at x=%d y=%d from the bottom-left)",
+                 wrong, o.width * o.height, first_x, first_y);
+    image_free(&img);
+    accel_free(&a);
+    scene_free(&s);
+}
+
+int pixel_tests(void)
+{
+    const struct CMUnitTest tests[] = {
+        cmocka_unit_test_setup(test_pixel_estimate_fixed__one_sample_goes_through_the_centre, test_setup),
+        cmocka_unit_test_setup(test_pixel_estimate_fixed__samples_cover_the_pixel_uniformly_in_x, test_setup),
+        cmocka_unit_test_setup(test_pixel_estimate_fixed__samples_cover_the_pixel_uniformly_in_y, test_setup),
+        cmocka_unit_test_setup(test_pixel_estimate_fixed__corner_quarter, test_setup),
+        cmocka_unit_test_setup(test_render__normal_image_matches_oracle, test_setup),
+    };
+    printf("part1 pixel tests: seed %u, alpha %g per statistical test\n", SEED, ALPHA);
+    return cmocka_run_group_tests_name("part1: pixel_estimate_fixed (task 1.4) and whole renders", tests, NULL, NULL);
+}
