@@ -1,0 +1,254 @@
+/* COLLADA loader, entry points: the document, its up axis, and the node tree with its transforms.
+ * Elements are converted as the visual scene instances them; see dae_internal.h for the modules. */
+#include "dae.h"
+#include "dae_internal.h"
+
+#include <errno.h>
+#include <limits.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <libxml/parser.h>
+
+/* Deeper than any exporter writes, shallow enough for the C stack. */
+#define MAX_NODE_DEPTH 128
+/* <instance_node> can multiply work exponentially (a node instancing another twice, 40 times). */
+#define MAX_NODE_VISITS 1000000L
+
+/* ---- XML errors -------------------------------------------------------------------------- */
+
+typedef struct { dae_ctx *ctx; bool failed; } xml_errors;
+
+/* libxml2 reports through this instead of printing; the first error is the one worth showing. */
+static void on_xml_error(void *user, xmlErrorPtr e)
+{
+    xmlParserCtxtPtr parser = user;
+    xml_errors *errs = parser->_private;
+    if (!errs || errs->failed || !e || e->level < XML_ERR_ERROR) return;
+    errs->failed = true;
+    char msg[512];
+    snprintf(msg, sizeof msg, "%s", e->message ? e->message : "malformed XML");
+    size_t len = strlen(msg);
+    while (len > 0 && (msg[len - 1] == '\n' || msg[len - 1] == ' ')) msg[--len] = '\0';
+    pl_fail(errs->ctx->diag, PL_ERR_PARSE, "%s:%d: XML: %s", errs->ctx->name, e->line, msg);
+}
+
+static pl_status parse_xml(dae_ctx *c, const char *xml, size_t len)
+{
+    if (len > INT_MAX) return pl_fail(c->diag, PL_ERR_PARSE, "%s:1: XML: file too large", c->name);
+    xmlParserCtxtPtr parser = xmlNewParserCtxt();
+    if (!parser) return pl_fail(c->diag, PL_ERR_NOMEM, "%s: out of memory", c->name);
+    xml_errors errs = {c, false};
+    parser->_private = &errs;
+    parser->sax->serror = on_xml_error;
+    /* NONET: never fetch; no NOENT/DTDLOAD: entities stay unexpanded; BIG_LINES: lines past 65535. */
+    int opts = XML_PARSE_NONET | XML_PARSE_NOERROR | XML_PARSE_NOWARNING | XML_PARSE_BIG_LINES;
+    c->doc = xmlCtxtReadMemory(parser, xml, (int)len, c->name, NULL, opts);
+    bool ok = c->doc && !errs.failed && parser->wellFormed;
+    xmlFreeParserCtxt(parser);
+    if (ok) return PL_OK;
+    if (!errs.failed) pl_fail(c->diag, PL_ERR_PARSE, "%s:1: XML: not a well-formed document", c->name);
+    return PL_ERR_PARSE;
+}
+
+/* ---- transforms -------------------------------------------------------------------------- */
+
+static pl_status read_up_axis(dae_ctx *c, const xmlNode *root)
+{
+    c->up = mat4_identity();
+    const xmlNode *n = dae_child(dae_child(root, "asset"), "up_axis");
+    if (!n) return PL_OK;  /* COLLADA's default is Y_UP */
+    xmlChar *text = xmlNodeGetContent(n);
+    const char *s = text ? (const char *)text : "";
+    while (*s == ' ' || *s == '\t' || *s == '\n' || *s == '\r') s++;
+    size_t len = strcspn(s, " \t\r\n");
+    pl_status st = PL_OK;
+    mat4 m = mat4_identity();
+    if (len == 4 && strncmp(s, "Y_UP", 4) == 0) {
+        /* already pathlab's convention */
+    } else if (len == 4 && strncmp(s, "Z_UP", 4) == 0) {
+        /* CS184's mapping (x, y, z) -> (-x, z, y), a proper rotation, so course scenes frame alike */
+        m.m[0][0] = -1; m.m[1][1] = 0; m.m[1][2] = 1; m.m[2][1] = 1; m.m[2][2] = 0;
+    } else if (len == 4 && strncmp(s, "X_UP", 4) == 0) {
+        /* COLLADA's X_UP has right = -Y, up = +X: (x, y, z) -> (-y, x, z) */
+        m.m[0][0] = 0; m.m[0][1] = -1; m.m[1][0] = 1; m.m[1][1] = 0;
+    } else {
+        st = dae_error(c, n, PL_ERR_PARSE, "expected X_UP, Y_UP or Z_UP, found '%.*s'", (int)(len > 32 ? 32 : len), s);
+    }
+    xmlFree(text);
+    c->up = m;
+    return st;
+}
+
+/* The product of a node's transform elements in document order (COLLADA post-multiplies). */
+static pl_status node_transform(dae_ctx *c, const xmlNode *node, mat4 *out)
+{
+    mat4 m = mat4_identity();
+    for (const xmlNode *t = dae_first(node); t; t = dae_next(t)) {
+        float v[16];
+        pl_status st = PL_OK;
+        mat4 step;
+        if (dae_is(t, "matrix")) {
+            st = dae_floats(c, t, v, 16, 0, NULL);
+            for (int i = 0; i < 16; i++) step.m[i / 4][i % 4] = v[i];  /* row-major, as written */
+        } else if (dae_is(t, "translate")) {
+            st = dae_floats(c, t, v, 3, 0, NULL);
+            step = mat4_translate(vec3_make(v[0], v[1], v[2]));
+        } else if (dae_is(t, "scale")) {
+            st = dae_floats(c, t, v, 3, 0, NULL);
+            step = mat4_scale(vec3_make(v[0], v[1], v[2]));
+        } else if (dae_is(t, "rotate")) {
+            st = dae_floats(c, t, v, 4, 0, NULL);
+            if (!st && v[0] == 0 && v[1] == 0 && v[2] == 0)
+                st = dae_error(c, t, PL_ERR_INVALID, "expected a non-zero rotation axis (x y z degrees)");
+            step = mat4_rotate(vec3_make(v[0], v[1], v[2]), v[3]);
+        } else if (dae_is(t, "lookat")) {
+            st = dae_floats(c, t, v, 9, 0, NULL);
+            vec3 eye = vec3_make(v[0], v[1], v[2]), target = vec3_make(v[3], v[4], v[5]);
+            vec3 up = vec3_make(v[6], v[7], v[8]);
+            if (!st && vec3_length(vec3_cross(vec3_sub(target, eye), up)) == 0.0f)
+                st = dae_error(c, t, PL_ERR_INVALID,
+                               "expected eye != target and an up vector not along the view direction");
+            step = mat4_lookat(eye, target, up);
+        } else if (dae_is(t, "skew")) {
+            dae_warn_once(c, t, "skew", "<skew> transforms are not supported; ignored");
+            continue;
+        } else {
+            continue;
+        }
+        if (st) return st;
+        m = mat4_mul(m, step);
+    }
+    *out = m;
+    return PL_OK;
+}
+
+/* ---- the node tree ----------------------------------------------------------------------- */
+
+static pl_status visit_node(dae_ctx *c, const xmlNode *node, mat4 parent, int depth);
+
+static bool is_transform(const xmlNode *n)
+{
+    return dae_is(n, "matrix") || dae_is(n, "translate") || dae_is(n, "rotate") || dae_is(n, "scale") ||
+           dae_is(n, "lookat") || dae_is(n, "skew");
+}
+
+static pl_status visit_child(dae_ctx *c, const xmlNode *e, mat4 m, int depth)
+{
+    if (dae_is(e, "node")) return visit_node(c, e, m, depth + 1);
+    if (dae_is(e, "instance_geometry")) return dae_instance_geometry(c, e, m);
+    if (dae_is(e, "instance_light")) return dae_instance_light(c, e, m);
+    if (dae_is(e, "instance_camera")) return dae_instance_camera(c, e, m);
+    if (dae_is(e, "instance_node")) {
+        dae_entry *target;
+        pl_status st = dae_resolve(c, e, "url", "node", &target);
+        return st ? st : visit_node(c, target->node, m, depth + 1);
+    }
+    if (dae_is(e, "instance_controller")) {
+        dae_warn_once(c, e, "instance_controller",
+                      "skinned or morphed meshes (<instance_controller>) are not supported; skipped");
+        return PL_OK;
+    }
+    if (!is_transform(e) && !dae_is(e, "extra") && !dae_is(e, "asset"))
+        dae_warn_once(c, e, dae_name(e), "<%s> in a <node> is not supported; ignored", dae_name(e));
+    return PL_OK;
+}
+
+static pl_status visit_node(dae_ctx *c, const xmlNode *node, mat4 parent, int depth)
+{
+    if (depth > MAX_NODE_DEPTH)
+        return dae_error(c, node, PL_ERR_PARSE, "nodes nested deeper than %d levels (an <instance_node> cycle?)",
+                         MAX_NODE_DEPTH);
+    if (++c->node_visits > MAX_NODE_VISITS)
+        return dae_error(c, node, PL_ERR_PARSE, "more than %ld node instances (<instance_node> fan-out?)",
+                         MAX_NODE_VISITS);
+    mat4 local;
+    pl_status st = node_transform(c, node, &local);
+    mat4 m = mat4_mul(parent, local);
+    for (const xmlNode *e = dae_first(node); e && !st; e = dae_next(e)) st = visit_child(c, e, m, depth);
+    return st;
+}
+
+static pl_status load_document(dae_ctx *c)
+{
+    xmlNode *root = xmlDocGetRootElement(c->doc);
+    if (!dae_is(root, "COLLADA"))
+        return dae_error(c, root, PL_ERR_PARSE, "expected the root element <COLLADA>");
+    pl_status st = read_up_axis(c, root);
+    if (!st) st = dae_index_build(c);
+    if (st) return st;
+
+    const xmlNode *animations = dae_child(root, "library_animations");
+    if (animations && dae_first(animations))
+        dae_warn_once(c, animations, "animation", "animations are not supported; the scene loads at rest");
+    const xmlNode *units = dae_child(dae_child(root, "asset"), "unit");
+    const char *meter = dae_attr(units, "meter");
+    if (meter && strtod(meter, NULL) != 1.0)
+        dae_warn_once(c, units, "unit", "unit meter=\"%.32s\" is ignored: lengths are read as metres", meter);
+
+    const xmlNode *sc = dae_child(root, "scene");
+    if (!sc) return dae_error(c, root, PL_ERR_PARSE, "expected a <scene> element");
+    const xmlNode *inst = dae_child(sc, "instance_visual_scene");
+    if (!inst) return dae_error(c, sc, PL_ERR_PARSE, "expected an <instance_visual_scene>");
+    dae_entry *vs;
+    st = dae_resolve(c, inst, "url", "visual_scene", &vs);
+    for (const xmlNode *n = vs ? dae_first(vs->node) : NULL; n && !st; n = dae_next(n))
+        st = visit_child(c, n, c->up, 0);
+    return st;
+}
+
+/* ---- entry points ------------------------------------------------------------------------ */
+
+pl_status dae_load_memory(const char *xml, size_t len, const char *name, scene *out, pl_diag *diag)
+{
+    pl_diag quiet = pl_diag_default();
+    memset(out, 0, sizeof *out);
+    dae_ctx c;
+    memset(&c, 0, sizeof c);
+    c.name = name ? name : "<memory>";
+    c.diag = diag ? diag : &quiet;
+    c.out = out;
+    c.default_material = -1;
+    if (c.diag->error[0]) c.diag->error[0] = '\0';
+
+    pl_status st = parse_xml(&c, xml, len);
+    if (!st) st = load_document(&c);
+    dae_index_free(&c.index);
+    xmlFreeDoc(c.doc);
+    if (st) {
+        scene_free(out);
+        return st;
+    }
+    out->has_camera = c.has_camera;
+    snprintf(out->path, sizeof out->path, "%s", c.name);
+    return PL_OK;
+}
+
+pl_status dae_load(const char *path, scene *out, pl_diag *diag)
+{
+    memset(out, 0, sizeof *out);
+    FILE *f = fopen(path, "rb");
+    if (!f) return pl_fail(diag, PL_ERR_IO, "%s: cannot open: %s", path, strerror(errno));
+    char *buf = NULL;
+    size_t len = 0, cap = 0;
+    for (;;) {
+        if (len == cap) {
+            cap = cap ? 2 * cap : 1 << 16;
+            char *b = realloc(buf, cap);
+            if (!b) { free(buf); fclose(f); return pl_fail(diag, PL_ERR_NOMEM, "%s: out of memory", path); }
+            buf = b;
+        }
+        size_t got = fread(buf + len, 1, cap - len, f);
+        len += got;
+        if (got == 0) break;
+    }
+    bool failed = ferror(f);
+    fclose(f);
+    if (failed) {
+        free(buf);
+        return pl_fail(diag, PL_ERR_IO, "%s: cannot read: %s", path, strerror(errno));
+    }
+    pl_status st = dae_load_memory(buf, len, path, out, diag);
+    free(buf);
+    return st;
+}

@@ -1,0 +1,149 @@
+/* COLLADA loader: lights and the camera, placed by their node's transform. A CGL technique in a
+ * <light> wins over technique_common, as in CS184. */
+#include "dae_internal.h"
+
+#include <math.h>
+#include <string.h>
+
+static float degrees(float rad) { return rad * 180.0f / 3.14159265358979323846f; }
+static float radians(float deg) { return deg * 3.14159265358979323846f / 180.0f; }
+
+/* ---- lights ------------------------------------------------------------------------------ */
+
+/* The node's local -Z in world space: where directional and spot lights point, unit length. */
+static vec3 local_minus_z(mat4 m) { return vec3_normalize(mat4_dir(m, vec3_make(0, 0, -1))); }
+
+static pl_status read_light(dae_ctx *c, const xmlNode *shape, mat4 m, light *l)
+{
+    memset(l, 0, sizeof *l);
+    l->attenuation[0] = 1.0f;
+    l->position = mat4_point(m, vec3_make(0, 0, 0));
+    pl_status st = dae_child_color(c, shape, "color", true, &l->radiance);
+    if (st) return st;
+    if (dae_is(shape, "point") || dae_is(shape, "spot")) {
+        l->kind = dae_is(shape, "point") ? LIGHT_POINT : LIGHT_SPOT;
+        st = dae_child_float(c, shape, "constant_attenuation", 1.0f, &l->attenuation[0]);
+        if (!st) st = dae_child_float(c, shape, "linear_attenuation", 0.0f, &l->attenuation[1]);
+        if (!st) st = dae_child_float(c, shape, "quadratic_attenuation", 0.0f, &l->attenuation[2]);
+        if (!st && l->kind == LIGHT_SPOT) {
+            float full_angle;
+            l->direction = local_minus_z(m);
+            /* COLLADA's falloff_angle is the cone's full opening (default 180: a hemisphere). */
+            st = dae_child_float(c, shape, "falloff_angle", 180.0f, &full_angle);
+            if (!st) st = dae_child_float(c, shape, "falloff_exponent", 0.0f, &l->falloff_exp);
+            if (!st && !(full_angle > 0 && full_angle <= 360))
+                st = dae_error(c, shape, PL_ERR_INVALID, "expected falloff_angle in (0, 360] degrees, found %g",
+                               full_angle);
+            l->falloff_deg = 0.5f * full_angle;
+        }
+    } else if (dae_is(shape, "directional")) {
+        l->kind = LIGHT_DIRECTIONAL;
+        l->direction = local_minus_z(m);
+    } else if (dae_is(shape, "ambient")) {
+        l->kind = LIGHT_AMBIENT;
+        l->direction = vec3_make(0, 1, 0);
+    } else {  /* area: the node's unit square [-1/2, 1/2]^2 at z = 0, emitting towards its -Z */
+        l->kind = LIGHT_AREA;
+        l->edge_u = mat4_dir(m, vec3_make(1, 0, 0));
+        l->edge_v = mat4_dir(m, vec3_make(0, 1, 0));
+        l->direction = mat4_normal(m, vec3_make(0, 0, -1));
+        l->area = vec3_length(vec3_cross(l->edge_u, l->edge_v));
+        if (!(l->area > 0))
+            st = dae_error(c, shape, PL_ERR_INVALID, "the node's transform gives the area light no area");
+    }
+    return st;
+}
+
+pl_status dae_instance_light(dae_ctx *c, const xmlNode *inst, mat4 to_world)
+{
+    dae_entry *entry;
+    pl_status st = dae_resolve(c, inst, "url", "light", &entry);
+    if (st) return st;
+    const xmlNode *technique = dae_cgl_technique(entry->node);
+    if (!technique) technique = dae_child(entry->node, "technique_common");
+    if (!technique) return dae_error(c, entry->node, PL_ERR_PARSE, "expected a <technique_common> or a CGL technique");
+    const xmlNode *shape = dae_first(technique);
+    if (!shape) return dae_error(c, technique, PL_ERR_PARSE, "expected a light type (point, spot, directional, ambient, area)");
+    if (!dae_is(shape, "point") && !dae_is(shape, "spot") && !dae_is(shape, "directional") &&
+        !dae_is(shape, "ambient") && !dae_is(shape, "area")) {
+        dae_warn_once(c, shape, dae_name(shape), "<%s> lights are not supported; skipped", dae_name(shape));
+        return PL_OK;
+    }
+    light l;
+    if ((st = read_light(c, shape, to_world, &l))) return st;
+    if (scene_add_light(c->out, l) < 0) return pl_fail(c->diag, PL_ERR_NOMEM, "%s: out of memory", c->name);
+    return PL_OK;
+}
+
+/* ---- camera ------------------------------------------------------------------------------ */
+
+static pl_status check_fov(dae_ctx *c, const xmlNode *perspective, const char *name, float fov)
+{
+    if (fov > 0 && fov < 180) return PL_OK;
+    return dae_error(c, perspective, PL_ERR_INVALID, "expected %s in (0, 180) degrees, found %g", name, fov);
+}
+
+/* The camera's pose without the node's scale: camera_to_world is rigid by contract. */
+static mat4 rigid(mat4 m)
+{
+    vec3 z = vec3_normalize(mat4_dir(m, vec3_make(0, 0, 1)));
+    vec3 y = mat4_dir(m, vec3_make(0, 1, 0));
+    vec3 x = vec3_normalize(vec3_cross(y, z));
+    y = vec3_cross(z, x);
+    vec3 p = mat4_point(m, vec3_make(0, 0, 0));
+    mat4 r = mat4_identity();
+    vec3 cols[4] = {x, y, z, p};
+    for (int j = 0; j < 4; j++) {
+        r.m[0][j] = cols[j].x;
+        r.m[1][j] = cols[j].y;
+        r.m[2][j] = cols[j].z;
+    }
+    return r;
+}
+
+pl_status dae_instance_camera(dae_ctx *c, const xmlNode *inst, mat4 to_world)
+{
+    dae_entry *entry;
+    pl_status st = dae_resolve(c, inst, "url", "camera", &entry);
+    if (st) return st;
+    if (c->has_camera) {
+        dae_warn_once(c, inst, "second camera", "the scene has more than one camera; using the first");
+        return PL_OK;
+    }
+    const xmlNode *common = dae_child(dae_child(entry->node, "optics"), "technique_common");
+    const xmlNode *perspective = dae_child(common, "perspective");
+    if (!perspective) {
+        if (dae_child(common, "orthographic")) {
+            dae_warn_once(c, inst, "orthographic", "orthographic cameras are not supported; using a default camera");
+            return PL_OK;
+        }
+        return dae_error(c, entry->node, PL_ERR_PARSE, "expected <optics><technique_common><perspective>");
+    }
+    bool has_x = dae_child(perspective, "xfov") != NULL, has_y = dae_child(perspective, "yfov") != NULL;
+    if (!has_x && !has_y) return dae_error(c, perspective, PL_ERR_PARSE, "expected an <xfov> or a <yfov>");
+    camera *cam = &c->out->camera;
+    memset(cam, 0, sizeof *cam);
+    float aspect;
+    st = dae_child_float(c, perspective, "xfov", 0.0f, &cam->hfov);
+    if (!st) st = dae_child_float(c, perspective, "yfov", 0.0f, &cam->vfov);
+    if (!st) st = dae_child_float(c, perspective, "aspect_ratio", 4.0f / 3.0f, &aspect);  /* CS184's 800x600 */
+    if (!st) st = dae_child_float(c, perspective, "znear", 0.01f, &cam->znear);
+    if (!st) st = dae_child_float(c, perspective, "zfar", 1e30f, &cam->zfar);
+    if (!st && has_x) st = check_fov(c, perspective, "xfov", cam->hfov);
+    if (!st && has_y) st = check_fov(c, perspective, "yfov", cam->vfov);
+    if (!st && !(aspect > 0)) st = dae_error(c, perspective, PL_ERR_INVALID, "expected aspect_ratio > 0, found %g", aspect);
+    if (!st && !(cam->znear >= 0 && cam->zfar > cam->znear))
+        st = dae_error(c, perspective, PL_ERR_INVALID, "expected 0 <= znear < zfar, found %g and %g", cam->znear,
+                       cam->zfar);
+    if (st) return st;
+    /* One fov given: the other follows the aspect ratio, and the image's aspect may change it later. */
+    cam->fov_is_vertical = !has_x;
+    if (!has_y) cam->vfov = degrees(2.0f * atanf(tanf(radians(cam->hfov) * 0.5f) / aspect));
+    if (!has_x) cam->hfov = degrees(2.0f * atanf(tanf(radians(cam->vfov) * 0.5f) * aspect));
+    cam->camera_to_world = rigid(to_world);
+    cam->position = mat4_point(to_world, vec3_make(0, 0, 0));
+    cam->focal_distance = 4.7f;  /* CS184's -d default */
+    cam->lens_radius = 0.0f;
+    c->has_camera = true;
+    return PL_OK;
+}

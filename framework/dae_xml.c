@@ -1,0 +1,362 @@
+/* COLLADA loader, part 1 of 5: element helpers, the id index, numbers, located messages.
+ * Numbers are read straight from the text nodes libxml2 built, in one pass, so a large mesh costs
+ * time linear in its size. */
+#include "dae_internal.h"
+
+#include <errno.h>
+#include <limits.h>
+#include <stdarg.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+/* ---- elements ---------------------------------------------------------------------------- */
+
+bool dae_is(const xmlNode *n, const char *name)
+{
+    return n && n->type == XML_ELEMENT_NODE && strcmp((const char *)n->name, name) == 0;
+}
+
+const char *dae_name(const xmlNode *n) { return n ? (const char *)n->name : "?"; }
+
+static xmlNode *element_from(xmlNode *n)
+{
+    while (n && n->type != XML_ELEMENT_NODE) n = n->next;
+    return n;
+}
+
+xmlNode *dae_first(const xmlNode *parent) { return parent ? element_from(parent->children) : NULL; }
+xmlNode *dae_next(const xmlNode *n) { return n ? element_from(n->next) : NULL; }
+
+xmlNode *dae_child(const xmlNode *parent, const char *name)
+{
+    for (xmlNode *c = dae_first(parent); c; c = dae_next(c))
+        if (dae_is(c, name)) return c;
+    return NULL;
+}
+
+const char *dae_attr(const xmlNode *n, const char *name)
+{
+    if (!n || n->type != XML_ELEMENT_NODE) return NULL;
+    for (const xmlAttr *a = n->properties; a; a = a->next) {
+        if (strcmp((const char *)a->name, name) != 0) continue;
+        /* Without entity substitution a value is a single text child (or none when empty). */
+        const xmlNode *t = a->children;
+        return (t && t->type == XML_TEXT_NODE && t->content) ? (const char *)t->content : "";
+    }
+    return NULL;
+}
+
+long dae_line(const xmlNode *n) { return n ? xmlGetLineNo(n) : 0; }
+
+xmlNode *dae_cgl_technique(const xmlNode *parent)
+{
+    for (xmlNode *e = dae_first(parent); e; e = dae_next(e)) {
+        if (!dae_is(e, "extra")) continue;
+        for (xmlNode *t = dae_first(e); t; t = dae_next(t)) {
+            const char *profile = dae_attr(t, "profile");
+            if (dae_is(t, "technique") && profile && strcmp(profile, "CGL") == 0) return t;
+        }
+    }
+    return NULL;
+}
+
+/* ---- messages ---------------------------------------------------------------------------- */
+
+static void locate(char *buf, size_t size, dae_ctx *c, const xmlNode *at, const char *fmt, va_list ap)
+{
+    int n = snprintf(buf, size, "%s:%ld: <%s>: ", c->name, dae_line(at), dae_name(at));
+    if (n >= 0 && (size_t)n < size) vsnprintf(buf + n, size - (size_t)n, fmt, ap);
+}
+
+pl_status dae_error(dae_ctx *c, const xmlNode *at, pl_status status, const char *fmt, ...)
+{
+    char msg[PL_DIAG_MSG_MAX];
+    va_list ap;
+    va_start(ap, fmt);
+    locate(msg, sizeof msg, c, at, fmt, ap);
+    va_end(ap);
+    return pl_fail(c->diag, status, "%s", msg);
+}
+
+void dae_warn_once(dae_ctx *c, const xmlNode *at, const char *kind, const char *fmt, ...)
+{
+    for (int i = 0; i < c->num_warned; i++)
+        if (strcmp(c->warned[i], kind) == 0) return;
+    if (c->num_warned < DAE_MAX_WARN_KINDS) c->warned[c->num_warned++] = kind;
+    char msg[PL_DIAG_MSG_MAX];
+    va_list ap;
+    va_start(ap, fmt);
+    locate(msg, sizeof msg, c, at, fmt, ap);
+    va_end(ap);
+    pl_warn(c->diag, "%s", msg);
+}
+
+/* ---- ids --------------------------------------------------------------------------------- */
+
+static size_t hash_id(const char *s)
+{
+    size_t h = 1469598103934665603u;  /* FNV-1a */
+    for (; *s; s++) h = (h ^ (unsigned char)*s) * 1099511628211u;
+    return h;
+}
+
+/* The slot holding (id, element), or the empty slot where it would go. */
+static dae_entry *probe(const dae_index *ix, const char *id, const char *element)
+{
+    size_t mask = ix->capacity - 1;
+    for (size_t i = hash_id(id) & mask;; i = (i + 1) & mask) {
+        dae_entry *e = &ix->slots[i];
+        if (!e->node || (strcmp(e->id, id) == 0 && dae_is(e->node, element))) return e;
+    }
+}
+
+static size_t count_ids(const xmlNode *n)
+{
+    size_t count = 0;
+    for (const xmlNode *c = n; c; c = c->next) {
+        if (c->type != XML_ELEMENT_NODE) continue;
+        if (dae_attr(c, "id")) count++;
+        count += count_ids(c->children);  /* depth is bounded by libxml2's nesting limit */
+    }
+    return count;
+}
+
+static pl_status insert_ids(dae_ctx *c, xmlNode *n)
+{
+    for (xmlNode *e = n; e; e = e->next) {
+        if (e->type != XML_ELEMENT_NODE) continue;
+        const char *id = dae_attr(e, "id");
+        if (id) {
+            dae_entry *slot = probe(&c->index, id, dae_name(e));
+            if (slot->node)
+                return dae_error(c, e, PL_ERR_PARSE, "duplicate id '%s' (first used at line %ld)", id,
+                                 dae_line(slot->node));
+            slot->id = id;
+            slot->node = e;
+            slot->material = -1;
+        }
+        pl_status st = insert_ids(c, e->children);
+        if (st) return st;
+    }
+    return PL_OK;
+}
+
+pl_status dae_index_build(dae_ctx *c)
+{
+    xmlNode *root = xmlDocGetRootElement(c->doc);
+    size_t capacity = 16;
+    while (capacity < 2 * count_ids(root) + 1) capacity *= 2;
+    c->index.slots = calloc(capacity, sizeof *c->index.slots);
+    if (!c->index.slots) return pl_fail(c->diag, PL_ERR_NOMEM, "%s: out of memory", c->name);
+    c->index.capacity = capacity;
+    return insert_ids(c, root);
+}
+
+void dae_index_free(dae_index *ix)
+{
+    for (size_t i = 0; i < ix->capacity; i++) free(ix->slots[i].floats);
+    free(ix->slots);
+    ix->slots = NULL;
+    ix->capacity = 0;
+}
+
+dae_entry *dae_index_find(const dae_index *ix, const char *id, const char *element)
+{
+    if (!ix->slots) return NULL;
+    dae_entry *e = probe(ix, id, element);
+    return e->node ? e : NULL;
+}
+
+pl_status dae_resolve(dae_ctx *c, const xmlNode *at, const char *attr, const char *element,
+                      dae_entry **out)
+{
+    const char *url = dae_attr(at, attr);
+    if (!url) return dae_error(c, at, PL_ERR_PARSE, "expected a %s attribute naming a <%s>", attr, element);
+    if (url[0] != '#')
+        return dae_error(c, at, PL_ERR_PARSE, "%s '%.200s': expected a reference within the file ('#id')",
+                         attr, url);
+    *out = dae_index_find(&c->index, url + 1, element);
+    if (!*out) return dae_error(c, at, PL_ERR_PARSE, "%s '%.200s' names no <%s>", attr, url, element);
+    return PL_OK;
+}
+
+/* ---- numbers ----------------------------------------------------------------------------- */
+
+static bool is_space(char ch) { return ch == ' ' || ch == '\t' || ch == '\n' || ch == '\r'; }
+
+/* The element's text. Usually a single text node read in place; otherwise a copy in *copy. */
+static const char *text_of(const xmlNode *n, xmlChar **copy)
+{
+    *copy = NULL;
+    const xmlNode *t = n->children;
+    if (!t) return "";
+    if (!t->next && t->type == XML_TEXT_NODE) return t->content ? (const char *)t->content : "";
+    *copy = xmlNodeGetContent(n);
+    return *copy ? (const char *)*copy : "";
+}
+
+/* Calls take(user, token, end) for each whitespace-separated token of n's text, stopping at the
+ * first non-OK status. The tokenizer is shared by every number reader. */
+typedef pl_status (*token_fn)(dae_ctx *c, const xmlNode *n, void *user, const char *tok, const char *end);
+
+static pl_status for_each_token(dae_ctx *c, const xmlNode *n, token_fn take, void *user)
+{
+    xmlChar *copy;
+    const char *s = text_of(n, &copy);
+    pl_status st = PL_OK;
+    while (st == PL_OK) {
+        while (is_space(*s)) s++;
+        if (!*s) break;
+        const char *end = s;
+        while (*end && !is_space(*end)) end++;
+        st = take(c, n, user, s, end);
+        s = end;
+    }
+    xmlFree(copy);
+    return st;
+}
+
+static pl_status bad_token(dae_ctx *c, const xmlNode *n, const char *what, const char *tok, const char *end)
+{
+    int len = (int)(end - tok);
+    return dae_error(c, n, PL_ERR_PARSE, "expected %s, found '%.*s%s'", what, len > 32 ? 32 : len, tok,
+                     len > 32 ? "..." : "");
+}
+
+static pl_status parse_float(dae_ctx *c, const xmlNode *n, const char *tok, const char *end, float *out)
+{
+    char *stop;
+    errno = 0;
+    float v = strtof(tok, &stop);
+    /* ERANGE on underflow still yields a usable (tiny) value; only overflow is rejected below. */
+    if (stop != end || !isfinite(v)) return bad_token(c, n, "a finite number", tok, end);
+    *out = v;
+    return PL_OK;
+}
+
+typedef struct { float *v; int count, cap; bool grow; } float_sink;
+
+static pl_status take_float(dae_ctx *c, const xmlNode *n, void *user, const char *tok, const char *end)
+{
+    float_sink *s = user;
+    float v = 0.0f;
+    pl_status st = parse_float(c, n, tok, end, &v);
+    if (st) return st;
+    if (s->count == s->cap) {
+        if (!s->grow) { s->count++; return PL_OK; }  /* fixed buffer: only count the excess */
+        if (s->cap > INT_MAX / 2) return dae_error(c, n, PL_ERR_PARSE, "too many numbers");
+        int cap = s->cap ? 2 * s->cap : 64;
+        float *v2 = realloc(s->v, (size_t)cap * sizeof *v2);
+        if (!v2) return pl_fail(c->diag, PL_ERR_NOMEM, "%s: out of memory", c->name);
+        s->v = v2;
+        s->cap = cap;
+    }
+    s->v[s->count++] = v;
+    return PL_OK;
+}
+
+pl_status dae_floats(dae_ctx *c, const xmlNode *n, float *out, int want, int want_alt, int *found)
+{
+    float_sink s = {out, 0, want > want_alt ? want : want_alt, false};
+    pl_status st = for_each_token(c, n, take_float, &s);
+    if (found) *found = s.count;
+    if (st) return st;
+    if (s.count == want || (want_alt > 0 && s.count == want_alt)) return PL_OK;
+    if (want_alt > 0)
+        return dae_error(c, n, PL_ERR_PARSE, "expected %d or %d numbers, found %d", want, want_alt, s.count);
+    return dae_error(c, n, PL_ERR_PARSE, "expected %d number%s, found %d", want, want == 1 ? "" : "s", s.count);
+}
+
+pl_status dae_float_list(dae_ctx *c, const xmlNode *n, float **out, int *count)
+{
+    float_sink s = {NULL, 0, 0, true};
+    pl_status st = for_each_token(c, n, take_float, &s);
+    if (st) { free(s.v); s.v = NULL; s.count = 0; }
+    *out = s.v;
+    *count = s.count;
+    return st;
+}
+
+typedef struct { int *v; int count, cap; } int_sink;
+
+static pl_status take_int(dae_ctx *c, const xmlNode *n, void *user, const char *tok, const char *end)
+{
+    int_sink *s = user;
+    char *stop;
+    errno = 0;
+    long v = strtol(tok, &stop, 10);
+    if (stop != end || errno == ERANGE || v < 0 || v > INT_MAX)
+        return bad_token(c, n, "a non-negative integer", tok, end);
+    if (s->count == s->cap) {
+        if (s->cap > INT_MAX / 2) return dae_error(c, n, PL_ERR_PARSE, "too many numbers");
+        int cap = s->cap ? 2 * s->cap : 64;
+        int *v2 = realloc(s->v, (size_t)cap * sizeof *v2);
+        if (!v2) return pl_fail(c->diag, PL_ERR_NOMEM, "%s: out of memory", c->name);
+        s->v = v2;
+        s->cap = cap;
+    }
+    s->v[s->count++] = (int)v;
+    return PL_OK;
+}
+
+pl_status dae_int_list(dae_ctx *c, const xmlNode *n, int **out, int *count)
+{
+    int_sink s = {NULL, 0, 0};
+    pl_status st = for_each_token(c, n, take_int, &s);
+    if (st) { free(s.v); s.v = NULL; s.count = 0; }
+    *out = s.v;
+    *count = s.count;
+    return st;
+}
+
+pl_status dae_child_float(dae_ctx *c, const xmlNode *parent, const char *name, float def, float *out)
+{
+    const xmlNode *n = dae_child(parent, name);
+    *out = def;
+    return n ? dae_floats(c, n, out, 1, 0, NULL) : PL_OK;
+}
+
+pl_status dae_attr_int(dae_ctx *c, const xmlNode *n, const char *name, bool required, int def,
+                       int min, int *out)
+{
+    const char *s = dae_attr(n, name);
+    *out = def;
+    if (!s) {
+        if (required) return dae_error(c, n, PL_ERR_PARSE, "expected a %s attribute", name);
+        return PL_OK;
+    }
+    char *stop;
+    errno = 0;
+    long v = strtol(s, &stop, 10);
+    while (is_space(*stop)) stop++;
+    if (stop == s || *stop || errno == ERANGE || v < min || v > INT_MAX)
+        return dae_error(c, n, PL_ERR_PARSE, "expected %s to be an integer >= %d, found '%.32s'", name,
+                         min, s);
+    *out = (int)v;
+    return PL_OK;
+}
+
+pl_status dae_color(dae_ctx *c, const xmlNode *n, rgb *out)
+{
+    float v[4];
+    pl_status st = dae_floats(c, n, v, 3, 4, NULL);
+    if (st) return st;
+    if (v[0] < 0 || v[1] < 0 || v[2] < 0)
+        return dae_error(c, n, PL_ERR_INVALID, "expected non-negative colour components, found %g %g %g",
+                         v[0], v[1], v[2]);
+    *out = rgb_make(v[0], v[1], v[2]);
+    return PL_OK;
+}
+
+pl_status dae_child_color(dae_ctx *c, const xmlNode *parent, const char *name, bool required, rgb *out)
+{
+    const xmlNode *n = dae_child(parent, name);
+    if (!n) {
+        if (required) return dae_error(c, parent, PL_ERR_PARSE, "expected a <%s> child", name);
+        return PL_OK;
+    }
+    /* profile_COMMON wraps colours (<diffuse><color>); CGL writes them inline (<radiance>1 1 1). */
+    const xmlNode *inner = dae_child(n, "color");
+    return dae_color(c, inner ? inner : n, out);
+}
