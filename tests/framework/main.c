@@ -6,6 +6,7 @@ int rng_tests(void);
 int image_tests(void);
 int cli_tests(void);
 int render_tests(void);
+int camera_file_tests(void);
 /* Groups written alongside other modules; weak so the suite links while they are being written. */
 int dae_tests(void) __attribute__((weak));
 int scenes_tests(void) __attribute__((weak));
@@ -19,6 +20,7 @@ int main(void)
     failed += image_tests();
     failed += cli_tests();
     failed += render_tests();
+    failed += camera_file_tests();
     int (*optional[])(void) = {dae_tests, scenes_tests, strip_tests};
     const char *names[] = {"dae_tests", "scenes_tests", "strip_tests"};
     for (int i = 0; i < 3; i++) {

@@ -13,7 +13,7 @@ static void build_scene(scene *s)
     memset(s, 0, sizeof *s);
     int grey = scene_add_material(s, material_make(rgb_gray(0.5f), rgb_gray(0)));
     int glow = scene_add_material(s, material_make(rgb_gray(0.5f), rgb_gray(2.0f)));
-    vec3 a = {-2, 0, -2}, b = {2, 0, -2}, c = {2, 0, 2}, d = {-2, 0, 2};
+    vec3 a = {-20, 0, -20}, b = {20, 0, -20}, c = {20, 0, 20}, d = {-20, 0, 20};
     scene_add_triangle(s, triangle_make(a, d, c, grey));
     scene_add_triangle(s, triangle_make(a, c, b, grey));
     scene_add_sphere(s, (sphere){{-0.5f, 0.5f, 0}, 0.5f, grey});
@@ -82,9 +82,8 @@ static void test_render_image__bit_identical_across_threads_light_transport(void
 
 static void test_render_image__stores_bottom_row_last(void **state)
 {
-    /* Looking down at the floor from above, the top of the image is farther away: with normal
-     * shading both rows see the floor, so instead check a tall scene: the sphere sits in the lower
-     * half, so the top row is background (black) and the bottom row is not. */
+    /* A tall frame: its top row looks above the horizon (background, black), its bottom row
+     * at the floor, so an image stored upside down fails. */
     scene s;
     build_scene(&s);
     options o = options_default();

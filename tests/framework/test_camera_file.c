@@ -1,0 +1,69 @@
+/* Test machinery: not part of any assignment. CS184 camera settings files (-c). */
+#include "../common/test.h"
+#include "../../framework/camera_file.h"
+#include <stdio.h>
+#include <string.h>
+
+static const char *write_file(const char *text)
+{
+    static char path[64];
+    snprintf(path, sizeof path, "/tmp/pathlab-camera-XXXXXX");
+    int fd = mkstemp(path);
+    assert_true(fd >= 0);
+    FILE *f = fdopen(fd, "w");
+    fputs(text, f);
+    fclose(f);
+    return path;
+}
+
+static void test_camera_file_load__reads_pose_and_lens(void **state)
+{
+    const char *path = write_file("50 40 1.333 0.1 100\n"
+                                  "1 2 3  0 0 0\n"
+                                  "0 0 3.7 0.1 10\n"
+                                  "1 0 0 0 1 0 0 0 1\n"
+                                  "800 600 1\n"
+                                  "4.7 0\n");
+    camera c;
+    pl_diag d = pl_diag_default();
+    assert_int_equal(PL_OK, camera_file_load(path, &c, &d));
+    assert_vec3_near(vec3_make(1, 2, 3), c.position, 0);
+    assert_float_near(40.0, c.vfov, 1e-6);
+    assert_true(c.fov_is_vertical);
+    assert_float_near(0.1, c.znear, 1e-6);
+    assert_vec3_near(vec3_make(0, 0, -1), mat4_dir(c.camera_to_world, vec3_make(0, 0, -1)), 0);
+    remove(path);
+}
+
+static void test_camera_file_load__errors_name_file_line_and_field(void **state)
+{
+    struct { const char *text, *expect; } cases[] = {
+        {"50 40 1.333 0.1\n", ":1: expected 5 numbers (hfov vfov aspect near far)"},
+        {"50 40 1.333 0.1 100\n1 2 3 0 0\n", ":2: expected 6 numbers"},
+        {"50 40 1.333 0.1 100\n1 2 3 0 0 0\n0 0 3.7 0.1 10\n1 0 0 0 1 0 0 0 x\n", ":4: expected 9 numbers"},
+        {"50 40 1.333 0.1 100\n1 2 3 0 0 0\n0 0 3.7 0.1 10\n1 0 0 0 1 0 0 0 1\n800 600 1\n", ":6: expected 2 numbers"},
+        {"50 40 1.333 0.1 100 7\n", ":1: expected 5 numbers (hfov vfov aspect near far), found more"},
+        {"0 40 1.333 0.1 100\n1 2 3 0 0 0\n0 0 3.7 0.1 10\n1 0 0 0 1 0 0 0 1\n800 600 1\n4.7 0\n", ":1: expected fields of view"},
+    };
+    for (size_t i = 0; i < sizeof cases / sizeof cases[0]; i++) {
+        const char *path = write_file(cases[i].text);
+        camera c;
+        pl_diag d = pl_diag_default();
+        pl_status s = camera_file_load(path, &c, &d);
+        if (s == PL_OK || !strstr(d.error, cases[i].expect) || !strstr(d.error, path))
+            fail_msg("case %zu: expected an error with '%s' and the path, got status %d: '%s'", i, cases[i].expect, s, d.error);
+        remove(path);
+    }
+    camera c;
+    pl_diag d = pl_diag_default();
+    assert_int_equal(PL_ERR_IO, camera_file_load("/tmp/pathlab-no-such-camera", &c, &d));
+}
+
+int camera_file_tests(void)
+{
+    const struct CMUnitTest tests[] = {
+        cmocka_unit_test(test_camera_file_load__reads_pose_and_lens),
+        cmocka_unit_test(test_camera_file_load__errors_name_file_line_and_field),
+    };
+    return cmocka_run_group_tests_name("camera_file", tests, NULL, NULL);
+}
