@@ -61,9 +61,13 @@ mat4 mat4_lookat(vec3 eye, vec3 target, vec3 up)
 {
     vec3 back = vec3_normalize(vec3_sub(eye, target));  /* local +Z: the camera looks down -Z */
     vec3 right = vec3_normalize(vec3_cross(up, back));
-    vec3 true_up = vec3_cross(back, right);
+    return mat4_from_basis(right, vec3_cross(back, right), back, eye);
+}
+
+mat4 mat4_from_basis(vec3 x, vec3 y, vec3 z, vec3 origin)
+{
     mat4 r = mat4_identity();
-    vec3 cols[4] = {right, true_up, back, eye};
+    vec3 cols[4] = {x, y, z, origin};
     for (int j = 0; j < 4; j++) {
         r.m[0][j] = cols[j].x;
         r.m[1][j] = cols[j].y;
