@@ -5,6 +5,7 @@
  * the two estimators is compared by Welch's t test, Sidak-corrected over the blocks.
  * alpha: the whole image test is one check at PART3_CHECK_ALPHA (part3_alpha.h, family 1e-3).
  * Seed fixed and printed. */
+#include <stdio.h>
 #include "../common/test.h"
 #include "../common/stats.h"
 #include "../common/mc_assert.h"

@@ -6,6 +6,7 @@
  * - shadows, one-sided emission, and NaN/Inf/negative radiance as explicit failures.
  * alpha: each t test runs at PART3_CHECK_ALPHA (part3_alpha.h: Sidak share of the suite's 1e-3).
  * Seeds are fixed and printed. */
+#include <stdio.h>
 #include "../common/test.h"
 #include "../common/stats.h"
 #include "../common/mc_assert.h"

@@ -3,6 +3,7 @@
  * claim (the mean of 1 / pdf is the solid angle the light subtends), point and spot lights follow
  * the inverse square law and COLLADA attenuation, one-sided lights are dark from behind.
  * alpha: statistical checks run at PART3_CHECK_ALPHA (part3_alpha.h, family 1e-3). Fixed seeds. */
+#include <stdio.h>
 #include "../common/test.h"
 #include "../common/stats.h"
 #include "../common/mc_assert.h"

@@ -3,6 +3,7 @@
  * (Pearson chi-square), and the BSDF sample weight f cos / pdf must average to the albedo.
  * alpha: each statistical check runs at PART3_CHECK_ALPHA, the Sidak share of the suite's
  * PART3_FAMILY_ALPHA = 1e-3 (part3_alpha.h). Seeds are fixed and printed. */
+#include <stdio.h>
 #include "../common/test.h"
 #include "../common/stats.h"
 #include "../common/mc_assert.h"

@@ -1,0 +1,105 @@
+/* Test machinery: not part of any assignment.
+ * The furnace (tests/common/tiny_scenes.h): inside a closed box whose walls all have albedo rho
+ * and emit Le, the radiance in every direction is known on paper:
+ *   k-th bounce alone (-m k -o 0):       rho^k Le
+ *   bounces 0..m (-m m -o 1):            Le (1 - rho^(m+1)) / (1 - rho)
+ *   everything (-m large, roulette):     Le / (1 - rho)
+ * Each case is a t test on radiance_estimate from the centre of the box, for light sampling and
+ * for hemisphere sampling (-H). Any NaN, Inf or negative sample fails naming the sample.
+ * alpha: each t test runs at PART4_CHECK_ALPHA (part4_alpha.h: Sidak share of the suite's 1e-3).
+ * Seeds fixed and printed. */
+#include <stdio.h>
+#include "../common/test.h"
+#include "../common/stats.h"
+#include "../common/mc_assert.h"
+#include "../common/tiny_scenes.h"
+#include "../../parts/part4_global/part4.h"
+#include "part4_alpha.h"
+#include <stdlib.h>
+
+#define SEED mc_seed(0x5eed4001ull)
+#define RHO 0.5
+#define LE 1.0
+#define N 20000
+
+static int furnace_setup(void **state)
+{
+    test_setup(state);
+    tiny_world *w = malloc(sizeof *w);
+    if (!w) return -1;
+    tiny_world_begin(w);
+    if (!tiny_scene_furnace(&w->s, (float)RHO, (float)LE) || tiny_world_finish(w) != PL_OK) {
+        free(w);
+        return -1;
+    }
+    *state = w;
+    return 0;
+}
+
+static int furnace_teardown(void **state)
+{
+    tiny_world *w = *state;
+    tiny_world_free(w);
+    free(w);
+    return 0;
+}
+
+static void check_furnace(tiny_world *w, int max_depth, bool accumulate, bool hemisphere, double expected,
+                          uint64_t seed, const char *what)
+{
+    w->o.max_depth = max_depth;
+    w->o.accumulate = accumulate;
+    w->o.hemisphere = hemisphere;
+    w->o.light_samples = 1;
+    tiny_world_refresh(w);
+    /* An oblique ray from the centre: any direction sees the same radiance. */
+    ray r = ray_make(vec3_make(0, 0, 0), vec3_normalize(vec3_make(0.3f, -0.5f, 0.8f)), 0.0f, INFINITY);
+    char name[160];
+    snprintf(name, sizeof name, "%s (-m %d -o %d%s)", what, max_depth, accumulate ? 1 : 0, hemisphere ? " -H" : "");
+    mc_print_seed(name, seed);
+    stats_acc acc[3];
+    mc_run_ray(&w->ctx, name, &r, seed, N, acc, __FILE__, __LINE__);
+    assert_mean_matches(&acc[0], expected, PART4_CHECK_ALPHA, name);
+}
+
+static void test_furnace__kth_bounce_alone_is_rho_to_the_k(void **state)
+{
+    for (int k = 2; k <= 4; k++)
+        check_furnace(*state, k, false, false, pow(RHO, k) * LE, SEED + (uint64_t)k, "k-th bounce only");
+}
+
+static void test_furnace__kth_bounce_alone_with_hemisphere_sampling(void **state)
+{
+    check_furnace(*state, 3, false, true, pow(RHO, 3) * LE, SEED + 10, "k-th bounce only");
+}
+
+static void test_furnace__bounces_up_to_m_sum_a_geometric_series(void **state)
+{
+    for (int m = 2; m <= 3; m++)
+        check_furnace(*state, m, true, false, LE * (1 - pow(RHO, m + 1)) / (1 - RHO), SEED + 20 + (uint64_t)m,
+                      "bounces 0..m");
+}
+
+static void test_furnace__deep_paths_converge_to_le_over_one_minus_rho(void **state)
+{
+    /* rho^65 is far below any noise: -m 64 is the full solution. */
+    check_furnace(*state, 64, true, false, LE / (1 - RHO), SEED + 30, "full solution");
+    check_furnace(*state, 64, true, true, LE / (1 - RHO), SEED + 31, "full solution");
+}
+
+static void test_furnace__depth_zero_is_emission_only(void **state)
+{
+    check_furnace(*state, 0, true, false, LE, SEED + 40, "emission only");
+}
+
+int furnace_tests(void)
+{
+    const struct CMUnitTest tests[] = {
+        cmocka_unit_test_setup_teardown(test_furnace__kth_bounce_alone_is_rho_to_the_k, furnace_setup, furnace_teardown),
+        cmocka_unit_test_setup_teardown(test_furnace__kth_bounce_alone_with_hemisphere_sampling, furnace_setup, furnace_teardown),
+        cmocka_unit_test_setup_teardown(test_furnace__bounces_up_to_m_sum_a_geometric_series, furnace_setup, furnace_teardown),
+        cmocka_unit_test_setup_teardown(test_furnace__deep_paths_converge_to_le_over_one_minus_rho, furnace_setup, furnace_teardown),
+        cmocka_unit_test_setup_teardown(test_furnace__depth_zero_is_emission_only, furnace_setup, furnace_teardown),
+    };
+    return cmocka_run_group_tests_name("part4: the furnace", tests, NULL, NULL);
+}
