@@ -1,0 +1,215 @@
+/* Test machinery: not part of any assignment.
+ * Adaptive sampling on the stripes scene (tests/common/tiny_scenes.h), rendered with -m 0 so each
+ * sample's radiance is exactly known: the left half of the image is flat grey, and in the right
+ * half every sample is red (1, 0, 0) or green (0, 1, 0) with probability 1/2 each. So:
+ * - a flat pixel has zero variance and must stop at the first batch;
+ * - a striped pixel's sample count has a distribution we compute exactly (a dynamic programme
+ *   over the number of green samples, with the stopping rule of part5.h on LUMINANCE), and the
+ *   mean count over the striped pixels must match it (t test). A rule on another statistic (the
+ *   red channel, the max channel, the standard deviation instead of the standard error...) stops
+ *   at other counts and fails;
+ * - with tolerance 0 every striped pixel takes all spp samples and the image is the fixed-rate one.
+ * alpha: family-wise 1e-3 over this suite, split by Sidak over CHECKS statistical checks.
+ * Seeds fixed and printed. */
+#include <stdio.h>
+#include <stdlib.h>
+#include "../common/test.h"
+#include "../common/stats.h"
+#include "../common/mc_assert.h"
+#include "../common/tiny_scenes.h"
+#include "../../parts/part5_adaptive/part5.h"
+#include "../../parts/part1_raygen/part1.h"
+
+#define FAMILY_ALPHA 1e-3
+#define CHECKS 4
+#define CHECK_ALPHA stats_sidak(FAMILY_ALPHA, CHECKS)
+#define SEED mc_seed(0x5eed5001ull)
+
+#define W 32
+#define H 8
+#define BATCH 32
+#define SPP 128
+/* Chosen so that no reachable (n, greens) sits within 2% of the stopping threshold: float and
+ * double implementations of the rule make the same decisions. */
+#define TOL 0.1663f
+
+typedef struct {
+    tiny_world w;
+    int counts[W * H];  /* indexed like render_pixel's (x, y): y * W + x, y = 0 at the bottom */
+    rgb pixels[W * H];
+} adaptive_run;
+
+static adaptive_run *run_stripes(bool adaptive, float tol, int spp, uint64_t seed)
+{
+    adaptive_run *run = malloc(sizeof *run);
+    assert_non_null(run);
+    tiny_world_begin(&run->w);
+    assert_true(tiny_scene_stripes(&run->w.s));
+    run->w.o.width = W;
+    run->w.o.height = H;
+    run->w.o.max_depth = 0;
+    run->w.o.spp = spp;
+    run->w.o.adaptive = adaptive;
+    run->w.o.adaptive_batch = BATCH;
+    run->w.o.adaptive_tol = tol;
+    run->w.o.seed = seed;
+    assert_int_equal(PL_OK, tiny_world_finish(&run->w));
+    for (int y = 0; y < H; y++)
+        for (int x = 0; x < W; x++) {
+            int n = -1;
+            rgb L = adaptive ? pixel_estimate_adaptive(&run->w.ctx, x, y, &n)
+                             : pixel_estimate_fixed(&run->w.ctx, x, y, &n);
+            assert_implemented();
+            char where[48];
+            snprintf(where, sizeof where, "pixel (%d, %d)", x, y);
+            assert_radiance_valid(L, adaptive ? "pixel_estimate_adaptive" : "pixel_estimate_fixed", where);
+            run->pixels[y * W + x] = L;
+            run->counts[y * W + x] = n;
+        }
+    return run;
+}
+
+static void free_run(adaptive_run *run)
+{
+    tiny_world_free(&run->w);
+    free(run);
+}
+
+/* The stopping rule of part5.h, in double, for n samples of which `greens` are green. */
+static bool rule_stops(int n, int greens, double tol)
+{
+    double a = rgb_luminance(rgb_make(1, 0, 0)), b = rgb_luminance(rgb_make(0, 1, 0));
+    double s1 = greens * b + (n - greens) * a, s2 = greens * b * b + (n - greens) * a * a;
+    double mean = s1 / n, var = fmax(0.0, (s2 - s1 * s1 / n) / (n - 1));
+    return 1.96 * sqrt(var / n) <= tol * mean;
+}
+
+/* Exact mean and variance of a striped pixel's sample count: carry the distribution of the number
+ * of green samples among those still running from one batch to the next. */
+static void count_distribution(double tol, double *mean, double *var)
+{
+    double *p = calloc(SPP + 1, sizeof *p), *next = calloc(SPP + 1, sizeof *next);
+    assert_non_null(p);
+    assert_non_null(next);
+    p[0] = 1.0;
+    double e1 = 0.0, e2 = 0.0;
+    for (int n = 0; n < SPP; n += BATCH) {
+        int step = n + BATCH <= SPP ? BATCH : SPP - n;
+        /* add `step` fair coin flips to every live state */
+        for (int i = 0; i <= SPP; i++) next[i] = 0.0;
+        for (int k = 0; k <= n; k++) {
+            if (p[k] == 0.0) continue;
+            double c = p[k] * pow(0.5, step);
+            for (int j = 0; j <= step; j++) {
+                next[k + j] += c;
+                c = c * (step - j) / (j + 1);
+            }
+        }
+        int m = n + step;
+        for (int k = 0; k <= m; k++) {
+            p[k] = next[k];
+            if (p[k] > 0.0 && (m == SPP || rule_stops(m, k, tol))) {
+                e1 += p[k] * m;
+                e2 += p[k] * (double)m * m;
+                p[k] = 0.0;
+            }
+        }
+    }
+    *mean = e1;
+    *var = e2 - e1 * e1;
+    free(p);
+    free(next);
+}
+
+static void test_adaptive__flat_pixels_stop_after_the_first_batch(void **state)
+{
+    (void)state;
+    mc_print_seed("adaptive flat", SEED);
+    adaptive_run *run = run_stripes(true, TOL, SPP, SEED);
+    for (int y = 0; y < H; y++)
+        for (int x = 0; x < W / 2; x++) {
+            int n = run->counts[y * W + x];
+            if (n != BATCH)
+                print_error("flat pixel (%d, %d) (radiance constant 1) took %d samples, expected %d (one batch)\n",
+                            x, y, n, BATCH);
+            assert_int_equal(BATCH, n);
+            assert_rgb_near(rgb_gray(1.0f), run->pixels[y * W + x], 1e-6f);
+        }
+    free_run(run);
+}
+
+static void test_adaptive__sample_counts_are_whole_batches_up_to_spp(void **state)
+{
+    (void)state;
+    const int spp = 80;  /* not a multiple of the batch: the last batch is cut short */
+    adaptive_run *run = run_stripes(true, TOL, spp, SEED + 1);
+    for (int i = 0; i < W * H; i++) {
+        int n = run->counts[i];
+        if (n < 1 || n > spp || (n % BATCH != 0 && n != spp))
+            print_error("pixel (%d, %d) took %d samples: expected a multiple of %d, or %d\n", i % W, i / W, n, BATCH, spp);
+        assert_true(n >= 1 && n <= spp && (n % BATCH == 0 || n == spp));
+    }
+    free_run(run);
+}
+
+static void test_adaptive__noisy_pixels_stop_where_the_luminance_rule_says(void **state)
+{
+    (void)state;
+    mc_print_seed("adaptive stripes", SEED + 2);
+    adaptive_run *run = run_stripes(true, TOL, SPP, SEED + 2);
+    stats_acc acc = stats_acc_make();
+    for (int y = 0; y < H; y++)
+        for (int x = W / 2; x < W; x++)
+            stats_acc_add(&acc, run->counts[y * W + x]);
+    free_run(run);
+    double mean, var;
+    count_distribution(TOL, &mean, &var);
+    /* Known variance, so a z test: the count of a pixel is a sum of few values, the mean of 128 is
+     * close to normal. */
+    double z = (acc.mean - mean) / sqrt(var / (double)acc.n);
+    double p = erfc(fabs(z) / sqrt(2.0));
+    print_message("striped pixels: mean count %.2f, the luminance rule gives %.2f +- %.2f\n", acc.mean, mean,
+                  sqrt(var / (double)acc.n));
+    if (p < CHECK_ALPHA)
+        print_error("striped pixels took %.2f samples on average; the rule on luminance gives %.2f +- %.2f "
+                    "(z = %.1f, p = %.3g < %.3g). Test I = 1.96 sqrt(var / n) <= T mean on the luminance "
+                    "of each sample (part5.h).\n", acc.mean, mean, sqrt(var / (double)acc.n), z, p, CHECK_ALPHA);
+    assert_true(p >= CHECK_ALPHA);
+    assert_true(acc.mean > BATCH);  /* noisy pixels take more than the first batch */
+}
+
+static void test_adaptive__zero_tolerance_is_the_fixed_rate_estimate(void **state)
+{
+    (void)state;
+    mc_print_seed("adaptive T = 0", SEED + 3);
+    adaptive_run *fixed = run_stripes(false, 0.0f, 64, SEED + 3);
+    adaptive_run *adapt = run_stripes(true, 0.0f, 64, SEED + 3);
+    /* Each pixel: a mean of 64 samples of a fair coin in red and green, so sd 0.0625 per channel,
+     * and two independent such means (if the two draw their numbers differently) differ by
+     * 0.088 sd. The bound is the Sidak-corrected normal quantile over the pixels. */
+    double alpha_pixel = stats_sidak(CHECK_ALPHA, W * H / 2);
+    double zcrit = stats_t_quantile2(alpha_pixel, 1e9);
+    double tol = zcrit * 0.5 * sqrt(2.0 / 64.0);
+    for (int y = 0; y < H; y++)
+        for (int x = 0; x < W; x++) {
+            int i = y * W + x;
+            if (x >= W / 2 && adapt->counts[i] != 64)
+                print_error("pixel (%d, %d): with tolerance 0 a noisy pixel must take all 64 samples, took %d\n",
+                            x, y, adapt->counts[i]);
+            if (x >= W / 2) assert_int_equal(64, adapt->counts[i]);
+            assert_rgb_near(fixed->pixels[i], adapt->pixels[i], (float)tol);
+        }
+    free_run(fixed);
+    free_run(adapt);
+}
+
+int adaptive_tests(void)
+{
+    const struct CMUnitTest tests[] = {
+        cmocka_unit_test_setup(test_adaptive__flat_pixels_stop_after_the_first_batch, test_setup),
+        cmocka_unit_test_setup(test_adaptive__sample_counts_are_whole_batches_up_to_spp, test_setup),
+        cmocka_unit_test_setup(test_adaptive__noisy_pixels_stop_where_the_luminance_rule_says, test_setup),
+        cmocka_unit_test_setup(test_adaptive__zero_tolerance_is_the_fixed_rate_estimate, test_setup),
+    };
+    return cmocka_run_group_tests_name("part5: adaptive sampling", tests, NULL, NULL);
+}
