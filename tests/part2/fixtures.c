@@ -1,0 +1,163 @@
+/* Test machinery: not part of any assignment. */
+#include "../common/test.h"
+#include "fixtures.h"
+#include "../../framework/dae.h"
+#include "../../framework/rng.h"
+#include <glob.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+int fixture_scene_paths(char paths[][512], int max)
+{
+    const char *patterns[] = {"scenes/*.dae", "scenes/*/*.dae"};
+    int n = 0;
+    for (int p = 0; p < 2; p++) {
+        glob_t g;
+        if (glob(patterns[p], 0, NULL, &g) == 0)
+            for (size_t i = 0; i < g.gl_pathc && n < max; i++) snprintf(paths[n++], 512, "%s", g.gl_pathv[i]);
+        globfree(&g);
+    }
+    return n;
+}
+
+void fixture_load_scene(const char *path, scene *out)
+{
+    pl_diag diag = pl_diag_default();
+    diag.on_warning = NULL;
+    pl_status st = dae_load(path, out, &diag);
+    if (st != PL_OK) fail_msg("%s does not load: %s", path, diag.error);
+}
+
+static vec3 random_point(rng *g, float half)
+{
+    return vec3_make((2.0f * rng_uniform(g) - 1.0f) * half, (2.0f * rng_uniform(g) - 1.0f) * half,
+                     (2.0f * rng_uniform(g) - 1.0f) * half);
+}
+
+void fixture_random_soup(scene *s, int n, uint64_t seed)
+{
+    rng g = rng_seeded(seed, 2);
+    if (s->num_materials == 0) scene_add_material(s, material_make(rgb_gray(0.5f), rgb_gray(0.0f)));
+    for (int i = 0; i < n; i++) {
+        vec3 c = random_point(&g, 1.0f);
+        float size = 0.2f * rng_uniform(&g) * rng_uniform(&g);
+        vec3 a = vec3_add(c, random_point(&g, size)), b = vec3_add(c, random_point(&g, size));
+        vec3 d = vec3_add(c, random_point(&g, size));
+        switch (rng_u32(&g) % 10) {
+        case 0: /* long and thin: a sliver across the soup */
+            b = vec3_add(a, vec3_scale(random_point(&g, 1.0f), 1.5f));
+            d = vec3_add(b, vec3_scale(random_point(&g, 1.0f), 0.01f));
+            break;
+        case 1: /* axis-aligned: a flat box, and rays may travel in its plane */
+            a.y = b.y = d.y = c.y;
+            break;
+        case 2: /* degenerate: collinear */
+            d = vec3_lerp(a, b, rng_uniform(&g));
+            break;
+        case 3: /* degenerate: repeated vertex, or a single point */
+            d = b;
+            if (rng_uniform(&g) < 0.5f) a = b;
+            break;
+        case 4: /* a duplicate of the previous triangle: an exact tie for every ray through it */
+            if (s->num_triangles > 0) {
+                triangle t = s->triangles[s->num_triangles - 1];
+                a = t.p0, b = t.p1, d = t.p2;
+            }
+            break;
+        case 5:
+            if (rng_uniform(&g) < 0.3f) {
+                sphere sp = {c, 0.02f + 0.2f * size, 0};
+                scene_add_sphere(s, sp);
+                continue;
+            }
+            break;
+        default:
+            break;
+        }
+        if (scene_add_triangle(s, triangle_make(a, b, d, 0)) < 0) fail_msg("out of memory");
+    }
+}
+
+static bool aabb_equal(aabb a, aabb b)
+{
+    return a.min.x == b.min.x && a.min.y == b.min.y && a.min.z == b.min.z && a.max.x == b.max.x &&
+           a.max.y == b.max.y && a.max.z == b.max.z;
+}
+
+#define VIOLATION(...) (snprintf(why, why_len, __VA_ARGS__), ok = false)
+
+bool fixture_check_bvh(const bvh *b, const scene *s, int max_leaf_size, bvh_shape *shape, char *why, size_t why_len)
+{
+    int n = scene_prim_count(s);
+    shape->depth = 0;
+    shape->leaves = 0;
+    if (b->num_prims != n) {
+        snprintf(why, why_len, "num_prims is %d, the scene has %d primitives", b->num_prims, n);
+        return false;
+    }
+    if (n == 0) {
+        if (b->num_nodes != 0) snprintf(why, why_len, "an empty scene must give num_nodes == 0, got %d", b->num_nodes);
+        return b->num_nodes == 0;
+    }
+    if (b->num_nodes < 1 || b->num_nodes > 2 * n - 1 || !b->nodes || !b->prim_index) {
+        snprintf(why, why_len, "num_nodes is %d: expected 1 .. 2n - 1 = %d, with both arrays allocated",
+                 b->num_nodes, 2 * n - 1);
+        return false;
+    }
+
+    int *prim_seen = calloc((size_t)n, sizeof *prim_seen), *slot_seen = calloc((size_t)n, sizeof *slot_seen);
+    char *node_seen = calloc((size_t)b->num_nodes, 1);
+    struct { int node, depth; } *stack = malloc((2 * (size_t)b->num_nodes + 1) * sizeof *stack);  /* each node pops once: <= 2 pushes */
+    if (!prim_seen || !slot_seen || !node_seen || !stack) fail_msg("out of memory");
+
+    bool ok = true;
+    int top = 0;
+    stack[top].node = 0;
+    stack[top++].depth = 0;
+    while (top > 0 && ok) {
+        top--;
+        int id = stack[top].node, depth = stack[top].depth;
+        const bvh_node *node = &b->nodes[id];
+        if (node_seen[id]++) { VIOLATION("node %d is reached twice from the root", id); break; }
+        if (depth > shape->depth) shape->depth = depth;
+        if (node->count > 0) {
+            shape->leaves++;
+            if (node->count > max_leaf_size) { VIOLATION("leaf %d holds %d primitives, max_leaf_size is %d", id, node->count, max_leaf_size); break; }
+            if (node->first < 0 || node->first + node->count > n) { VIOLATION("leaf %d covers slots %d .. %d, prim_index has %d", id, node->first, node->first + node->count - 1, n); break; }
+            aabb box = aabb_empty();
+            for (int i = node->first; i < node->first + node->count && ok; i++) {
+                int p = b->prim_index[i];
+                if (slot_seen[i]++) VIOLATION("prim_index slot %d belongs to two leaves", i);
+                else if (p < 0 || p >= n) VIOLATION("prim_index[%d] = %d is not a primitive (0 .. %d)", i, p, n - 1);
+                else if (prim_seen[p]++) VIOLATION("primitive %d is in two leaves", p);
+                else box = aabb_union(box, scene_prim_bounds(s, p));
+            }
+            if (ok && !aabb_equal(box, node->box))
+                VIOLATION("leaf %d's box is not the union of its primitives' bounds (not tight, or too small)", id);
+        } else if (node->count < 0) {
+            VIOLATION("node %d has count %d", id, node->count);
+        } else {
+            if (node->first < 1 || node->first + 1 >= b->num_nodes) { VIOLATION("interior node %d has children at %d, %d of %d nodes", id, node->first, node->first + 1, b->num_nodes); break; }
+            const bvh_node *l = &b->nodes[node->first], *r = &b->nodes[node->first + 1];
+            if (!aabb_contains(node->box, l->box) || !aabb_contains(node->box, r->box))
+                VIOLATION("a child box of node %d pokes out of it", id);
+            else if (!aabb_equal(aabb_union(l->box, r->box), node->box))
+                VIOLATION("node %d's box is larger than the union of its children's (not tight)", id);
+            for (int c = 0; c < 2; c++) {
+                stack[top].node = node->first + c;
+                stack[top++].depth = depth + 1;
+            }
+        }
+    }
+    for (int p = 0; p < n && ok; p++)
+        if (!prim_seen[p]) VIOLATION("primitive %d is in no leaf", p);
+    for (int i = 0; i < b->num_nodes && ok; i++)
+        if (!node_seen[i]) VIOLATION("node %d is not reachable from the root (num_nodes too large?)", i);
+    if (ok && shape->depth > BVH_MAX_DEPTH) VIOLATION("depth %d exceeds BVH_MAX_DEPTH (%d)", shape->depth, BVH_MAX_DEPTH);
+    free(prim_seen);
+    free(slot_seen);
+    free(node_seen);
+    free(stack);
+    return ok;
+}

@@ -1,0 +1,37 @@
+/* Test machinery: not part of any assignment.
+ * What part 2's tests share: the shipped scenes, random triangle soups, the BVH invariant checker. */
+#ifndef PL_PART2_FIXTURES_H
+#define PL_PART2_FIXTURES_H
+
+#include <stdbool.h>
+#include <stddef.h>
+#include <stdint.h>
+#include "../../framework/scene.h"
+#include "../../parts/part2_bvh/part2.h"
+
+#define FIXTURE_MAX_SCENES 64
+
+/* The .dae files under scenes/ (one folder deep), sorted; tests run from the repository root.
+ * Returns how many were found (at most FIXTURE_MAX_SCENES). */
+int fixture_scene_paths(char paths[][512], int max);
+
+/* Loads path, failing the current test with the loader's message if it does not load. */
+void fixture_load_scene(const char *path, scene *out);
+
+/* A soup of n primitives in about [-1, 1]^3 from the seed: triangles small, large, long and thin,
+ * axis-aligned (flat boxes), degenerate (collinear, repeated or identical vertices), duplicated,
+ * and a few spheres. Material 0 exists. */
+void fixture_random_soup(scene *s, int n, uint64_t seed);
+
+typedef struct {
+    int depth;   /* longest root-to-leaf path, in edges */
+    int leaves;
+} bvh_shape;
+
+/* Checks every invariant of part2.h: each primitive in exactly one leaf and each prim_index slot in
+ * exactly one leaf; leaves hold 1 .. max_leaf_size; every node reached once from the root; child
+ * boxes inside their parent; every box exactly the union of its primitives' bounds; depth within
+ * BVH_MAX_DEPTH. Returns false with the first violation described in why. */
+bool fixture_check_bvh(const bvh *b, const scene *s, int max_leaf_size, bvh_shape *shape, char *why, size_t why_len);
+
+#endif
