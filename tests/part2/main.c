@@ -4,6 +4,8 @@
 int slab_tests(void);
 int build_tests(void);
 int oracle_tests(void);
+int images_tests(void);
+int complexity_tests(void);
 
 int main(void)
 {
@@ -11,5 +13,7 @@ int main(void)
     failed += slab_tests();
     failed += build_tests();
     failed += oracle_tests();
+    failed += images_tests();
+    failed += complexity_tests();
     return failed ? 1 : 0;
 }
