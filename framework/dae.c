@@ -8,7 +8,9 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <stdint.h>
 #include <libxml/parser.h>
+#include <libxml/SAX2.h>
 
 /* Deeper than any exporter writes, shallow enough for the C stack. */
 #define MAX_NODE_DEPTH 128
@@ -33,6 +35,18 @@ static void on_xml_error(void *user, xmlErrorPtr e)
     pl_fail(errs->ctx->diag, PL_ERR_PARSE, "%s:%d: XML: %s", errs->ctx->name, e->line, msg);
 }
 
+/* Records each element's line in its _private field (free for applications): libxml2's own
+ * node->line saturates at 65535, and a mesh file easily runs past that. */
+static void on_start_element(void *user, const xmlChar *localname, const xmlChar *prefix, const xmlChar *uri,
+                             int num_namespaces, const xmlChar **namespaces, int num_attributes,
+                             int num_defaulted, const xmlChar **attributes)
+{
+    xmlParserCtxtPtr parser = user;
+    xmlSAX2StartElementNs(user, localname, prefix, uri, num_namespaces, namespaces, num_attributes, num_defaulted,
+                          attributes);
+    if (parser->node && parser->input) parser->node->_private = (void *)(intptr_t)parser->input->line;
+}
+
 static pl_status parse_xml(dae_ctx *c, const char *xml, size_t len)
 {
     if (len > INT_MAX) return pl_fail(c->diag, PL_ERR_PARSE, "%s:1: XML: file too large", c->name);
@@ -41,6 +55,7 @@ static pl_status parse_xml(dae_ctx *c, const char *xml, size_t len)
     xml_errors errs = {c, false};
     parser->_private = &errs;
     parser->sax->serror = on_xml_error;
+    parser->sax->startElementNs = on_start_element;
     /* NONET: never fetch; no NOENT/DTDLOAD: entities stay unexpanded; BIG_LINES: lines past 65535. */
     int opts = XML_PARSE_NONET | XML_PARSE_NOERROR | XML_PARSE_NOWARNING | XML_PARSE_BIG_LINES;
     c->doc = xmlCtxtReadMemory(parser, xml, (int)len, c->name, NULL, opts);

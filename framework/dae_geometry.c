@@ -150,15 +150,15 @@ static pl_status read_corner(dae_ctx *c, const xmlNode *p, const inputs *in, con
 {
     int v = idx[in->position_offset];
     if (v >= in->positions.count)
-        return dae_error(c, p, PL_ERR_PARSE, "VERTEX index %d is out of range (the positions have %d entries)",
-                         v, in->positions.count);
+        return dae_error(c, p, PL_ERR_PARSE, "VERTEX index %d is out of range (the positions have %d entr%s)",
+                         v, in->positions.count, in->positions.count == 1 ? "y" : "ies");
     out->p = mat4_point(inst->to_world, element(&in->positions, v));
     out->has_normal = false;
     if (in->normal_offset >= 0) {
         int n = idx[in->normal_offset];
         if (n >= in->normals.count)
-            return dae_error(c, p, PL_ERR_PARSE, "NORMAL index %d is out of range (the normals have %d entries)",
-                             n, in->normals.count);
+            return dae_error(c, p, PL_ERR_PARSE, "NORMAL index %d is out of range (the normals have %d entr%s)",
+                             n, in->normals.count, in->normals.count == 1 ? "y" : "ies");
         vec3 normal = vec3_normalize(mat4_dir(inst->normal_to_world, element(&in->normals, n)));
         out->n = normal;
         out->has_normal = vec3_is_finite(normal) && vec3_length(normal) > 0.5f;
@@ -205,7 +205,8 @@ static pl_status read_list(dae_ctx *c, const xmlNode *prim, const inputs *in, co
         if (!vc && count > 0) return dae_error(c, prim, PL_ERR_PARSE, "expected a <vcount> (count is %d)", count);
         if (vc) st = dae_int_list(c, vc, &vcount, &num_vcount);
         if (!st && num_vcount != count)
-            st = dae_error(c, vc, PL_ERR_PARSE, "vcount has %d entries, count says %d", num_vcount, count);
+            st = dae_error(c, prim, PL_ERR_PARSE, "vcount has %d entr%s, count says %d", num_vcount,
+                           num_vcount == 1 ? "y" : "ies", count);
         for (int i = 0; i < num_vcount && !st; i++)
             if (vcount[i] < 3)
                 st = dae_error(c, vc, PL_ERR_PARSE, "polygon %d has %d vertices: expected at least 3", i, vcount[i]);

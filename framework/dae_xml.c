@@ -5,6 +5,7 @@
 
 #include <errno.h>
 #include <limits.h>
+#include <stdint.h>
 #include <stdarg.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -47,7 +48,13 @@ const char *dae_attr(const xmlNode *n, const char *name)
     return NULL;
 }
 
-long dae_line(const xmlNode *n) { return n ? xmlGetLineNo(n) : 0; }
+long dae_line(const xmlNode *n)
+{
+    if (!n) return 0;
+    /* dae.c stores every element's exact line here while parsing (libxml2's saturates at 65535) */
+    if (n->type == XML_ELEMENT_NODE && n->_private) return (long)(intptr_t)n->_private;
+    return xmlGetLineNo(n);
+}
 
 xmlNode *dae_cgl_technique(const xmlNode *parent)
 {
@@ -323,7 +330,7 @@ pl_status dae_attr_int(dae_ctx *c, const xmlNode *n, const char *name, bool requ
     const char *s = dae_attr(n, name);
     *out = def;
     if (!s) {
-        if (required) return dae_error(c, n, PL_ERR_PARSE, "expected a %s attribute", name);
+        if (required) return dae_error(c, n, PL_ERR_PARSE, "expected an attribute '%s'", name);
         return PL_OK;
     }
     char *stop;
