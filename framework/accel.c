@@ -1,6 +1,7 @@
 /* Ray-scene queries: part 2's BVH when implemented, the linear scan otherwise. */
 #include "accel.h"
 #include "todo.h"
+#include <stdlib.h>
 #include <string.h>
 #include <time.h>
 
@@ -75,4 +76,44 @@ bool linear_occluded(const scene *s, const ray *r)
         if (scene_prim_intersect(s, i, &probe, &h)) return true;
     }
     return false;
+}
+
+accel_shape accel_bvh_shape(const accel *a)
+{
+    accel_shape shape = {0, 0, 0};
+    const bvh *b = &a->bvh;
+    if (!a->use_bvh || b->num_nodes <= 0) return shape;
+    /* Depth first with an explicit stack; a seen flag stops cycles and shared children. */
+    struct { int node, depth; } *stack = malloc((2 * (size_t)b->num_nodes + 1) * sizeof *stack);
+    unsigned char *seen = calloc((size_t)b->num_nodes, 1);
+    if (!stack || !seen) {
+        free(stack);
+        free(seen);
+        return shape;
+    }
+    int top = 0;
+    stack[top].node = 0;
+    stack[top++].depth = 0;
+    while (top > 0) {
+        top--;
+        int id = stack[top].node, depth = stack[top].depth;
+        if (seen[id]) continue;
+        seen[id] = 1;
+        shape.nodes++;
+        if (depth > shape.depth) shape.depth = depth;
+        const bvh_node *n = &b->nodes[id];
+        if (n->count > 0) {
+            shape.leaves++;
+            continue;
+        }
+        for (int c = 0; c < 2; c++) {
+            int child = n->first + c;
+            if (child <= 0 || child >= b->num_nodes) continue;
+            stack[top].node = child;
+            stack[top++].depth = depth + 1;
+        }
+    }
+    free(stack);
+    free(seen);
+    return shape;
 }

@@ -30,6 +30,16 @@ bool accel_occluded(const accel *a, const ray *r);
 bool linear_intersect(const scene *s, ray *r, hit *h);
 bool linear_occluded(const scene *s, const ray *r);
 
+/* The shape of the BVH in use, for -v, the JSON sidecar and the benchmark; zeros for the linear
+ * scan. Walks the tree defensively (a student's tree may be malformed): nodes reached from the root
+ * through valid child indices, each counted once. */
+typedef struct {
+    int nodes;   /* nodes reached from the root */
+    int leaves;
+    int depth;   /* longest root-to-leaf path, in edges */
+} accel_shape;
+accel_shape accel_bvh_shape(const accel *a);
+
 /* Rays traced by accel_intersect / accel_occluded on the calling thread since its last call. */
 uint64_t accel_take_ray_count(void);
 
