@@ -11,6 +11,7 @@
 #include <stdint.h>
 #include <libxml/parser.h>
 #include <libxml/SAX2.h>
+#include <libxml/xmlerror.h>
 
 /* Deeper than any exporter writes, shallow enough for the C stack. */
 #define MAX_NODE_DEPTH 128
@@ -19,21 +20,37 @@
 
 /* ---- XML errors -------------------------------------------------------------------------- */
 
-typedef struct { dae_ctx *ctx; bool failed; } xml_errors;
+typedef struct {
+    dae_ctx *ctx;
+    xmlParserCtxtPtr parser;
+    bool failed;
+} xml_errors;
 
-/* libxml2 reports through this instead of printing; the first error is the one worth showing. */
-static void on_xml_error(void *user, xmlErrorPtr e)
+/* Keeps the first error (the one worth showing) and never prints. */
+static void record_xml_error(xml_errors *errs, const xmlError *e)
 {
-    xmlParserCtxtPtr parser = user;
-    xml_errors *errs = parser->_private;
-    if (!errs || errs->failed || !e || e->level < XML_ERR_ERROR) return;
+    if (errs->failed || !e || e->level < XML_ERR_ERROR) return;
     errs->failed = true;
     char msg[512];
     snprintf(msg, sizeof msg, "%s", e->message ? e->message : "malformed XML");
     size_t len = strlen(msg);
     while (len > 0 && (msg[len - 1] == '\n' || msg[len - 1] == ' ')) msg[--len] = '\0';
-    pl_fail(errs->ctx->diag, PL_ERR_PARSE, "%s:%d: XML: %s", errs->ctx->name, e->line, msg);
+    for (char *ch = msg; *ch; ch++)
+        if (*ch == '\n') *ch = ' ';  /* one line per message */
+    /* Errors raised outside the parser (encoding conversion) carry no line: use the parser's. */
+    long line = e->line > 0 ? e->line : (errs->parser && errs->parser->input ? errs->parser->input->line : 1);
+    pl_fail(errs->ctx->diag, PL_ERR_PARSE, "%s:%ld: XML: %s", errs->ctx->name, line, msg);
 }
+
+/* The parser's own errors arrive here, with the parser as user data. */
+static void on_parser_error(void *user, xmlErrorPtr e)
+{
+    xmlParserCtxtPtr parser = user;
+    record_xml_error(parser->_private, e);
+}
+
+/* libxml2 reports a few errors (character encoding) through its per-thread handler instead. */
+static void on_library_error(void *user, xmlErrorPtr e) { record_xml_error(user, e); }
 
 /* Records each element's line in its _private field (free for applications): libxml2's own
  * node->line saturates at 65535, and a mesh file easily runs past that. */
@@ -52,13 +69,19 @@ static pl_status parse_xml(dae_ctx *c, const char *xml, size_t len)
     if (len > INT_MAX) return pl_fail(c->diag, PL_ERR_PARSE, "%s:1: XML: file too large", c->name);
     xmlParserCtxtPtr parser = xmlNewParserCtxt();
     if (!parser) return pl_fail(c->diag, PL_ERR_NOMEM, "%s: out of memory", c->name);
-    xml_errors errs = {c, false};
+    xml_errors errs = {c, parser, false};
     parser->_private = &errs;
-    parser->sax->serror = on_xml_error;
+    parser->sax->serror = on_parser_error;
+    /* The per-thread handler is swapped only for this parse, so nothing else sees the change. */
+    xmlStructuredErrorFunc saved_handler = xmlStructuredError;
+    void *saved_context = xmlStructuredErrorContext;
+    xmlSetStructuredErrorFunc(&errs, on_library_error);
     parser->sax->startElementNs = on_start_element;
-    /* NONET: never fetch; no NOENT/DTDLOAD: entities stay unexpanded; BIG_LINES: lines past 65535. */
+    /* NONET: never fetch; no NOENT/DTDLOAD: external entities stay unloaded; BIG_LINES: exact lines
+     * past 65535 in libxml2's own messages. */
     int opts = XML_PARSE_NONET | XML_PARSE_NOERROR | XML_PARSE_NOWARNING | XML_PARSE_BIG_LINES;
     c->doc = xmlCtxtReadMemory(parser, xml, (int)len, c->name, NULL, opts);
+    xmlSetStructuredErrorFunc(saved_context, saved_handler);
     bool ok = c->doc && !errs.failed && parser->wellFormed;
     xmlFreeParserCtxt(parser);
     if (ok) return PL_OK;
@@ -165,7 +188,7 @@ static pl_status visit_child(dae_ctx *c, const xmlNode *e, mat4 m, int depth)
         return PL_OK;
     }
     if (!is_transform(e) && !dae_is(e, "extra") && !dae_is(e, "asset"))
-        dae_warn_once(c, e, dae_name(e), "<%s> in a <node> is not supported; ignored", dae_name(e));
+        dae_warn_once(c, e, dae_name(e), "<%s> is not supported here; ignored", dae_name(e));
     return PL_OK;
 }
 
@@ -216,15 +239,15 @@ static pl_status load_document(dae_ctx *c)
 
 pl_status dae_load_memory(const char *xml, size_t len, const char *name, scene *out, pl_diag *diag)
 {
-    pl_diag quiet = pl_diag_default();
+    pl_diag fallback = pl_diag_default();  /* a NULL diag still gets errors recorded and warnings printed */
     memset(out, 0, sizeof *out);
     dae_ctx c;
     memset(&c, 0, sizeof c);
     c.name = name ? name : "<memory>";
-    c.diag = diag ? diag : &quiet;
+    c.diag = diag ? diag : &fallback;
     c.out = out;
     c.default_material = -1;
-    if (c.diag->error[0]) c.diag->error[0] = '\0';
+    c.diag->error[0] = '\0';
 
     pl_status st = parse_xml(&c, xml, len);
     if (!st) st = load_document(&c);

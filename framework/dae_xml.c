@@ -179,6 +179,7 @@ pl_status dae_resolve(dae_ctx *c, const xmlNode *at, const char *attr, const cha
                       dae_entry **out)
 {
     const char *url = dae_attr(at, attr);
+    *out = NULL;
     if (!url) return dae_error(c, at, PL_ERR_PARSE, "expected a %s attribute naming a <%s>", attr, element);
     if (url[0] != '#')
         return dae_error(c, at, PL_ERR_PARSE, "%s '%.200s': expected a reference within the file ('#id')",
