@@ -356,6 +356,27 @@ static void test_dae_up_axis__z_up_maps_like_cs184_before_the_node_transform(voi
     scene_free(&s);
 }
 
+static void test_dae_up_axis__cs184_layout_with_y_up_meshes_lands_as_stored(void **state)
+{
+    (void)state;
+    scene s;
+    warn_log w;
+    load_ok(VALID "cs184_layout.dae", &s, &w);
+    assert_int_equal(2, s.num_triangles);
+    assert_vec3_near(vec3_make(1, 0, -1), s.triangles[0].p0, EPS);
+    assert_vec3_near(vec3_make(-1, 0, 1), s.triangles[0].p1, EPS);
+    assert_vec3_near(vec3_make(-1, 0, -1), s.triangles[1].p1, EPS);
+    for (int i = 0; i < 2; i++) {
+        assert_vec3_near(vec3_make(0, 1, 0), s.triangles[i].n0, EPS);
+        assert_vec3_near(vec3_make(0, 1, 0), triangle_make(s.triangles[i].p0, s.triangles[i].p1, s.triangles[i].p2, 0).n0, EPS);
+    }
+    assert_int_equal(1, s.num_spheres);
+    assert_vec3_near(vec3_make(0.4f, 0.3f, 0.3f), s.spheres[0].center, EPS);
+    assert_float_near(0.3, s.spheres[0].radius, EPS);
+    assert_int_equal(0, w.count);
+    scene_free(&s);
+}
+
 static void test_dae_instance_node__instances_library_nodes_under_each_parent(void **state)
 {
     (void)state;
@@ -615,7 +636,9 @@ static void test_dae_warnings__unsupported_features_warn_once_per_kind(void **st
     load_ok(VALID "unsupported.dae", &s, &w);
     assert_int_equal(2, s.num_triangles);
     for (int i = 0; i < 2; i++) assert_rgb_near(rgb_gray(0.5f), s.materials[s.triangles[i].material].albedo, EPS);
-    assert_int_equal(3, w.count);
+    assert_int_equal(0, s.num_lights);
+    assert_int_equal(4, w.count);
+    assert_int_equal(1, warnings_about(&w, "<environment> lights are not supported"));
     assert_int_equal(1, warnings_about(&w, "textures are not supported"));
     assert_int_equal(1, warnings_about(&w, "<instance_controller>) are not supported"));
     assert_int_equal(1, warnings_about(&w, "animations are not supported"));
@@ -664,6 +687,7 @@ int dae_tests(void)
         cmocka_unit_test(test_dae_transforms__compose_in_document_order_parent_first),
         cmocka_unit_test(test_dae_up_axis__x_up_maps_x_to_world_up),
         cmocka_unit_test(test_dae_up_axis__z_up_maps_like_cs184_before_the_node_transform),
+        cmocka_unit_test(test_dae_up_axis__cs184_layout_with_y_up_meshes_lands_as_stored),
         cmocka_unit_test(test_dae_instance_node__instances_library_nodes_under_each_parent),
         cmocka_unit_test(test_dae_mesh__every_primitive_list_is_fan_triangulated),
         cmocka_unit_test(test_dae_mesh__normals_follow_the_inverse_transpose),
