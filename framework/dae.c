@@ -249,7 +249,7 @@ pl_status dae_load_memory(const char *xml, size_t len, const char *name, scene *
     c.default_material = -1;
     c.diag->error[0] = '\0';
 
-    pl_status st = parse_xml(&c, xml, len);
+    pl_status st = parse_xml(&c, xml ? xml : "", xml ? len : 0);
     if (!st) st = load_document(&c);
     dae_index_free(&c.index);
     xmlFreeDoc(c.doc);

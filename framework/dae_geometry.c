@@ -123,7 +123,7 @@ static pl_status read_inputs(dae_ctx *c, const xmlNode *prim, inputs *in)
         int offset;
         if (!semantic) return dae_error(c, i, PL_ERR_PARSE, "expected a semantic attribute");
         if ((st = dae_attr_int(c, i, "offset", true, 0, 0, &offset))) return st;
-        if (offset > 1000) return dae_error(c, i, PL_ERR_PARSE, "offset %d is implausibly large", offset);
+        if (offset > 1000) return dae_error(c, i, PL_ERR_PARSE, "expected an offset below 1000, found %d", offset);
         if (offset > max_offset) max_offset = offset;
         if (strcmp(semantic, "VERTEX") == 0 && in->position_offset < 0) {
             in->position_offset = offset;
