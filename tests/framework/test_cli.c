@@ -6,9 +6,10 @@
 /* Parses a NULL-terminated list of arguments (after the program name). */
 static pl_status parse(options *o, pl_diag *d, const char **args)
 {
-    char *argv[32] = {"pathtracer"};
+    char *argv[64] = {"pathtracer"};
     int argc = 1;
     while (args[argc - 1]) {
+        assert_true(argc < 64);
         argv[argc] = (char *)args[argc - 1];
         argc++;
     }
