@@ -90,15 +90,7 @@ static mat4 rigid(mat4 m)
     vec3 y = mat4_dir(m, vec3_make(0, 1, 0));
     vec3 x = vec3_normalize(vec3_cross(y, z));
     y = vec3_cross(z, x);
-    vec3 p = mat4_point(m, vec3_make(0, 0, 0));
-    mat4 r = mat4_identity();
-    vec3 cols[4] = {x, y, z, p};
-    for (int j = 0; j < 4; j++) {
-        r.m[0][j] = cols[j].x;
-        r.m[1][j] = cols[j].y;
-        r.m[2][j] = cols[j].z;
-    }
-    return r;
+    return mat4_from_basis(x, y, z, mat4_point(m, vec3_make(0, 0, 0)));
 }
 
 pl_status dae_instance_camera(dae_ctx *c, const xmlNode *inst, mat4 to_world)
