@@ -18,6 +18,7 @@
 #include "../framework/accel.h"
 #include "../framework/dae.h"
 #include "../framework/frame.h"
+#include "../framework/heatmap.h"
 #include "../framework/rng.h"
 #include "../framework/sampler.h"
 #include "../parts/part1_raygen/part1.h"
@@ -301,15 +302,19 @@ static int bench_scene(const char *name, int runs)
     for (int k = 0; k < 3; k++) {
         for (int threads = 1; threads <= MAX_THREADS; threads++) {
             long hits;
+            bvh_take_visits();
             double ours = mrays_per_second(trace_pathlab, &a, kind_rays[k], kind_count[k], kind_query[k], threads, runs, &hits);
+            double visits = threads == 1 ? (double)bvh_take_visits() / ((double)runs * kind_count[k]) : 0.0;
 #ifdef PL_HAVE_EMBREE
             long ehits;
             double theirs = mrays_per_second(trace_embree, &e, kind_rays[k], kind_count[k], kind_query[k], threads, runs, &ehits);
-            fprintf(stderr, "  %s %s %dT: %d rays, %ld hit (Embree %ld)\n", name, kind_name[k], threads, kind_count[k], hits, ehits);
+            fprintf(stderr, "  %s %s %dT: %d rays, %ld hit (Embree %ld), %.1f nodes visited per ray\n", name,
+                    kind_name[k], threads, kind_count[k], hits, ehits, visits);
             printf("| | | %s rays (%d), Mrays/s | %d | %.2f | %.2f | %.2f |\n", kind_name[k], kind_count[k], threads, ours,
                    theirs, ours / theirs);
 #else
-            fprintf(stderr, "  %s %s %dT: %d rays, %ld hit\n", name, kind_name[k], threads, kind_count[k], hits);
+            fprintf(stderr, "  %s %s %dT: %d rays, %ld hit, %.1f nodes visited per ray\n", name, kind_name[k], threads,
+                    kind_count[k], hits, visits);
             printf("| | | %s rays (%d), Mrays/s | %d | %.2f | - | - |\n", kind_name[k], kind_count[k], threads, ours);
 #endif
             fflush(stdout);

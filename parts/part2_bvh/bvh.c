@@ -97,40 +97,60 @@ static inline int sah_bin(float c, float lo, float scale)
     return bin < SAH_BINS ? bin : SAH_BINS - 1;  /* the upper bound itself lands one past the end */
 }
 
+/* aabb_union through fminf / fmaxf is a library call per component at -O2 (they must handle NaN);
+ * the build's boxes hold no NaN, and these compile to one minss / maxss each. The build spends
+ * most of its time growing boxes. */
+static inline float min_f(float a, float b) { return a < b ? a : b; }
+static inline float max_f(float a, float b) { return a > b ? a : b; }
+static inline void box_grow(aabb *a, const aabb *b)
+{
+    a->min = vec3_make(min_f(a->min.x, b->min.x), min_f(a->min.y, b->min.y), min_f(a->min.z, b->min.z));
+    a->max = vec3_make(max_f(a->max.x, b->max.x), max_f(a->max.y, b->max.y), max_f(a->max.z, b->max.z));
+}
+
 /* Finds the cheapest binned SAH split of prims[0 .. count - 1] over the centroid bounds cb.
  * The cost is sum(area * count) over both sides, not yet divided by the node's area.
  * Returns false when every centroid sits in one point (no plane separates them). */
 static bool sah_find_split(const build_input *in, const int *prims, int count, aabb cb, sah_split *best)
 {
+    /* Binning: one pass over the primitives fills the bins of all three axes. */
+    float lo[3] = {cb.min.x, cb.min.y, cb.min.z}, scale[3];
+    int bin_count[3][SAH_BINS] = {{0}};
+    aabb bin_box[3][SAH_BINS];
+    for (int axis = 0; axis < 3; axis++) {
+        scale[axis] = SAH_BINS / (vec3_get(cb.max, axis) - lo[axis]);
+        if (!isfinite(scale[axis])) scale[axis] = 0.0f;  /* zero (or denormal) extent: all in bin 0 */
+        for (int i = 0; i < SAH_BINS; i++) bin_box[axis][i] = aabb_empty();
+    }
+    for (int i = 0; i < count; i++) {
+        vec3 c = in->centroid[prims[i]];
+        const aabb *box = &in->prim_box[prims[i]];
+        int bx = sah_bin(c.x, lo[0], scale[0]), by = sah_bin(c.y, lo[1], scale[1]), bz = sah_bin(c.z, lo[2], scale[2]);
+        bin_count[0][bx]++;
+        bin_count[1][by]++;
+        bin_count[2][bz]++;
+        box_grow(&bin_box[0][bx], box);
+        box_grow(&bin_box[1][by], box);
+        box_grow(&bin_box[2][bz], box);
+    }
+
+    /* Each plane's cost: its right side swept from the right, then its left side from the left. */
     best->cost = INFINITY;
     for (int axis = 0; axis < 3; axis++) {
-        float lo = vec3_get(cb.min, axis);
-        float scale = SAH_BINS / (vec3_get(cb.max, axis) - lo);
-        if (!isfinite(scale)) continue;  /* zero (or denormal) extent: nothing to separate */
-
-        int bin_count[SAH_BINS] = {0};
-        aabb bin_box[SAH_BINS];
-        for (int i = 0; i < SAH_BINS; i++) bin_box[i] = aabb_empty();
-        for (int i = 0; i < count; i++) {
-            int bin = sah_bin(vec3_get(in->centroid[prims[i]], axis), lo, scale);
-            bin_count[bin]++;
-            bin_box[bin] = aabb_union(bin_box[bin], in->prim_box[prims[i]]);
-        }
-
-        /* Right side of each plane, swept from the right; then the left side, swept from the left. */
+        if (scale[axis] == 0.0f) continue;  /* nothing to separate along this axis */
         float right_cost[SAH_BINS];  /* area * count of bins i .. SAH_BINS - 1 */
         aabb box = aabb_empty();
         int n = 0;
         for (int i = SAH_BINS - 1; i > 0; i--) {
-            box = aabb_union(box, bin_box[i]);
-            n += bin_count[i];
+            box_grow(&box, &bin_box[axis][i]);
+            n += bin_count[axis][i];
             right_cost[i] = n > 0 ? aabb_surface_area(box) * n : INFINITY;  /* empty side: invalid */
         }
         box = aabb_empty();
         n = 0;
         for (int i = 0; i < SAH_BINS - 1; i++) {
-            box = aabb_union(box, bin_box[i]);
-            n += bin_count[i];
+            box_grow(&box, &bin_box[axis][i]);
+            n += bin_count[axis][i];
             if (n == 0) continue;
             float cost = aabb_surface_area(box) * n + right_cost[i + 1];
             if (cost < best->cost) {
@@ -171,8 +191,9 @@ static void build_node(const build_input *in, bvh *out, build_task task, build_t
     /* Tight box of the primitives, and the box of their centroids that the bins divide. */
     aabb box = aabb_empty(), cb = aabb_empty();
     for (int i = 0; i < count; i++) {
-        box = aabb_union(box, in->prim_box[prims[i]]);
-        cb = aabb_extend(cb, in->centroid[prims[i]]);
+        box_grow(&box, &in->prim_box[prims[i]]);
+        aabb point = {in->centroid[prims[i]], in->centroid[prims[i]]};
+        box_grow(&cb, &point);
     }
     node->box = box;
 
