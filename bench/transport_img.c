@@ -3,6 +3,7 @@
  *                                                      of (c - r)^2 / (r^2 + 0.01)
  *   transport_img sub A.hdr B.hdr OUT.png|OUT.hdr       writes max(A - B, 0), e.g. indirect light
  *                                                      alone = (-m 5 render) - (-m 1 render)
+ *   transport_img mean A.hdr                            prints the mean of each channel
  *   transport_img montage OUT.png A.png B.png ...       the PNGs side by side (same size), to look
  *                                                      at a ladder of figures in one picture */
 #include <stdio.h>
@@ -52,6 +53,17 @@ int main(int argc, char **argv)
     image a = {0}, b = {0};
     if (argc >= 4 && strcmp(argv[1], "montage") == 0)
         return montage(argv[2], argc - 3, argv + 3);
+    if (argc == 3 && strcmp(argv[1], "mean") == 0) {
+        if (load(argv[2], &a)) return 1;
+        double m[3] = {0, 0, 0};
+        for (long i = 0; i < (long)a.width * a.height; i++) {
+            m[0] += a.pixels[i].r; m[1] += a.pixels[i].g; m[2] += a.pixels[i].b;
+        }
+        long n = (long)a.width * a.height;
+        printf("%.6f %.6f %.6f\n", m[0] / n, m[1] / n, m[2] / n);
+        image_free(&a);
+        return 0;
+    }
     if (argc < 4 || (strcmp(argv[1], "relmse") != 0 && strcmp(argv[1], "sub") != 0) ||
         (strcmp(argv[1], "sub") == 0 && argc < 5)) {
         fprintf(stderr, "usage: %s relmse CANDIDATE.hdr REFERENCE.hdr | sub A.hdr B.hdr OUT.png\n", argv[0]);
