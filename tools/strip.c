@@ -335,6 +335,7 @@ static pl_status run(pass *p, const char *in, size_t len)
         return fail(p, &l, "unexpected NUL byte; expected a text file");
     }
     bool in_region = false, after_end = false;
+    bool last_blank = true;  /* the last line written was blank (the start of the file counts) */
     line begin_line = {0};
     task_state st = TASK_NONE;
     size_t pos = 0;
@@ -370,15 +371,22 @@ static pl_status run(pass *p, const char *in, size_t len)
         } else if (kind == LINE_BEGIN) {
             in_region = true;
             begin_line = l;
+        } else if (after_end && last_blank && indent_of(&l) == l.len) {
+            /* A region removed whole (no STUB) leaves one blank line between its neighbours, not two. */
+            after_end = false;
+            continue;
         } else {
             emit(p, l.text, l.len);
         }
-        if (kind != LINE_BEGIN) emit(p, l.eol, l.eol_len);
+        if (kind != LINE_BEGIN) {
+            emit(p, l.eol, l.eol_len);
+            last_blank = kind != LINE_STUB && indent_of(&l) == l.len;
+        }
         after_end = false;
     }
     if (in_region) return fail(p, &begin_line, "BEGIN SOLUTION never closed; expected END SOLUTION before the "
                                               "end of the file");
-    if (p->tasks && st != TASK_NONE && st != TASK_DONE) {
+    if (p->banners && st != TASK_NONE && st != TASK_DONE) {
         line l = {0};
         l.number = p->current.line;
         return fail(p, &l, "banner without a solution region and STUB; expected both in the function's body");

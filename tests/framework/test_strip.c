@@ -66,6 +66,15 @@ static void test_strip__removes_file_scope_region_without_stub(void **state)
                      "#include <math.h>\n\nint g;\n");
 }
 
+static void test_strip__removed_region_between_blank_lines_leaves_one(void **state)
+{
+    (void)state;
+    assert_strips_to("int a;\n\n" BEGIN "\nstatic int helper;\n" END "\n\nint b;\n", "int a;\n\nint b;\n");
+    assert_strips_to(BEGIN "\nstatic int helper;\n" END "\n\nint b;\n", "int b;\n");
+    /* Blank lines elsewhere are the author's: kept as they are. */
+    assert_strips_to("int a;\n\n\nint b;\n", "int a;\n\n\nint b;\n");
+}
+
 static void test_strip__copies_file_without_markers_unchanged(void **state)
 {
     (void)state;
@@ -235,6 +244,7 @@ int strip_tests(void)
         cmocka_unit_test(test_strip__replaces_region_by_stub),
         cmocka_unit_test(test_strip__keeps_stub_indentation),
         cmocka_unit_test(test_strip__removes_file_scope_region_without_stub),
+        cmocka_unit_test(test_strip__removed_region_between_blank_lines_leaves_one),
         cmocka_unit_test(test_strip__copies_file_without_markers_unchanged),
         cmocka_unit_test(test_strip__empty_file_stays_empty),
         cmocka_unit_test(test_strip__keeps_crlf_line_endings),
