@@ -132,6 +132,7 @@ static bool is_graze(const scene *s, const ray *r, const hit *h)
 typedef struct {
     const char *why;  /* NULL when the BVH agrees */
     bool tie;         /* agreed through a tie or a graze */
+    bool linear_found;
     hit linear, bvh;  /* the scan's first answer and the BVH's, for the message */
 } verdict;
 
@@ -158,7 +159,10 @@ static verdict judge_ray(const scene *s, const bvh *b, ray r)
         ray rl = r;
         hit hl = {0};
         bool found_l = linear_intersect_skipping(s, &rl, &hl, skip, num_skip);
-        if (num_skip == 0) v.linear = hl;
+        if (num_skip == 0) {
+            v.linear_found = found_l;
+            v.linear = hl;
+        }
         bool agree;
         if (found_l != found_b) agree = false;
         else if (!found_l) agree = true;
@@ -180,10 +184,8 @@ static verdict judge_ray(const scene *s, const bvh *b, ray r)
 
     /* Any hit: the scan finds one exactly when it finds a closest one. The BVH may answer "clear"
      * only when every hit the scan sees is a graze. */
-    bool occ_b = bvh_occluded(b, s, &r);
-    ray rl = r;
-    hit hl;
-    bool occ_l = linear_intersect(s, &rl, &hl);
+    bool occ_b = bvh_occluded(b, s, &r), occ_l = v.linear_found;
+    hit hl = v.linear;
     if (occ_b && !occ_l && !v.why) v.why = "bvh_occluded finds a hit, the linear scan does not";
     if (!occ_b && occ_l && !v.why) {
         int n = 0;
