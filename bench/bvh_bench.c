@@ -308,13 +308,15 @@ static int bench_scene(const char *name, int runs)
 #ifdef PL_HAVE_EMBREE
             long ehits;
             double theirs = mrays_per_second(trace_embree, &e, kind_rays[k], kind_count[k], kind_query[k], threads, runs, &ehits);
-            fprintf(stderr, "  %s %s %dT: %d rays, %ld hit (Embree %ld), %.1f nodes visited per ray\n", name,
-                    kind_name[k], threads, kind_count[k], hits, ehits, visits);
+            if (threads == 1)
+                fprintf(stderr, "  %s %s: %d rays, %ld hit (Embree %ld), %.1f nodes visited per ray\n", name,
+                        kind_name[k], kind_count[k], hits, ehits, visits);
             printf("| | | %s rays (%d), Mrays/s | %d | %.2f | %.2f | %.2f |\n", kind_name[k], kind_count[k], threads, ours,
                    theirs, ours / theirs);
 #else
-            fprintf(stderr, "  %s %s %dT: %d rays, %ld hit, %.1f nodes visited per ray\n", name, kind_name[k], threads,
-                    kind_count[k], hits, visits);
+            if (threads == 1)
+                fprintf(stderr, "  %s %s: %d rays, %ld hit, %.1f nodes visited per ray\n", name, kind_name[k],
+                        kind_count[k], hits, visits);
             printf("| | | %s rays (%d), Mrays/s | %d | %.2f | - | - |\n", kind_name[k], kind_count[k], threads, ours);
 #endif
             fflush(stdout);
