@@ -301,12 +301,12 @@ static int bench_scene(const char *name, int runs)
 
     for (int k = 0; k < 3; k++) {
         for (int threads = 1; threads <= MAX_THREADS; threads++) {
-            long hits;
+            long hits = 0;
             bvh_take_visits();
             double ours = mrays_per_second(trace_pathlab, &a, kind_rays[k], kind_count[k], kind_query[k], threads, runs, &hits);
             double visits = threads == 1 ? (double)bvh_take_visits() / ((double)runs * kind_count[k]) : 0.0;
 #ifdef PL_HAVE_EMBREE
-            long ehits;
+            long ehits = 0;
             double theirs = mrays_per_second(trace_embree, &e, kind_rays[k], kind_count[k], kind_query[k], threads, runs, &ehits);
             if (threads == 1)
                 fprintf(stderr, "  %s %s: %d rays, %ld hit (Embree %ld), %.1f nodes visited per ray\n", name,
