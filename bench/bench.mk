@@ -23,6 +23,7 @@ bench-bvh: $(BIN)/pathtracer
 	@if [ ! -f $(EMBREE_HDR) ]; then \
 	   echo "bench-bvh: Embree missing: apt-get install libembree-dev (needs root)"; \
 	   apt-get install -y -qq libembree-dev >/dev/null 2>&1 || \
+	   { apt-get update -qq >/dev/null 2>&1 && apt-get install -y -qq libembree-dev >/dev/null 2>&1; } || \
 	   echo "bench-bvh: could not install libembree-dev: Embree columns will be empty"; \
 	 fi
 	@rm -f $(BIN)/bvh_bench
