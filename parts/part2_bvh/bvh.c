@@ -252,32 +252,35 @@ pl_status bvh_build(bvh *out, const scene *s, int max_leaf_size)
     vec3 *centroid = malloc((size_t)n * sizeof *centroid);
     out->nodes = malloc(max_nodes * sizeof *out->nodes);
     out->prim_index = malloc((size_t)n * sizeof *out->prim_index);
-    if (!prim_box || !centroid || !out->nodes || !out->prim_index) {
-        free(prim_box);
-        free(centroid);
-        bvh_free(out);
-        return PL_ERR_NOMEM;
-    }
-    for (int i = 0; i < n; i++) {
+    pl_status status = prim_box && centroid && out->nodes && out->prim_index ? PL_OK : PL_ERR_NOMEM;
+    for (int i = 0; i < n && status == PL_OK; i++) {
         prim_box[i] = scene_prim_bounds(s, i);
         centroid[i] = aabb_centroid(prim_box[i]);
         out->prim_index[i] = i;
+        /* No bin can hold an infinite or NaN coordinate (the loaders reject them anyway). */
+        if (!vec3_is_finite(prim_box[i].min) || !vec3_is_finite(prim_box[i].max)) status = PL_ERR_INVALID;
     }
-    out->num_prims = n;
 
-    /* Depth first with an explicit to-do list: it never holds more than one pending sibling per
-     * level, and the depth is bounded (SAH_MAX_DEPTH), so a fixed array suffices. */
-    build_input in = {prim_box, centroid, max_leaf_size};
-    build_task tasks[2 * BVH_MAX_DEPTH + 2];
-    int num_tasks = 0;
-    out->num_nodes = 1;
-    tasks[num_tasks++] = (build_task){0, 0, n, 0};
-    while (num_tasks > 0) {
-        build_task task = tasks[--num_tasks];
-        build_node(&in, out, task, tasks, &num_tasks);
+    if (status == PL_OK) {
+        /* Depth first with an explicit to-do list: it never holds more than one pending sibling
+         * per level, and the depth is bounded (SAH_MAX_DEPTH), so a fixed array suffices. */
+        build_input in = {prim_box, centroid, max_leaf_size};
+        build_task tasks[2 * BVH_MAX_DEPTH + 2];
+        int num_tasks = 0;
+        out->num_prims = n;
+        out->num_nodes = 1;
+        tasks[num_tasks++] = (build_task){0, 0, n, 0};
+        while (num_tasks > 0) {
+            build_task task = tasks[--num_tasks];
+            build_node(&in, out, task, tasks, &num_tasks);
+        }
     }
     free(prim_box);
     free(centroid);
+    if (status != PL_OK) {
+        bvh_free(out);
+        return status;
+    }
 
     /* Give back the nodes SAH did not need (leaves of several primitives). */
     bvh_node *fit = realloc(out->nodes, (size_t)out->num_nodes * sizeof *fit);
