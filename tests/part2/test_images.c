@@ -3,6 +3,10 @@
 #include "../common/test.h"
 #include "fixtures.h"
 #include "../../framework/render.h"
+#include "../../framework/heatmap.h"
+#include "../common/procmesh.h"
+#include <stdlib.h>
+#include <unistd.h>
 #include <stdio.h>
 #include <string.h>
 
@@ -68,10 +72,55 @@ static void test_bvh__normal_images_equal_the_linear_scan_on_shipped_scenes(void
     }
 }
 
+static void test_heatmap__colours_visits_and_adds_a_legend(void **state)
+{
+    scene s = {0};
+    scene_add_material(&s, material_make(rgb_gray(0.5f), rgb_gray(0.0f)));
+    assert_int_equal(procmesh_bumpy_sphere(&s, procmesh_rows_for(2000), vec3_make(0, 0, 0), 1.0f, 0), PL_OK);
+    options o = options_default();
+    o.width = 64;
+    o.height = 48;
+    pl_diag diag = pl_diag_default();
+    accel a;
+    assert_int_equal(accel_build(&a, &s, true, o.max_leaf_size, &diag), PL_OK);
+    assert_implemented();
+    render_ctx ctx;
+    render_ctx_init(&ctx, &s, &a, &o);
+    char path[] = "/tmp/pathlab_heatmap_XXXXXX.png";
+    int fd = mkstemps(path, 4);
+    if (fd < 0) fail_msg("cannot make a temporary file");
+    close(fd);
+    pl_status st = render_heatmap(&ctx, path, &diag);
+    assert_implemented();
+    if (st != PL_OK) fail_msg("render_heatmap failed: %s", diag.error);
+    image img = {0};
+    st = image_read(path, &img, &diag);
+    unlink(path);
+    if (st != PL_OK) fail_msg("the heat map does not read back: %s", diag.error);
+    /* The picture, then the legend strip; a sphere in the middle of the frame is hotter than the
+     * empty corner, where rays miss the root box (0 visits beyond it: the darkest blue). */
+    assert_true(img.width == 64 && img.height > 48);
+    rgb corner = image_get(&img, 0, 0), centre = image_get(&img, 32, 24);
+    if (!(centre.r + centre.g > corner.r + corner.g))
+        fail_msg("the centre (on the mesh) should be warmer than the corner: centre rgb(%g, %g, %g), corner rgb(%g, %g, %g)",
+                 centre.r, centre.g, centre.b, corner.r, corner.g, corner.b);
+    image_free(&img);
+    accel_free(&a);
+
+    /* Without the BVH there is nothing to count: a clear error, no file. */
+    assert_int_equal(accel_build(&a, &s, false, o.max_leaf_size, &diag), PL_OK);
+    render_ctx_init(&ctx, &s, &a, &o);
+    assert_int_equal(render_heatmap(&ctx, path, &diag), PL_ERR_INVALID);
+    assert_int_equal(access(path, F_OK), -1);
+    accel_free(&a);
+    scene_free(&s);
+}
+
 int images_tests(void)
 {
     const struct CMUnitTest tests[] = {
         cmocka_unit_test_setup(test_bvh__normal_images_equal_the_linear_scan_on_shipped_scenes, test_setup),
+        cmocka_unit_test_setup(test_heatmap__colours_visits_and_adds_a_legend, test_setup),
     };
-    return cmocka_run_group_tests_name("part2: images with and without the BVH", tests, NULL, NULL);
+    return cmocka_run_group_tests_name("part2: images with and without the BVH, the heat map", tests, NULL, NULL);
 }
