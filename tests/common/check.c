@@ -46,3 +46,12 @@ int test_setup(void **state)
     pl_todo_reset();
     return 0;
 }
+
+void check_hit(bool found, bool expected, const char *what, const char *file, int line)
+{
+    check_implemented(file, line);
+    if (found != expected) {
+        print_error("%s: wrong: expected a %s, got a %s\n", what, expected ? "hit" : "miss", found ? "hit" : "miss");
+        _fail(file, line);
+    }
+}

@@ -21,6 +21,11 @@ void check_implemented(const char *file, int line);
  * Call pl_todo_reset() in setup (test_setup does), then this after calling student code. */
 #define assert_implemented() check_implemented(__FILE__, __LINE__)
 
+/* A hit/miss query on student code: "not implemented" for a stub, else "wrong" naming the call. */
+#define assert_hit(call) check_hit((call), true, #call, __FILE__, __LINE__)
+#define assert_miss(call) check_hit((call), false, #call, __FILE__, __LINE__)
+void check_hit(bool found, bool expected, const char *what, const char *file, int line);
+
 /* cmocka setup/teardown that reset and silence the stub counter; use for every student-code test. */
 int test_setup(void **state);
 

@@ -2,6 +2,7 @@
 #include "../common/test.h"
 #include "../../framework/camera_file.h"
 #include <stdio.h>
+#include <stdlib.h>
 #include <string.h>
 
 static const char *write_file(const char *text)

@@ -90,6 +90,11 @@ static void test_render_image__stores_bottom_row_last(void **state)
     o.width = 16, o.height = 32, o.normals = true;
     image img;
     render_with(&s, &o, 1, &img);
+    if (pl_todo_count() > 0) {  /* the student tree: part 1's own tests report its stubs */
+        image_free(&img);
+        scene_free(&s);
+        skip();
+    }
     assert_true(rgb_is_black(image_get(&img, 8, 0)));
     assert_false(rgb_is_black(image_get(&img, 8, 31)));
     image_free(&img);

@@ -21,7 +21,7 @@ static void test_sphere_intersect__from_inside_takes_far_root_outward_normal(voi
 {
     ray r = ray_make(vec3_make(0, 0, -5), vec3_make(1, 0, 0), 1e-4f, INFINITY);
     hit h;
-    assert_true(sphere_intersect(&unit_sphere_at_z5, &r, &h));
+    assert_hit(sphere_intersect(&unit_sphere_at_z5, &r, &h));
     assert_implemented();
     assert_float_near(1.0, h.t, 1e-5);
     assert_vec3_near(vec3_make(1, 0, 0), h.n, 1e-5f);
@@ -32,7 +32,7 @@ static void test_sphere_intersect__off_centre_hit_at_known_t(void **state)
     /* Along -z at x = 0.6: the sphere surface is at z = -5 + 0.8, so t = 4.2. */
     ray r = ray_make(vec3_make(0.6f, 0, 0), vec3_make(0, 0, -1), 0.0f, INFINITY);
     hit h;
-    assert_true(sphere_intersect(&unit_sphere_at_z5, &r, &h));
+    assert_hit(sphere_intersect(&unit_sphere_at_z5, &r, &h));
     assert_implemented();
     assert_float_near(4.2, h.t, 1e-5);
     assert_vec3_near(vec3_make(0.6f, 0, 0.8f), h.n, 1e-5f);
@@ -42,7 +42,7 @@ static void test_sphere_intersect__unnormalised_direction(void **state)
 {
     ray r = ray_make(vec3_make(0, 0, 0), vec3_make(0, 0, -2), 0.0f, INFINITY);
     hit h;
-    assert_true(sphere_intersect(&unit_sphere_at_z5, &r, &h));
+    assert_hit(sphere_intersect(&unit_sphere_at_z5, &r, &h));
     assert_implemented();
     assert_float_near(2.0, h.t, 1e-5);
 }
@@ -51,7 +51,7 @@ static void test_sphere_intersect__tangent_ray_hits(void **state)
 {
     ray r = ray_make(vec3_make(1, 0, 0), vec3_make(0, 0, -1), 0.0f, INFINITY);
     hit h;
-    assert_true(sphere_intersect(&unit_sphere_at_z5, &r, &h));
+    assert_hit(sphere_intersect(&unit_sphere_at_z5, &r, &h));
     assert_implemented();
     assert_float_near(5.0, h.t, 1e-3);
 }
@@ -60,20 +60,20 @@ static void test_sphere_intersect__misses_beside_behind_and_out_of_range(void **
 {
     hit h;
     ray beside = ray_make(vec3_make(1.01f, 0, 0), vec3_make(0, 0, -1), 0.0f, INFINITY);
-    assert_false(sphere_intersect(&unit_sphere_at_z5, &beside, &h));
+    assert_miss(sphere_intersect(&unit_sphere_at_z5, &beside, &h));
     assert_implemented();
     ray behind = ray_make(vec3_make(0, 0, 0), vec3_make(0, 0, 1), 0.0f, INFINITY);
-    assert_false(sphere_intersect(&unit_sphere_at_z5, &behind, &h));
+    assert_miss(sphere_intersect(&unit_sphere_at_z5, &behind, &h));
     ray short_ray = ray_make(vec3_make(0, 0, 0), vec3_make(0, 0, -1), 0.0f, 3.9f);
-    assert_false(sphere_intersect(&unit_sphere_at_z5, &short_ray, &h));
+    assert_miss(sphere_intersect(&unit_sphere_at_z5, &short_ray, &h));
     assert_float_near(3.9f, short_ray.max_t, 0);
     /* min_t past the near root: the far root at t = 6 counts. */
     ray late = ray_make(vec3_make(0, 0, 0), vec3_make(0, 0, -1), 4.5f, INFINITY);
-    assert_true(sphere_intersect(&unit_sphere_at_z5, &late, &h));
+    assert_hit(sphere_intersect(&unit_sphere_at_z5, &late, &h));
     assert_float_near(6.0, h.t, 1e-5);
     /* Past both roots: nothing. */
     ray past = ray_make(vec3_make(0, 0, 0), vec3_make(0, 0, -1), 6.5f, INFINITY);
-    assert_false(sphere_intersect(&unit_sphere_at_z5, &past, &h));
+    assert_miss(sphere_intersect(&unit_sphere_at_z5, &past, &h));
 }
 
 int sphere_tests(void)

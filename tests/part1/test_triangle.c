@@ -39,7 +39,7 @@ static void test_triangle_intersect__normal_is_normalised_barycentric_blend(void
     triangle t = unit_triangle();
     ray r = down_onto(0.25f, 0.5f);
     hit h;
-    assert_true(triangle_intersect(&t, &r, &h));
+    assert_hit(triangle_intersect(&t, &r, &h));
     assert_implemented();
     vec3 expected = vec3_normalize(vec3_add(vec3_add(vec3_scale(t.n0, 0.25f), vec3_scale(t.n1, 0.25f)), vec3_scale(t.n2, 0.5f)));
     assert_vec3_near(expected, h.n, 1e-5f);
@@ -79,10 +79,10 @@ static void test_triangle_intersect__parallel_ray_misses(void **state)
     triangle t = unit_triangle();
     ray r = ray_make(vec3_make(-1, 0.2f, 0), vec3_make(1, 0, 0), 0.0f, INFINITY);  /* in the plane */
     hit h;
-    assert_false(triangle_intersect(&t, &r, &h));
+    assert_miss(triangle_intersect(&t, &r, &h));
     assert_implemented();
     r = ray_make(vec3_make(-1, 0.2f, 1), vec3_make(1, 0, 0), 0.0f, INFINITY);      /* above the plane */
-    assert_false(triangle_intersect(&t, &r, &h));
+    assert_miss(triangle_intersect(&t, &r, &h));
 }
 
 static void test_triangle_intersect__respects_min_t_and_max_t(void **state)
@@ -91,16 +91,16 @@ static void test_triangle_intersect__respects_min_t_and_max_t(void **state)
     hit h;
     ray r = down_onto(0.2f, 0.2f);
     r.max_t = 1.5f;  /* the hit at t = 2 is beyond max_t */
-    assert_false(triangle_intersect(&t, &r, &h));
+    assert_miss(triangle_intersect(&t, &r, &h));
     assert_implemented();
     r = down_onto(0.2f, 0.2f);
     r.min_t = 2.5f;  /* ... or before min_t */
-    assert_false(triangle_intersect(&t, &r, &h));
+    assert_miss(triangle_intersect(&t, &r, &h));
     r = ray_make(vec3_make(0.2f, 0.2f, -1), vec3_make(0, 0, -1), 0.0f, INFINITY);  /* behind the origin */
-    assert_false(triangle_intersect(&t, &r, &h));
+    assert_miss(triangle_intersect(&t, &r, &h));
     r = down_onto(0.2f, 0.2f);
     r.max_t = 2.0f;  /* exactly at max_t: inclusive */
-    assert_true(triangle_intersect(&t, &r, &h));
+    assert_hit(triangle_intersect(&t, &r, &h));
 }
 
 static void test_triangle_intersect__hit_from_behind_counts(void **state)
@@ -109,7 +109,7 @@ static void test_triangle_intersect__hit_from_behind_counts(void **state)
     triangle t = unit_triangle();
     ray r = ray_make(vec3_make(0.2f, 0.2f, -3), vec3_make(0, 0, 1), 0.0f, INFINITY);
     hit h;
-    assert_true(triangle_intersect(&t, &r, &h));
+    assert_hit(triangle_intersect(&t, &r, &h));
     assert_implemented();
     assert_float_near(3.0, h.t, 1e-6);
 }
@@ -120,11 +120,11 @@ static void test_triangle_intersect__nearer_of_two_wins(void **state)
     near.p0.z = near.p1.z = near.p2.z = 1.0f;
     ray r = down_onto(0.2f, 0.2f);
     hit h;
-    assert_true(triangle_intersect(&far, &r, &h));
-    assert_true(triangle_intersect(&near, &r, &h));
+    assert_hit(triangle_intersect(&far, &r, &h));
+    assert_hit(triangle_intersect(&near, &r, &h));
     assert_implemented();
     assert_float_near(1.0, h.t, 1e-6);
-    assert_false(triangle_intersect(&far, &r, &h));  /* now farther than max_t */
+    assert_miss(triangle_intersect(&far, &r, &h));  /* now farther than max_t */
     assert_float_near(1.0, h.t, 1e-6);
 }
 
