@@ -28,6 +28,7 @@ for row in "bunny scenes/cornell_bunny.dae 21.6" "spheres scenes/cornell_spheres
     fi
 done
 
+echo "load average before the timed renders: $(cut -d ' ' -f 1-3 /proc/loadavg) (the machine is shared: wall times include waiting)"
 printf '\n%-8s %-26s %9s %9s %8s %9s %9s %8s\n' scene "flags (+ -r 480 360 -l 4 -m 5)" seconds "spp mean" "Mrays" relMSE "CS184 s" speedup
 for row in "bunny scenes/cornell_bunny.dae 21.6" "spheres scenes/cornell_spheres.dae 16.9"; do
     set -- $row
@@ -40,9 +41,7 @@ for row in "bunny scenes/cornell_bunny.dae 21.6" "spheres scenes/cornell_spheres
         "$BIN/pathtracer" $common $flags -f "$img" "$scene"
         t1=$(now)
         secs=$(elapsed "$t0" "$t1")
-        spp=$(field mean_samples_per_pixel "$img.json" 2>/dev/null || true)
-        [ -n "$spp" ] || spp=$(field mean_samples_per_pixel "${img%.hdr}.json")
-        json="${img%.hdr}.json"; [ -f "$json" ] || json="$img.json"
+        json="${img%.hdr}.json"
         rays=$(field rays_traced "$json" | awk '{printf "%.1f", $1 / 1e6}')
         spp=$(field mean_samples_per_pixel "$json")
         rel=$("$BIN/transport_img" relmse "$img" "$ref")
