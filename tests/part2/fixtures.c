@@ -79,6 +79,62 @@ void fixture_random_soup(scene *s, int n, uint64_t seed)
     }
 }
 
+typedef struct { float key; int prim; } keyed_prim;
+
+static int compare_keys(const void *a, const void *b)
+{
+    const keyed_prim *x = a, *y = b;
+    if (x->key != y->key) return x->key < y->key ? -1 : 1;
+    return x->prim - y->prim;  /* a total order: the tree is the same on every platform */
+}
+
+/* Makes out->nodes[node] cover out->prim_index[begin .. end - 1]: a leaf, or two halves. */
+static void median_node(bvh *out, const scene *s, keyed_prim *scratch, int node, int begin, int end, int max_leaf_size)
+{
+    aabb box = aabb_empty(), cb = aabb_empty();
+    for (int i = begin; i < end; i++) {
+        box = aabb_union(box, scene_prim_bounds(s, out->prim_index[i]));
+        cb = aabb_extend(cb, scene_prim_centroid(s, out->prim_index[i]));
+    }
+    out->nodes[node].box = box;
+    int count = end - begin;
+    if (count <= max_leaf_size) {
+        out->nodes[node].first = begin;
+        out->nodes[node].count = count;
+        return;
+    }
+    int axis = aabb_max_axis(cb);
+    for (int i = 0; i < count; i++) {
+        int p = out->prim_index[begin + i];
+        scratch[i] = (keyed_prim){vec3_get(scene_prim_centroid(s, p), axis), p};
+    }
+    qsort(scratch, (size_t)count, sizeof *scratch, compare_keys);
+    for (int i = 0; i < count; i++) out->prim_index[begin + i] = scratch[i].prim;
+    int first = out->num_nodes;
+    out->num_nodes += 2;
+    out->nodes[node].first = first;
+    out->nodes[node].count = 0;
+    int mid = begin + count / 2;
+    median_node(out, s, scratch, first, begin, mid, max_leaf_size);
+    median_node(out, s, scratch, first + 1, mid, end, max_leaf_size);
+}
+
+void fixture_build_median(bvh *out, const scene *s, int max_leaf_size)
+{
+    int n = scene_prim_count(s);
+    memset(out, 0, sizeof *out);
+    if (n == 0) return;
+    out->nodes = malloc((2 * (size_t)n - 1) * sizeof *out->nodes);
+    out->prim_index = malloc((size_t)n * sizeof *out->prim_index);
+    keyed_prim *scratch = malloc((size_t)n * sizeof *scratch);
+    if (!out->nodes || !out->prim_index || !scratch) fail_msg("out of memory");
+    for (int i = 0; i < n; i++) out->prim_index[i] = i;
+    out->num_prims = n;
+    out->num_nodes = 1;
+    median_node(out, s, scratch, 0, 0, n, max_leaf_size);
+    free(scratch);
+}
+
 static bool aabb_equal(aabb a, aabb b)
 {
     return a.min.x == b.min.x && a.min.y == b.min.y && a.min.z == b.min.z && a.max.x == b.max.x &&

@@ -23,6 +23,11 @@ void fixture_load_scene(const char *path, scene *out);
  * and a few spheres. Material 0 exists. */
 void fixture_random_soup(scene *s, int n, uint64_t seed);
 
+/* A plain median-split BVH (sort by centroid along the longest axis, halve), independent of
+ * bvh_build, so the traversal tasks can be tested on a valid tree whatever state task 2.2 is in.
+ * Release with bvh_free. Fails the current test without memory. */
+void fixture_build_median(bvh *out, const scene *s, int max_leaf_size);
+
 typedef struct {
     int depth;   /* longest root-to-leaf path, in edges */
     int leaves;
