@@ -55,9 +55,9 @@ bool bvh_occluded(const bvh *b, const scene *s, const ray *r);
 /* Framework: releases the arrays and zeroes b. NULL-safe. */
 void bvh_free(bvh *b);
 
-/* Framework (framework/accel.c): adds `nodes` to the calling thread's count of BVH nodes visited,
+/* Framework (framework/heatmap.c): adds `nodes` to the calling thread's count of BVH nodes visited,
  * i.e. of node boxes tested against a ray. bvh_intersect and bvh_occluded call it once per query;
- * the heat map (--heatmap) and the complexity test read the count with accel_take_node_visits. */
+ * the heat map (--heatmap) and the complexity test read the count (bvh_take_visits, heatmap.h). */
 void bvh_count_visits(int nodes);
 
 #endif
