@@ -95,8 +95,12 @@ static int run(const options *o, const char *prog)
         double secs = stats.seconds > 0 ? stats.seconds : 1e-9;
         printf("[pathlab] %d primitives (%d triangles, %d spheres), %d lights; loaded in %.4f s\n",
                scene_prim_count(&s), s.num_triangles, s.num_spheres, s.num_lights, load_seconds);
-        if (a.use_bvh)
-            printf("[pathlab] BVH: %d nodes built in %.4f s\n", a.bvh.num_nodes, a.build_seconds);
+        if (a.use_bvh) {
+            accel_shape shape = accel_bvh_shape(&a);
+            printf("[pathlab] BVH: %d nodes built in %.4f s", shape.nodes, a.build_seconds);
+            if (o->verbose) printf(" (%d leaves, depth %d, leaf size <= %d)", shape.leaves, shape.depth, o->max_leaf_size);
+            printf("\n");
+        }
         else
             printf("[pathlab] no BVH (%s): linear scan over every primitive\n",
                    o->linear_scan ? "--no-bvh" : "part 2 not implemented");

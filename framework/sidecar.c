@@ -40,29 +40,6 @@ static void text_json_string(text *t, const char *s)
     text_printf(t, "\"");
 }
 
-/* Depth of the BVH below node i (1 for a leaf), without recursion. */
-static int bvh_depth(const bvh *b)
-{
-    if (b->num_nodes == 0) return 0;
-    int *stack = malloc(sizeof(int) * 2 * (size_t)b->num_nodes);
-    if (!stack) return -1;
-    int top = 0, deepest = 0;
-    stack[top++] = 0;
-    stack[top++] = 1;
-    while (top > 0) {
-        int depth = stack[--top], node = stack[--top];
-        if (depth > deepest) deepest = depth;
-        if (b->nodes[node].count == 0 && top + 4 <= 2 * b->num_nodes) {
-            stack[top++] = b->nodes[node].first;
-            stack[top++] = depth + 1;
-            stack[top++] = b->nodes[node].first + 1;
-            stack[top++] = depth + 1;
-        }
-    }
-    free(stack);
-    return deepest;
-}
-
 char *path_with_suffix(const char *path, const char *suffix, const char *extension)
 {
     const char *slash = strrchr(path, '/');
@@ -97,8 +74,9 @@ pl_status sidecar_write(const char *path, const render_ctx *ctx, const sidecar_i
     text_printf(&t, "  \"scene_stats\": {\"triangles\": %d, \"spheres\": %d, \"lights\": %d, \"materials\": %d},\n",
                 s->num_triangles, s->num_spheres, s->num_lights, s->num_materials);
     const accel *a = ctx->accel;
-    text_printf(&t, "  \"accel\": {\"kind\": \"%s\", \"nodes\": %d, \"depth\": %d},\n", a->use_bvh ? "bvh" : "linear",
-                a->use_bvh ? a->bvh.num_nodes : 0, a->use_bvh ? bvh_depth(&a->bvh) : 0);
+    accel_shape shape = accel_bvh_shape(a);
+    text_printf(&t, "  \"accel\": {\"kind\": \"%s\", \"nodes\": %d, \"leaves\": %d, \"depth\": %d},\n",
+                a->use_bvh ? "bvh" : "linear", shape.nodes, shape.leaves, shape.depth);
     text_printf(&t, "  \"timings_seconds\": {\"load\": %.6f, \"build\": %.6f, \"render\": %.6f, \"write\": %.6f},\n",
                 info->load_seconds, info->build_seconds, r->seconds, info->write_seconds);
     double mrays = r->seconds > 0 ? r->rays / r->seconds * 1e-6 : 0.0;
