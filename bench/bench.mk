@@ -8,7 +8,7 @@
 bench: bench-bvh
 
 BENCH_RUNS   ?= 5
-BENCH_SCENES ?= scenes/cornell_bunny.dae proc:10000 proc:100000 proc:1000000 proc:4000000
+BENCH_SCENES ?= scenes/cornell_bunny.dae bench/data/cornell_bunny_58k.dae proc:10000 proc:100000 proc:1000000 proc:4000000
 EMBREE_HDR   := /usr/include/embree3/rtcore.h
 embree_flags  = $(if $(wildcard $(EMBREE_HDR)),-DPL_HAVE_EMBREE $(shell pkg-config --cflags embree3 2>/dev/null))
 embree_libs   = $(if $(wildcard $(EMBREE_HDR)),$(or $(shell pkg-config --libs embree3 2>/dev/null),-lembree3))
