@@ -4,8 +4,12 @@
  *   k-th bounce alone (-m k -o 0):       rho^k Le
  *   bounces 0..m (-m m -o 1):            Le (1 - rho^(m+1)) / (1 - rho)
  *   everything (-m large, roulette):     Le / (1 - rho)
- * Each case is a t test on radiance_estimate from the centre of the box, for light sampling and
- * for hemisphere sampling (-H). Any NaN, Inf or negative sample fails naming the sample.
+ * Each case is a t test on radiance_estimate from the centre of the box. Paths of two bounces or
+ * more use hemisphere sampling (-H) for their direct light: sampling the box's area lights from a
+ * vertex near an edge of the box has a 1/d^2 singularity (the light on the neighbouring face is
+ * arbitrarily close), so that estimator's variance is unbounded and no t test of it holds its
+ * alpha. Light sampling is t-tested where the shading point is fixed (the first hit, -m 1); part 3
+ * tests it thoroughly. Any NaN, Inf or negative sample fails naming the sample.
  * alpha: each t test runs at PART4_CHECK_ALPHA (part4_alpha.h: Sidak share of the suite's 1e-3).
  * Seeds fixed and printed. */
 #include <stdio.h>
@@ -65,26 +69,26 @@ static void check_furnace(tiny_world *w, int max_depth, bool accumulate, bool he
 static void test_furnace__kth_bounce_alone_is_rho_to_the_k(void **state)
 {
     for (int k = 2; k <= 4; k++)
-        check_furnace(*state, k, false, false, pow(RHO, k) * LE, SEED + (uint64_t)k, "k-th bounce only");
-}
-
-static void test_furnace__kth_bounce_alone_with_hemisphere_sampling(void **state)
-{
-    check_furnace(*state, 3, false, true, pow(RHO, 3) * LE, SEED + 10, "k-th bounce only");
+        check_furnace(*state, k, false, true, pow(RHO, k) * LE, SEED + (uint64_t)k, "k-th bounce only");
 }
 
 static void test_furnace__bounces_up_to_m_sum_a_geometric_series(void **state)
 {
     for (int m = 2; m <= 3; m++)
-        check_furnace(*state, m, true, false, LE * (1 - pow(RHO, m + 1)) / (1 - RHO), SEED + 20 + (uint64_t)m,
+        check_furnace(*state, m, true, true, LE * (1 - pow(RHO, m + 1)) / (1 - RHO), SEED + 20 + (uint64_t)m,
                       "bounces 0..m");
 }
 
 static void test_furnace__deep_paths_converge_to_le_over_one_minus_rho(void **state)
 {
     /* rho^65 is far below any noise: -m 64 is the full solution. */
-    check_furnace(*state, 64, true, false, LE / (1 - RHO), SEED + 30, "full solution");
-    check_furnace(*state, 64, true, true, LE / (1 - RHO), SEED + 31, "full solution");
+    check_furnace(*state, 64, true, true, LE / (1 - RHO), SEED + 30, "full solution");
+}
+
+static void test_furnace__direct_light_by_light_sampling_is_rho_le(void **state)
+{
+    check_furnace(*state, 1, true, false, LE * (1 + RHO), SEED + 35, "emission + direct light");
+    check_furnace(*state, 1, false, false, LE * RHO, SEED + 36, "direct light only");
 }
 
 static void test_furnace__depth_zero_is_emission_only(void **state)
@@ -96,9 +100,9 @@ int furnace_tests(void)
 {
     const struct CMUnitTest tests[] = {
         cmocka_unit_test_setup_teardown(test_furnace__kth_bounce_alone_is_rho_to_the_k, furnace_setup, furnace_teardown),
-        cmocka_unit_test_setup_teardown(test_furnace__kth_bounce_alone_with_hemisphere_sampling, furnace_setup, furnace_teardown),
         cmocka_unit_test_setup_teardown(test_furnace__bounces_up_to_m_sum_a_geometric_series, furnace_setup, furnace_teardown),
         cmocka_unit_test_setup_teardown(test_furnace__deep_paths_converge_to_le_over_one_minus_rho, furnace_setup, furnace_teardown),
+        cmocka_unit_test_setup_teardown(test_furnace__direct_light_by_light_sampling_is_rho_le, furnace_setup, furnace_teardown),
         cmocka_unit_test_setup_teardown(test_furnace__depth_zero_is_emission_only, furnace_setup, furnace_teardown),
     };
     return cmocka_run_group_tests_name("part4: the furnace", tests, NULL, NULL);

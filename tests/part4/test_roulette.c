@@ -2,7 +2,7 @@
  * Russian roulette: it must end paths (fewer rays) and change the noise, but never the mean.
  * - the rule alone: E[beta after, 0 when ended] = beta before, per channel (t test);
  * - in the furnace at -m 12: the estimate with roulette and with opts->no_roulette both match
- *   Le (1 - rho^13) / (1 - rho), and roulette traces fewer rays. The two variances are printed
+ *   Le (1 - rho^13) / (1 - rho) (direct light by -H, see test_furnace.c), and roulette traces fewer rays. The two variances are printed
  *   (roulette's is the larger: E[(X / q)^2 q] >= E[X^2]) but not judged: how much larger depends
  *   on the rule a student picks.
  * alpha: each t test runs at PART4_CHECK_ALPHA (part4_alpha.h: Sidak share of the suite's 1e-3).
@@ -80,6 +80,7 @@ static furnace_run run_furnace(bool roulette, uint64_t seed)
     assert_true(tiny_scene_furnace(&w->s, (float)RHO, (float)LE));
     w->o.max_depth = DEPTH;
     w->o.no_roulette = !roulette;
+    w->o.hemisphere = true;  /* bounded variance: see test_furnace.c */
     assert_int_equal(PL_OK, tiny_world_finish(w));
     ray r = ray_make(vec3_make(0, 0, 0), vec3_normalize(vec3_make(-0.4f, 0.1f, -0.9f)), 0.0f, INFINITY);
     const char *name = roulette ? "furnace -m 12, roulette" : "furnace -m 12, no roulette";
