@@ -7,9 +7,11 @@
 #include "sidecar.h"
 #include "colormap.h"
 #include "heatmap.h"
+#include <errno.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <strings.h>
 #include <time.h>
 #include <unistd.h>
 
@@ -138,6 +140,15 @@ int main(int argc, char **argv)
         size_t n = strlen(o.output);
         if (!(n > 4 && (!strcasecmp(o.output + n - 4, ".png") || !strcasecmp(o.output + n - 4, ".hdr")))) {
             fprintf(stderr, "%s: -f %s: expected a file name ending in .png or .hdr\nTry '%s -h' for help.\n", prog, o.output, prog);
+            cli_free(&o);
+            return 2;
+        }
+        /* ... and that its folder takes files, so a long render is not lost at the end. */
+        const char *slash = strrchr(o.output, '/');
+        char folder[4096];
+        snprintf(folder, sizeof folder, "%.*s", slash ? (int)(slash - o.output) + 1 : 1, slash ? o.output : ".");
+        if (access(folder, W_OK) != 0) {
+            fprintf(stderr, "%s: -f %s: cannot write into '%s': %s\n", prog, o.output, folder, strerror(errno));
             cli_free(&o);
             return 2;
         }

@@ -110,6 +110,8 @@ static void test_pathtracer__bad_input_exits_2_and_writes_nothing(void **state)
         "bin/pathtracer -f /tmp/pathlab-test-nothing.png /tmp/pathlab-no-such-scene.dae",
         "bin/pathtracer -f /tmp/pathlab-test-nothing.jpg scenes/cornell_spheres.dae",
         "bin/pathtracer --unknown-flag scenes/cornell_spheres.dae",
+        "bin/pathtracer -f /tmp/pathlab-no-such-folder/x.png scenes/cornell_spheres.dae",
+        "bin/pathtracer -f /tmp/pathlab-test-nothing.png tests/data/broken/not_collada_root.dae",
     };
     for (size_t i = 0; i < sizeof cmds / sizeof cmds[0]; i++) {
         char cmd[512];
