@@ -36,7 +36,7 @@ bool russian_roulette(rgb *beta, int next_depth, rng *g)
  * With -o 0 (!opts->accumulate) only the k = max_depth term is kept. Loop or recurse, as you like.
  * This solution spends the -l light samples at the first vertex only and samples each light once
  * at deeper vertices, where the path's own noise dominates (handout/part4.md, 4.1: same mean,
- * about a third less time in the Cornell boxes for the same noise). Calling one_bounce_radiance
+ * about a quarter less time in the Cornell boxes for the same noise). Calling one_bounce_radiance
  * with ctx at every vertex, as CS184 does, is just as correct.
  * In:  r, the ray that reached h (depth r->depth); h; g.
  * Out: radiance towards r's origin; the emission of h itself is NOT included (the framework adds
