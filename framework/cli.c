@@ -49,6 +49,7 @@ void cli_print_usage(FILE *f, const char *prog)
             "  --normals         shade by surface normal (parts 1 and 2)\n"
             "  --cs184-camera    CS184's framing: orbit the scene centre along the file's view direction\n"
             "  --no-bvh          intersect by linear scan even when part 2 is implemented\n"
+            "  --no-rr           no Russian roulette: every path runs to -m bounces (part 4)\n"
             "  --leaf-size N     BVH max primitives per leaf (4)\n"
             "  --heatmap FILE    write a PNG of BVH nodes visited per pixel\n",
             prog);
@@ -158,6 +159,7 @@ pl_status cli_parse(int argc, char **argv, options *out, cli_action *action, pl_
         else if (!strcmp(a, "--normals")) o.normals = true;
         else if (!strcmp(a, "--cs184-camera")) o.cs184_framing = true;
         else if (!strcmp(a, "--no-bvh")) o.linear_scan = true;
+        else if (!strcmp(a, "--no-rr")) o.no_roulette = true;
         else if (!strcmp(a, "--leaf-size")) s = parse_int(a, VALUE(1), 1, 255, &o.max_leaf_size, d), i++;
         else if (!strcmp(a, "--heatmap")) { if (!VALUE(1)) s = pl_fail(d, PL_ERR_INVALID, "--heatmap: expected a .png file name"); o.heatmap = VALUE(1); i++; }
         else return pl_fail(d, PL_ERR_INVALID, "unknown option '%s'", a);

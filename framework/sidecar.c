@@ -66,10 +66,10 @@ pl_status sidecar_write(const char *path, const render_ctx *ctx, const sidecar_i
                 ctx->width, ctx->height);
     text_printf(&t, "  \"options\": {\"spp\": %d, \"light_samples\": %d, \"max_depth\": %d, \"accumulate\": %s, "
                     "\"hemisphere\": %s, \"adaptive\": %s, \"adaptive_batch\": %d, \"adaptive_tolerance\": %g, "
-                    "\"normals\": %s, \"threads\": %d},\n",
+                    "\"russian_roulette\": %s, \"normals\": %s, \"threads\": %d},\n",
                 o->spp, o->light_samples, o->max_depth, o->accumulate ? "true" : "false",
                 o->hemisphere ? "true" : "false", o->adaptive ? "true" : "false", o->adaptive_batch,
-                o->adaptive_tol, o->normals ? "true" : "false", o->threads);
+                o->adaptive_tol, o->no_roulette ? "false" : "true", o->normals ? "true" : "false", o->threads);
     const scene *s = ctx->scene;
     text_printf(&t, "  \"scene_stats\": {\"triangles\": %d, \"spheres\": %d, \"lights\": %d, \"materials\": %d},\n",
                 s->num_triangles, s->num_spheres, s->num_lights, s->num_materials);

@@ -45,7 +45,7 @@ static void test_cli__every_flag_is_read(void **state)
     assert_int_equal(PL_OK, parse(&o, &d, (const char *[]){"-s", "64", "-l", "4", "-t", "2", "-m", "5", "-o", "0", "-b", "0.1",
                                                            "-d", "3", "-f", "x.png", "-r", "480", "360", "-a", "16", "0.1",
                                                            "-H", "--seed", "99", "--normals", "--cs184-camera",
-                                                           "--no-bvh", "--leaf-size", "8", "-v", "scene.dae", NULL}));
+                                                           "--no-bvh", "--no-rr", "--leaf-size", "8", "-v", "scene.dae", NULL}));
     assert_int_equal(64, o.spp);
     assert_int_equal(4, o.light_samples);
     assert_int_equal(2, o.threads);
@@ -59,7 +59,7 @@ static void test_cli__every_flag_is_read(void **state)
     assert_true(o.adaptive);
     assert_int_equal(16, o.adaptive_batch);
     assert_float_near(0.1, o.adaptive_tol, 1e-6);
-    assert_true(o.hemisphere && o.normals && o.cs184_framing && o.linear_scan && o.verbose);
+    assert_true(o.hemisphere && o.normals && o.cs184_framing && o.linear_scan && o.no_roulette && o.verbose);
     assert_int_equal(99, (int)o.seed);
     assert_int_equal(8, o.max_leaf_size);
     assert_non_null(strstr(o.command_line, "-r 480 360"));
