@@ -52,7 +52,7 @@ static void check_direct(tiny_world *w, mc_estimator est, const char *name, int 
     tiny_world_refresh(w);
     ray r;
     hit h;
-    assert_true(tiny_floor_hit(&w->ctx, px, pz, &r, &h));
+    assert_hit(tiny_floor_hit(&w->ctx, px, pz, &r, &h));
     mc_print_seed(name, seed);
     stats_acc acc[3];
     mc_run_at(&w->ctx, est, name, &r, &h, seed, N, acc, __FILE__, __LINE__);
@@ -67,12 +67,12 @@ static void test_zero_bounce__emitter_is_Le_from_the_front_only(void **state)
     tiny_world *w = *state;
     ray up = ray_make(vec3_make(0.1f, 0.3f, 0.2f), vec3_make(0, 1, 0), 0.0f, INFINITY);
     hit h;
-    assert_true(render_intersect(&w->ctx, &up, &h));
+    assert_hit(render_intersect(&w->ctx, &up, &h));
     rgb L = zero_bounce_radiance(&w->ctx, &up, &h);
     assert_implemented();
     assert_rgb_near(rgb_gray(LE), L, 0.0f);
     ray down = ray_make(vec3_make(0.1f, 3.0f, 0.2f), vec3_make(0, -1, 0), 0.0f, INFINITY);
-    assert_true(render_intersect(&w->ctx, &down, &h));
+    assert_hit(render_intersect(&w->ctx, &down, &h));
     assert_rgb_near(rgb_gray(0.0f), zero_bounce_radiance(&w->ctx, &down, &h), 0.0f);
 }
 
@@ -81,7 +81,7 @@ static void test_zero_bounce__diffuse_floor_is_black(void **state)
     tiny_world *w = *state;
     ray r;
     hit h;
-    assert_true(tiny_floor_hit(&w->ctx, 3.0f, 1.0f, &r, &h));
+    assert_hit(tiny_floor_hit(&w->ctx, 3.0f, 1.0f, &r, &h));
     rgb L = zero_bounce_radiance(&w->ctx, &r, &h);
     assert_implemented();
     assert_rgb_near(rgb_gray(0.0f), L, 0.0f);
@@ -125,7 +125,7 @@ static void test_direct__occluder_casts_a_full_shadow(void **state)
     ray r;
     hit h;
     r = ray_make(vec3_make(0.2f, 0.5f, 0.1f), vec3_make(0, -1, 0), 0.0f, INFINITY);
-    assert_true(render_intersect(&w->ctx, &r, &h));
+    assert_hit(render_intersect(&w->ctx, &r, &h));
     stats_acc acc[3];
     run_estimator(&w->ctx, direct_importance, &r, &h, SEED + 6, 2000, acc);
     assert_float_near(0.0, acc[0].mean, 0.0);
@@ -142,7 +142,7 @@ static void check_point(const float *att, float px, float pz)
     assert_int_equal(PL_OK, tiny_world_finish(&w));
     ray r;
     hit h;
-    assert_true(tiny_floor_hit(&w.ctx, px, pz, &r, &h));
+    assert_hit(tiny_floor_hit(&w.ctx, px, pz, &r, &h));
     stats_acc acc[3];
     run_estimator(&w.ctx, direct_importance, &r, &h, SEED + 8, 16, acc);
     double expected = tiny_point_over_plane_direct(RHO, 5.0, 1.5, att, px, pz);
