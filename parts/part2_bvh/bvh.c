@@ -7,25 +7,34 @@
 /* BEGIN SOLUTION */
 /* ---- Slab test ------------------------------------------------------------------------------ */
 
-/* A ray prepared for many box tests: 1/d is computed once per ray instead of once per box. */
+/* A ray prepared for many box tests: 1/d, and which face of each slab it meets first, are worked
+ * out once per ray instead of once per box. */
 typedef struct {
-    vec3 o;      /* origin */
-    vec3 inv_d;  /* 1 / d per component: +inf or -inf where d is +0 or -0 */
+    vec3 o;            /* origin */
+    vec3 inv_d;        /* 1 / d per component: +inf or -inf where d is +0 or -0 */
+    int near[3], far[3]; /* per axis, the index into an aabb's six floats (min xyz, max xyz) of the
+                            plane the ray meets first and last; 1/d keeps the sign of d even for
+                            d = -0, so it tells which plane comes first */
 } slab_ray;
 
 static inline slab_ray slab_ray_make(const ray *r)
 {
-    slab_ray s = {r->o, vec3_make(1.0f / r->d.x, 1.0f / r->d.y, 1.0f / r->d.z)};
+    slab_ray s;
+    s.o = r->o;
+    s.inv_d = vec3_make(1.0f / r->d.x, 1.0f / r->d.y, 1.0f / r->d.z);
+    for (int axis = 0; axis < 3; axis++) {
+        bool backwards = vec3_get(s.inv_d, axis) < 0.0f;
+        s.near[axis] = backwards ? 3 + axis : axis;
+        s.far[axis] = backwards ? axis : 3 + axis;
+    }
     return s;
 }
 
-/* Narrows [*t0, *t1] to the t where the ray lies between the planes lo and hi of one axis. */
-static inline void slab_clip_axis(float lo, float hi, float o, float inv_d, float *t0, float *t1)
+/* Narrows [*t0, *t1] to the t where the ray lies between the near and far planes of one axis. */
+static inline void slab_clip_axis(float near, float far, float o, float inv_d, float *t0, float *t1)
 {
-    /* 1/d keeps the sign of d even for d = -0, so it tells which plane the ray meets first. */
-    bool backwards = inv_d < 0.0f;
-    float t_near = ((backwards ? hi : lo) - o) * inv_d;
-    float t_far = ((backwards ? lo : hi) - o) * inv_d;
+    float t_near = (near - o) * inv_d;
+    float t_far = (far - o) * inv_d;
     /* A ray parallel to the planes gives -inf/+inf (between them: no constraint) or an empty
      * interval (outside). Starting exactly on a plane gives 0 * inf = NaN: the ray lies in the
      * face, which counts as inside, so NaN must not narrow anything. Comparisons with NaN are
@@ -34,12 +43,16 @@ static inline void slab_clip_axis(float lo, float hi, float o, float inv_d, floa
     if (t_far < *t1) *t1 = t_far;
 }
 
+/* An aabb is two vec3s of three floats, read here as six floats in a row. */
+_Static_assert(sizeof(aabb) == 6 * sizeof(float), "aabb must be six packed floats");
+
 /* Intersects [*t0, *t1] with the box's three slabs; the result is empty when *t0 > *t1. */
 static inline void slab_clip(const aabb *b, const slab_ray *r, float *t0, float *t1)
 {
-    slab_clip_axis(b->min.x, b->max.x, r->o.x, r->inv_d.x, t0, t1);
-    slab_clip_axis(b->min.y, b->max.y, r->o.y, r->inv_d.y, t0, t1);
-    slab_clip_axis(b->min.z, b->max.z, r->o.z, r->inv_d.z, t0, t1);
+    const float *plane = (const float *)b;  /* min.x min.y min.z max.x max.y max.z: see below */
+    slab_clip_axis(plane[r->near[0]], plane[r->far[0]], r->o.x, r->inv_d.x, t0, t1);
+    slab_clip_axis(plane[r->near[1]], plane[r->far[1]], r->o.y, r->inv_d.y, t0, t1);
+    slab_clip_axis(plane[r->near[2]], plane[r->far[2]], r->o.z, r->inv_d.z, t0, t1);
 }
 /* END SOLUTION */
 
@@ -304,7 +317,7 @@ static inline bool node_hit(const bvh_node *node, const slab_ray *r, float min_t
     float t0 = min_t, t1 = max_t;
     slab_clip(&node->box, r, &t0, &t1);
     *t_enter = t0;
-    return t0 <= t1 + fabsf(t1) * SLAB_EXIT_SLACK;
+    return t0 <= t1 * (1.0f + SLAB_EXIT_SLACK);  /* t1 >= 0 whenever t0 <= t1 can hold */
 }
 
 /* Closest hit (stop_at_first = false) or any hit (true): tasks 2.3 and 2.4 share this traversal. */
