@@ -8,6 +8,7 @@
 #include "colormap.h"
 #include "heatmap.h"
 #include <errno.h>
+#include <pthread.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -30,6 +31,21 @@ static void print_progress(void *user, int done, int total)
             total ? done * 100 / total : 100);
     if (done == total) fprintf(stderr, "\n");
     fflush(stderr);
+}
+
+typedef struct {
+    const char *path;
+    const int *samples;
+    int width, height, spp;
+    pl_diag diag;
+    pl_status status;
+} rate_job;
+
+static void *write_rate_map(void *arg)
+{
+    rate_job *job = arg;
+    job->status = rate_map_write(job->path, job->samples, job->width, job->height, job->spp, &job->diag);
+    return NULL;
 }
 
 static int fail(const char *prog, pl_diag *d, int code)
@@ -85,9 +101,15 @@ static int run(const options *o, const char *prog)
         json = path_with_suffix(o->output, "", ".json");
         rate = path_with_suffix(o->output, "_rate", ".png");
         if (!json || !rate) { fprintf(stderr, "%s: out of memory\n", prog); code = 1; goto done; }
-        if (image_write(&img, o->output, &diag) != PL_OK ||
-            rate_map_write(rate, samples, o->width, o->height, o->spp, &diag) != PL_OK) {
-            code = fail(prog, &diag, 1);
+        /* PNG encoding is slow (stb's deflate): the rate map is encoded on a second thread. */
+        rate_job job = {rate, samples, o->width, o->height, o->spp, pl_diag_default(), PL_OK};
+        pthread_t writer;
+        bool threaded = pthread_create(&writer, NULL, write_rate_map, &job) == 0;
+        if (!threaded) write_rate_map(&job);
+        pl_status image_status = image_write(&img, o->output, &diag);
+        if (threaded) pthread_join(writer, NULL);
+        if (image_status != PL_OK || job.status != PL_OK) {
+            code = fail(prog, image_status != PL_OK ? &diag : &job.diag, 1);
             goto done;
         }
         sidecar_info info = {load_seconds, a.build_seconds, now_seconds() - t1, &stats, o->adaptive ? samples : NULL};
