@@ -8,25 +8,24 @@
 #include <stdlib.h>
 #include <string.h>
 
-int fixture_scene_paths(char paths[][512], int max)
+void fixture_for_each_scene(void (*visit)(const scene *s, const char *path))
 {
     const char *patterns[] = {"scenes/*.dae", "scenes/*/*.dae"};
-    int n = 0;
+    int found = 0;
     for (int p = 0; p < 2; p++) {
         glob_t g;
-        if (glob(patterns[p], 0, NULL, &g) == 0)
-            for (size_t i = 0; i < g.gl_pathc && n < max; i++) snprintf(paths[n++], 512, "%s", g.gl_pathv[i]);
+        if (glob(patterns[p], 0, NULL, &g) != 0) continue;
+        for (size_t i = 0; i < g.gl_pathc; i++, found++) {
+            scene s;
+            pl_diag diag = pl_diag_default();
+            diag.on_warning = NULL;
+            if (dae_load(g.gl_pathv[i], &s, &diag) != PL_OK) fail_msg("%s does not load: %s", g.gl_pathv[i], diag.error);
+            visit(&s, g.gl_pathv[i]);
+            scene_free(&s);
+        }
         globfree(&g);
     }
-    return n;
-}
-
-void fixture_load_scene(const char *path, scene *out)
-{
-    pl_diag diag = pl_diag_default();
-    diag.on_warning = NULL;
-    pl_status st = dae_load(path, out, &diag);
-    if (st != PL_OK) fail_msg("%s does not load: %s", path, diag.error);
+    if (found == 0) fail_msg("no scenes found under scenes/ (run the tests from the repository root)");
 }
 
 static vec3 random_point(rng *g, float half)

@@ -9,14 +9,10 @@
 #include "../../framework/scene.h"
 #include "../../parts/part2_bvh/part2.h"
 
-#define FIXTURE_MAX_SCENES 64
-
-/* The .dae files under scenes/ (one folder deep), sorted; tests run from the repository root.
- * Returns how many were found (at most FIXTURE_MAX_SCENES). */
-int fixture_scene_paths(char paths[][512], int max);
-
-/* Loads path, failing the current test with the loader's message if it does not load. */
-void fixture_load_scene(const char *path, scene *out);
+/* Calls visit on every .dae file under scenes/ (one folder deep), in sorted order, each loaded and
+ * freed afterwards; tests run from the repository root. Fails the current test when there are no
+ * scenes or one does not load (with the loader's message). */
+void fixture_for_each_scene(void (*visit)(const scene *s, const char *path));
 
 /* A soup of n primitives in about [-1, 1]^3 from the seed: triangles small, large, long and thin,
  * axis-aligned (flat boxes), degenerate (collinear, repeated or identical vertices), duplicated,

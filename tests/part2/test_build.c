@@ -19,18 +19,15 @@ static void build_and_check(const scene *s, int max_leaf_size, const char *what)
     if (!ok) fail_msg("%s (max_leaf_size %d): %s", what, max_leaf_size, why);
 }
 
+static void check_invariants_of_scene(const scene *s, const char *path)
+{
+    int leaf_sizes[] = {1, 4};
+    for (int k = 0; k < 2; k++) build_and_check(s, leaf_sizes[k], path);
+}
+
 static void test_bvh_build__invariants_hold_on_every_shipped_scene(void **state)
 {
-    char paths[FIXTURE_MAX_SCENES][512];
-    int n = fixture_scene_paths(paths, FIXTURE_MAX_SCENES);
-    if (n == 0) fail_msg("no scenes found under scenes/ (run the tests from the repository root)");
-    for (int i = 0; i < n; i++) {
-        scene s;
-        fixture_load_scene(paths[i], &s);
-        int leaf_sizes[] = {1, 4};
-        for (int k = 0; k < 2; k++) build_and_check(&s, leaf_sizes[k], paths[i]);
-        scene_free(&s);
-    }
+    fixture_for_each_scene(check_invariants_of_scene);
 }
 
 static void test_bvh_build__invariants_hold_on_random_soups(void **state)

@@ -40,36 +40,33 @@ static pl_status render_normals(const scene *s, bool use_bvh, image *out)
     return st;
 }
 
+static void compare_images_of_scene(const scene *s, const char *path)
+{
+    image with = {0}, without = {0};
+    pl_status st = render_normals(s, true, &with);
+    assert_implemented();
+    if (st != PL_OK) fail_msg("%s: rendering through the BVH failed: %s", path, pl_status_name(st));
+    st = render_normals(s, false, &without);
+    if (st != PL_OK) fail_msg("%s: rendering through the linear scan failed: %s", path, pl_status_name(st));
+
+    int differ = 0, first = -1;
+    for (int p = 0; p < IMAGE_WIDTH * IMAGE_HEIGHT; p++) {
+        rgb a = with.pixels[p], b = without.pixels[p];
+        float d = fmaxf(fabsf(a.r - b.r), fmaxf(fabsf(a.g - b.g), fabsf(a.b - b.b)));
+        if (!(d <= SHARED_EDGE_TOL) && differ++ == 0) first = p;
+    }
+    rgb a = first >= 0 ? with.pixels[first] : rgb_gray(0), b = first >= 0 ? without.pixels[first] : rgb_gray(0);
+    image_free(&with);
+    image_free(&without);
+    if (differ)
+        fail_msg("%s: %d of %d pixels differ; first at column %d, row %d from the top: BVH rgb(%g, %g, %g), "
+                 "linear scan rgb(%g, %g, %g)", path, differ, IMAGE_WIDTH * IMAGE_HEIGHT,
+                 first % IMAGE_WIDTH, first / IMAGE_WIDTH, a.r, a.g, a.b, b.r, b.g, b.b);
+}
+
 static void test_bvh__normal_images_equal_the_linear_scan_on_shipped_scenes(void **state)
 {
-    char paths[FIXTURE_MAX_SCENES][512];
-    int n = fixture_scene_paths(paths, FIXTURE_MAX_SCENES);
-    if (n == 0) fail_msg("no scenes found under scenes/ (run the tests from the repository root)");
-    for (int i = 0; i < n; i++) {
-        scene s;
-        fixture_load_scene(paths[i], &s);
-        image with = {0}, without = {0};
-        pl_status st = render_normals(&s, true, &with);
-        assert_implemented();
-        if (st != PL_OK) fail_msg("%s: rendering through the BVH failed: %s", paths[i], pl_status_name(st));
-        st = render_normals(&s, false, &without);
-        if (st != PL_OK) fail_msg("%s: rendering through the linear scan failed: %s", paths[i], pl_status_name(st));
-
-        int differ = 0, first = -1;
-        for (int p = 0; p < IMAGE_WIDTH * IMAGE_HEIGHT; p++) {
-            rgb a = with.pixels[p], b = without.pixels[p];
-            float d = fmaxf(fabsf(a.r - b.r), fmaxf(fabsf(a.g - b.g), fabsf(a.b - b.b)));
-            if (!(d <= SHARED_EDGE_TOL) && differ++ == 0) first = p;
-        }
-        rgb a = first >= 0 ? with.pixels[first] : rgb_gray(0), b = first >= 0 ? without.pixels[first] : rgb_gray(0);
-        image_free(&with);
-        image_free(&without);
-        scene_free(&s);
-        if (differ)
-            fail_msg("%s: %d of %d pixels differ; first at column %d, row %d from the top: BVH rgb(%g, %g, %g), "
-                     "linear scan rgb(%g, %g, %g)", paths[i], differ, IMAGE_WIDTH * IMAGE_HEIGHT,
-                     first % IMAGE_WIDTH, first / IMAGE_WIDTH, a.r, a.g, a.b, b.r, b.g, b.b);
-    }
+    fixture_for_each_scene(compare_images_of_scene);
 }
 
 static void test_heatmap__colours_visits_and_adds_a_legend(void **state)

@@ -320,17 +320,14 @@ static void check_given_tree(oracle_checks checks)
 static void test_bvh_intersect__matches_linear_scan_on_a_given_tree(void **state) { check_given_tree(CHECK_CLOSEST); }
 static void test_bvh_occluded__matches_linear_scan_on_a_given_tree(void **state) { check_given_tree(CHECK_ANY); }
 
+static void check_scene_if_not_empty(const scene *s, const char *path)
+{
+    if (scene_prim_count(s) > 0) check_scene_against_oracle(s, path);
+}
+
 static void test_bvh_intersect__matches_linear_scan_on_shipped_scenes(void **state)
 {
-    char paths[FIXTURE_MAX_SCENES][512];
-    int n = fixture_scene_paths(paths, FIXTURE_MAX_SCENES);
-    if (n == 0) fail_msg("no scenes found under scenes/ (run the tests from the repository root)");
-    for (int i = 0; i < n; i++) {
-        scene s;
-        fixture_load_scene(paths[i], &s);
-        if (scene_prim_count(&s) > 0) check_scene_against_oracle(&s, paths[i]);
-        scene_free(&s);
-    }
+    fixture_for_each_scene(check_scene_if_not_empty);
 }
 
 static void test_bvh_intersect__matches_linear_scan_on_random_soups(void **state)
