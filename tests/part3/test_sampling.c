@@ -7,6 +7,7 @@
 #include "../common/test.h"
 #include "../common/stats.h"
 #include "../common/mc_assert.h"
+#include "../common/histogram_png.h"
 #include "../../framework/sampler.h"
 #include "../../parts/part3_direct/part3.h"
 #include "part3_alpha.h"
@@ -86,6 +87,12 @@ static void check_sampler(const char *name, dir_sampler sample, dir_pdf pdf, voi
             for (int ip = 0; ip < BINS_PHI; ip++) { o += observed[iz * BINS_PHI + ip]; e += expected[iz * BINS_PHI + ip]; }
             print_error("  [%.1f, %.1f): %8.0f / %8.0f\n", (double)iz / BINS_Z, (double)(iz + 1) / BINS_Z, o, e);
         }
+        char png[256];
+        pl_diag d = pl_diag_default();
+        histogram_png_path(name, png, sizeof png);
+        if (histogram_png_write(png, observed, expected, BINS_Z, BINS_PHI, &d) == PL_OK)
+            print_error("  picture: %s (rows: cos(theta) from 0 at the top to 1; columns: phi from 0 to 2 pi;\n"
+                        "  panels: observed, expected, residual: red = too many samples, blue = too few)\n", png);
     }
     free(observed);
     free(expected);
