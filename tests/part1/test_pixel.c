@@ -9,6 +9,7 @@
 #include <math.h>
 #include <stdio.h>
 #include <string.h>
+#include <sys/stat.h>
 
 #define ALPHA 1e-4
 #define Z_CRIT 3.8906  /* two-sided standard normal quantile for ALPHA */
@@ -146,19 +147,30 @@ static void test_render__normal_image_matches_oracle(void **state)
     assert_implemented();
 
     double tan_h = tan(ctx.camera.hfov * M_PI / 360.0), tan_v = tan(ctx.camera.vfov * M_PI / 360.0);
+    image want_img;
+    assert_int_equal(PL_OK, image_alloc(&want_img, o.width, o.height));
     int wrong = 0, first_x = -1, first_y = -1;
     for (int y = 0; y < o.height; y++)
         for (int x = 0; x < o.width; x++) {
             rgb want = oracle_normal((x + 0.5) / o.width, (y + 0.5) / o.height, tan_h, tan_v);
             rgb got = image_get(&img, x, o.height - 1 - y);
+            image_set(&want_img, x, o.height - 1 - y, want);
             if (fabsf(want.r - got.r) + fabsf(want.g - got.g) + fabsf(want.b - got.b) > 3e-3f) {
                 if (wrong++ == 0) first_x = x, first_y = y;
             }
         }
     /* Silhouette pixels may flip between hit and miss by rounding; a handful at most. */
-    if (wrong > 4)
-        fail_msg("wrong: %d of %d pixels differ from the expected normal image (first at x=%d y=%d from the bottom-left)",
+    if (wrong > 4) {
+        mkdir("build", 0777);
+        mkdir("build/test-output", 0777);
+        pl_diag quiet = pl_diag_default();
+        image_write_png(&img, "build/test-output/part1_normals_yours.png", &quiet);
+        image_write_png(&want_img, "build/test-output/part1_normals_expected.png", &quiet);
+        fail_msg("wrong: %d of %d pixels differ from the expected normal image (first at x=%d y=%d from the bottom-left);\n"
+                 "  pictures: build/test-output/part1_normals_yours.png and build/test-output/part1_normals_expected.png",
                  wrong, o.width * o.height, first_x, first_y);
+    }
+    image_free(&want_img);
     image_free(&img);
     accel_free(&a);
     scene_free(&s);
