@@ -69,8 +69,12 @@ help:
 	@echo "  make test-framework   run the framework's tests"
 	@echo "  make test             run every suite"
 	@echo "  make test SAN=1       the same under AddressSanitizer + UBSan"
-	@echo "  make bench            speed figures (not a test)"
-	@echo "  make clean            remove build/ and bin/"
+	@echo "  make bench            speed figures, not a test (bench-bvh, bench-transport; see bench/RESULTS.md)"
+	@echo "  make figures          every figure the handout asks for, into build/figures/"
+	@echo "instructors:"
+	@echo "  make release-check    cut release/student (solutions -> stubs) and prove it sound"
+	@echo "  make mutants          show each catalogued student bug is caught by its part's tests"
+	@echo "  make clean            remove build/, bin/ and release/"
 	@echo "settings: V=1 (full commands), WERROR=1, SAN=1, OPT=-O0"
 
 $(BIN)/pathtracer: $(BUILD)/framework/main.o $(LIB_OBJ)
@@ -108,7 +112,7 @@ test:
 	 if [ $$fail = 0 ]; then echo "all suites passed"; else echo "some suites FAILED"; exit 1; fi
 
 clean:
-	rm -rf build bin
+	rm -rf build bin release
 
 include $(wildcard tools/*.mk bench/*.mk tests/mutants/*.mk)
 -include $(shell find build -name '*.d' 2>/dev/null)
