@@ -71,9 +71,10 @@ help:
 	@echo "  make test SAN=1       the same under AddressSanitizer + UBSan"
 	@echo "  make bench            speed figures, not a test (bench-bvh, bench-transport; see bench/RESULTS.md)"
 	@echo "  make figures          every figure the handout asks for, into build/figures/"
-	@echo "instructors:"
-	@echo "  make release-check    cut release/student (solutions -> stubs) and prove it sound"
-	@echo "  make mutants          show each catalogued student bug is caught by its part's tests"
+	@if [ -d tests/mutants ]; then \
+	   echo "instructors:"; \
+	   echo "  make release-check    cut release/student (solutions -> stubs) and prove it sound"; \
+	   echo "  make mutants          show each catalogued student bug is caught by its part's tests"; fi
 	@echo "  make clean            remove build/, bin/ and release/"
 	@echo "settings: V=1 (full commands), WERROR=1, SAN=1, OPT=-O0"
 
