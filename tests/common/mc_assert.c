@@ -37,21 +37,17 @@ void mc_run_at(const render_ctx *ctx, mc_estimator est, const char *what, const 
     }
 }
 
+/* radiance_estimate in mc_estimator's shape: it needs no hit, and shrinks a copy of the ray. */
+static rgb estimate_along_ray(const struct render_ctx *ctx, const ray *r, const hit *h, rng *g)
+{
+    ray copy = *r;
+    return radiance_estimate(ctx, &copy, g);
+}
+
 void mc_run_ray(const render_ctx *ctx, const char *what, const ray *r, uint64_t seed, int n,
                 stats_acc out[3], const char *file, int line)
 {
-    for (int c = 0; c < 3; c++) out[c] = stats_acc_make();
-    for (int i = 0; i < n; i++) {
-        rng g = rng_seeded(seed, (uint64_t)i);
-        ray copy = *r;
-        rgb L = radiance_estimate(ctx, &copy, &g);
-        if (pl_todo_count() > 0)
-            check_implemented(file, line);
-        char where[64];
-        snprintf(where, sizeof where, "sample %d (seed 0x%llx)", i, (unsigned long long)seed);
-        mc_check_radiance(L, what, where, file, line);
-        add_sample(out, L);
-    }
+    mc_run_at(ctx, estimate_along_ray, what, r, NULL, seed, n, out, file, line);
 }
 
 void mc_check_mean(const stats_acc *a, double expected, double alpha, const char *what, const char *file, int line)
