@@ -97,33 +97,24 @@ const posText = lines(positions.map((p) => p.map((x) => fmt(x, 6)).join(' ')), 8
 const nrmText = lines(normals.map((n) => unit(n).map((x) => fmt(x, 5)).join(' ')), 8);
 const idxText = lines(cells.map((c) => c.join(' ')), 16);
 
+// One <source> of xyz triples, as Blender writes them.
+const source = (name, text, count) => `        <source id="Bunny-mesh-${name}">
+          <float_array id="Bunny-mesh-${name}-array" count="${count * 3}">
+${text}
+          </float_array>
+          <technique_common>
+            <accessor source="#Bunny-mesh-${name}-array" count="${count}" stride="3">
+              <param name="X" type="float"/>
+              <param name="Y" type="float"/>
+              <param name="Z" type="float"/>
+            </accessor>
+          </technique_common>
+        </source>
+`;
+
 const geometry = `    <geometry id="Bunny-mesh" name="Bunny">
       <mesh>
-        <source id="Bunny-mesh-positions">
-          <float_array id="Bunny-mesh-positions-array" count="${positions.length * 3}">
-${posText}
-          </float_array>
-          <technique_common>
-            <accessor source="#Bunny-mesh-positions-array" count="${positions.length}" stride="3">
-              <param name="X" type="float"/>
-              <param name="Y" type="float"/>
-              <param name="Z" type="float"/>
-            </accessor>
-          </technique_common>
-        </source>
-        <source id="Bunny-mesh-normals">
-          <float_array id="Bunny-mesh-normals-array" count="${normals.length * 3}">
-${nrmText}
-          </float_array>
-          <technique_common>
-            <accessor source="#Bunny-mesh-normals-array" count="${normals.length}" stride="3">
-              <param name="X" type="float"/>
-              <param name="Y" type="float"/>
-              <param name="Z" type="float"/>
-            </accessor>
-          </technique_common>
-        </source>
-        <vertices id="Bunny-mesh-vertices">
+${source('positions', posText, positions.length)}${source('normals', nrmText, normals.length)}        <vertices id="Bunny-mesh-vertices">
           <input semantic="POSITION" source="#Bunny-mesh-positions"/>
           <input semantic="NORMAL" source="#Bunny-mesh-normals"/>
         </vertices>
