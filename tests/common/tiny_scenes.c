@@ -1,5 +1,6 @@
 /* Test machinery: not part of any assignment. */
 #include "tiny_scenes.h"
+#include <stdlib.h>
 #include <string.h>
 #include "../../framework/cli.h"
 
@@ -30,6 +31,27 @@ void tiny_world_free(tiny_world *w)
 {
     accel_free(&w->a);
     scene_free(&w->s);
+}
+
+tiny_world *tiny_world_new(void)
+{
+    tiny_world *w = malloc(sizeof *w);
+    if (w) tiny_world_begin(w);
+    return w;
+}
+
+void tiny_world_destroy(tiny_world *w)
+{
+    if (!w) return;
+    tiny_world_free(w);
+    free(w);
+}
+
+int tiny_world_teardown(void **state)
+{
+    tiny_world_destroy(*state);
+    *state = NULL;
+    return 0;
 }
 
 bool tiny_add_quad(scene *s, vec3 c, vec3 ea, vec3 eb, vec3 facing, int mat)

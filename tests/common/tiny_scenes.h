@@ -25,6 +25,12 @@ pl_status tiny_world_finish(tiny_world *w);
 /* Re-reads w->o into the context (after changing options). */
 void tiny_world_refresh(tiny_world *w);
 void tiny_world_free(tiny_world *w);
+/* A world on the heap (it is large, and must not move), begun; NULL without memory. */
+tiny_world *tiny_world_new(void);
+/* Frees a world from tiny_world_new. NULL-safe. */
+void tiny_world_destroy(tiny_world *w);
+/* cmocka teardown for a group whose setup put a tiny_world_new world in *state. */
+int tiny_world_teardown(void **state);
 
 /* ---- building blocks ----------------------------------------------------------------------- */
 /* A parallelogram of two triangles centred at c with full edges ea, eb, its face normal turned

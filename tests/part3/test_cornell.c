@@ -48,9 +48,8 @@ static void render_blocks(tiny_world *w, bool hemisphere, uint64_t seed, stats_a
 static void test_direct__hemisphere_and_importance_sampling_agree_on_cornell_box(void **state)
 {
     (void)state;
-    tiny_world *w = malloc(sizeof *w);
+    tiny_world *w = tiny_world_new();
     assert_non_null(w);
-    tiny_world_begin(w);
     assert_true(tiny_scene_cornell(&w->s));
     assert_int_equal(PL_OK, tiny_world_finish(w));
     mc_print_seed("cornell -H vs importance", SEED);
@@ -58,8 +57,7 @@ static void test_direct__hemisphere_and_importance_sampling_agree_on_cornell_box
     stats_acc hemi[NB], imp[NB];
     render_blocks(w, true, SEED, hemi);
     render_blocks(w, false, SEED + 1, imp);
-    tiny_world_free(w);
-    free(w);
+    tiny_world_destroy(w);
 
     double alpha_block = stats_sidak(PART3_CHECK_ALPHA, NB);
     int failed = 0;

@@ -26,22 +26,13 @@
 static int emitter_setup(void **state)
 {
     test_setup(state);
-    tiny_world *w = malloc(sizeof *w);
+    tiny_world *w = tiny_world_new();
     if (!w) return -1;
-    tiny_world_begin(w);
     if (!tiny_scene_emitter_over_plane(&w->s, RHO, LE, HALF_X, HALF_Z, HEIGHT) || tiny_world_finish(w) != PL_OK) {
-        free(w);
+        tiny_world_destroy(w);
         return -1;
     }
     *state = w;
-    return 0;
-}
-
-static int world_teardown(void **state)
-{
-    tiny_world *w = *state;
-    tiny_world_free(w);
-    free(w);
     return 0;
 }
 
@@ -168,14 +159,14 @@ static void test_direct_importance__point_light_applies_attenuation(void **state
 int direct_tests(void)
 {
     const struct CMUnitTest tests[] = {
-        cmocka_unit_test_setup_teardown(test_zero_bounce__emitter_is_Le_from_the_front_only, emitter_setup, world_teardown),
-        cmocka_unit_test_setup_teardown(test_zero_bounce__diffuse_floor_is_black, emitter_setup, world_teardown),
-        cmocka_unit_test_setup_teardown(test_direct_importance__matches_form_factor_under_the_emitter, emitter_setup, world_teardown),
-        cmocka_unit_test_setup_teardown(test_direct_importance__matches_form_factor_beside_the_emitter, emitter_setup, world_teardown),
-        cmocka_unit_test_setup_teardown(test_direct_importance__several_light_samples_agree, emitter_setup, world_teardown),
-        cmocka_unit_test_setup_teardown(test_direct_hemisphere__matches_form_factor_under_the_emitter, emitter_setup, world_teardown),
-        cmocka_unit_test_setup_teardown(test_direct_hemisphere__matches_form_factor_beside_the_emitter, emitter_setup, world_teardown),
-        cmocka_unit_test_setup_teardown(test_direct__occluder_casts_a_full_shadow, emitter_setup, world_teardown),
+        cmocka_unit_test_setup_teardown(test_zero_bounce__emitter_is_Le_from_the_front_only, emitter_setup, tiny_world_teardown),
+        cmocka_unit_test_setup_teardown(test_zero_bounce__diffuse_floor_is_black, emitter_setup, tiny_world_teardown),
+        cmocka_unit_test_setup_teardown(test_direct_importance__matches_form_factor_under_the_emitter, emitter_setup, tiny_world_teardown),
+        cmocka_unit_test_setup_teardown(test_direct_importance__matches_form_factor_beside_the_emitter, emitter_setup, tiny_world_teardown),
+        cmocka_unit_test_setup_teardown(test_direct_importance__several_light_samples_agree, emitter_setup, tiny_world_teardown),
+        cmocka_unit_test_setup_teardown(test_direct_hemisphere__matches_form_factor_under_the_emitter, emitter_setup, tiny_world_teardown),
+        cmocka_unit_test_setup_teardown(test_direct_hemisphere__matches_form_factor_beside_the_emitter, emitter_setup, tiny_world_teardown),
+        cmocka_unit_test_setup_teardown(test_direct__occluder_casts_a_full_shadow, emitter_setup, tiny_world_teardown),
         cmocka_unit_test_setup(test_direct_importance__point_light_follows_inverse_square_and_cosine, test_setup),
         cmocka_unit_test_setup(test_direct_importance__point_light_applies_attenuation, test_setup),
     };

@@ -29,22 +29,13 @@
 static int furnace_setup(void **state)
 {
     test_setup(state);
-    tiny_world *w = malloc(sizeof *w);
+    tiny_world *w = tiny_world_new();
     if (!w) return -1;
-    tiny_world_begin(w);
     if (!tiny_scene_furnace(&w->s, (float)RHO, (float)LE) || tiny_world_finish(w) != PL_OK) {
-        free(w);
+        tiny_world_destroy(w);
         return -1;
     }
     *state = w;
-    return 0;
-}
-
-static int furnace_teardown(void **state)
-{
-    tiny_world *w = *state;
-    tiny_world_free(w);
-    free(w);
     return 0;
 }
 
@@ -99,11 +90,11 @@ static void test_furnace__depth_zero_is_emission_only(void **state)
 int furnace_tests(void)
 {
     const struct CMUnitTest tests[] = {
-        cmocka_unit_test_setup_teardown(test_furnace__kth_bounce_alone_is_rho_to_the_k, furnace_setup, furnace_teardown),
-        cmocka_unit_test_setup_teardown(test_furnace__bounces_up_to_m_sum_a_geometric_series, furnace_setup, furnace_teardown),
-        cmocka_unit_test_setup_teardown(test_furnace__deep_paths_converge_to_le_over_one_minus_rho, furnace_setup, furnace_teardown),
-        cmocka_unit_test_setup_teardown(test_furnace__direct_light_by_light_sampling_is_rho_le, furnace_setup, furnace_teardown),
-        cmocka_unit_test_setup_teardown(test_furnace__depth_zero_is_emission_only, furnace_setup, furnace_teardown),
+        cmocka_unit_test_setup_teardown(test_furnace__kth_bounce_alone_is_rho_to_the_k, furnace_setup, tiny_world_teardown),
+        cmocka_unit_test_setup_teardown(test_furnace__bounces_up_to_m_sum_a_geometric_series, furnace_setup, tiny_world_teardown),
+        cmocka_unit_test_setup_teardown(test_furnace__deep_paths_converge_to_le_over_one_minus_rho, furnace_setup, tiny_world_teardown),
+        cmocka_unit_test_setup_teardown(test_furnace__direct_light_by_light_sampling_is_rho_le, furnace_setup, tiny_world_teardown),
+        cmocka_unit_test_setup_teardown(test_furnace__depth_zero_is_emission_only, furnace_setup, tiny_world_teardown),
     };
     return cmocka_run_group_tests_name("part4: the furnace", tests, NULL, NULL);
 }

@@ -74,9 +74,8 @@ typedef struct { stats_acc acc[3]; uint64_t rays; } furnace_run;
 static furnace_run run_furnace(bool roulette, uint64_t seed)
 {
     furnace_run out;
-    tiny_world *w = malloc(sizeof *w);
+    tiny_world *w = tiny_world_new();
     assert_non_null(w);
-    tiny_world_begin(w);
     assert_true(tiny_scene_furnace(&w->s, (float)RHO, (float)LE));
     w->o.max_depth = DEPTH;
     w->o.no_roulette = !roulette;
@@ -88,8 +87,7 @@ static furnace_run run_furnace(bool roulette, uint64_t seed)
     (void)accel_take_ray_count();
     mc_run_ray(&w->ctx, name, &r, seed, N, out.acc, __FILE__, __LINE__);
     out.rays = accel_take_ray_count();
-    tiny_world_free(w);
-    free(w);
+    tiny_world_destroy(w);
     return out;
 }
 
