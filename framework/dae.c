@@ -2,6 +2,7 @@
  * Elements are converted as the visual scene instances them; see dae_internal.h for the modules. */
 #include "dae.h"
 #include "dae_internal.h"
+#include "file.h"
 
 #include <errno.h>
 #include <limits.h>
@@ -265,28 +266,11 @@ pl_status dae_load_memory(const char *xml, size_t len, const char *name, scene *
 pl_status dae_load(const char *path, scene *out, pl_diag *diag)
 {
     memset(out, 0, sizeof *out);
-    FILE *f = fopen(path, "rb");
-    if (!f) return pl_fail(diag, PL_ERR_IO, "%s: cannot open: %s", path, strerror(errno));
-    char *buf = NULL;
-    size_t len = 0, cap = 0;
-    for (;;) {
-        if (len == cap) {
-            cap = cap ? 2 * cap : 1 << 16;
-            char *b = realloc(buf, cap);
-            if (!b) { free(buf); fclose(f); return pl_fail(diag, PL_ERR_NOMEM, "%s: out of memory", path); }
-            buf = b;
-        }
-        size_t got = fread(buf + len, 1, cap - len, f);
-        len += got;
-        if (got == 0) break;
-    }
-    bool failed = ferror(f);
-    fclose(f);
-    if (failed) {
-        free(buf);
-        return pl_fail(diag, PL_ERR_IO, "%s: cannot read: %s", path, strerror(errno));
-    }
-    pl_status st = dae_load_memory(buf, len, path, out, diag);
+    char *buf;
+    size_t len;
+    pl_status st = file_read_all(path, "scene", DAE_MAX_FILE_BYTES, &buf, &len, diag);
+    if (st) return st;
+    st = dae_load_memory(buf, len, path, out, diag);
     free(buf);
     return st;
 }

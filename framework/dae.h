@@ -10,6 +10,10 @@
 #include "scene.h"
 #include "status.h"
 
+/* The largest scene file dae_load reads: CS184's biggest scenes are a few MB, a 1M-triangle
+ * Blender export about 70 MB. Larger files are refused before a byte is read. */
+#define DAE_MAX_FILE_BYTES ((size_t)256 << 20)
+
 /* Loads path into *out (which it initialises). On failure *out is empty and nothing leaks. */
 pl_status dae_load(const char *path, scene *out, pl_diag *diag);
 /* The same from a buffer; name is used in messages. */

@@ -36,30 +36,6 @@ uint8_t tonemap_channel(float v)
     return (uint8_t)(t * 255.0f + 0.5f);
 }
 
-pl_status file_write_atomic(const char *path, const void *data, size_t len, pl_diag *diag)
-{
-    size_t n = strlen(path) + 32;
-    char *tmp = malloc(n);
-    if (!tmp) return pl_fail(diag, PL_ERR_NOMEM, "%s: out of memory", path);
-    snprintf(tmp, n, "%s.tmp.%ld", path, (long)getpid());
-    FILE *f = fopen(tmp, "wb");
-    if (!f) {
-        pl_status s = pl_fail(diag, PL_ERR_IO, "%s: cannot write: %s", path, strerror(errno));
-        free(tmp);
-        return s;
-    }
-    bool ok = fwrite(data, 1, len, f) == len;
-    ok = (fclose(f) == 0) && ok;
-    if (!ok || rename(tmp, path) != 0) {
-        pl_status s = pl_fail(diag, PL_ERR_IO, "%s: cannot write: %s", path, strerror(errno));
-        remove(tmp);
-        free(tmp);
-        return s;
-    }
-    free(tmp);
-    return PL_OK;
-}
-
 /* stb_image_write streams encoded bytes through this callback into a growing buffer. */
 typedef struct { unsigned char *data; size_t len, cap; bool failed; } byte_buffer;
 

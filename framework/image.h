@@ -8,6 +8,7 @@
 #include <stdint.h>
 #include "vec.h"
 #include "status.h"
+#include "file.h"
 
 typedef struct {
     int width, height;
@@ -32,8 +33,5 @@ pl_status image_write(const image *img, const char *path, pl_diag *diag);
 pl_status image_write_png_rgb8(const uint8_t *rgb8, int width, int height, const char *path, pl_diag *diag);
 /* Reads a .hdr (linear values) or a .png (8-bit values / 255, no inverse tone curve). */
 pl_status image_read(const char *path, image *out, pl_diag *diag);
-
-/* Writes len bytes to path through a temporary file and rename: all or nothing. */
-pl_status file_write_atomic(const char *path, const void *data, size_t len, pl_diag *diag);
 
 #endif

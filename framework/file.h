@@ -1,0 +1,27 @@
+/* Files: the one place that reads a whole input file and writes an output file.
+ *
+ * Inputs are untrusted: a scene or camera file may be a FIFO, /dev/zero, or gigabytes long. So a
+ * reader refuses anything that is not a regular file, and anything over its caller's size cap,
+ * before reading a byte. Outputs go through a temporary file in the target folder and a rename, so
+ * a killed render never leaves a half-written file where the output should be. */
+#ifndef PL_FILE_H
+#define PL_FILE_H
+
+#include <stddef.h>
+#include "status.h"
+
+/* ---- reading --------------------------------------------------------------------------------- */
+
+/* Reads the regular file at path, at most max_bytes long, into a new NUL-terminated buffer
+ * (*data, free with free(); *len excludes the NUL). `what` names the file's role in messages
+ * ("scene", "camera settings"). Refuses directories, FIFOs, devices and files over the cap with
+ * PL_ERR_IO and a message naming the path and the limit. */
+pl_status file_read_all(const char *path, const char *what, size_t max_bytes, char **data, size_t *len,
+                        pl_diag *diag);
+
+/* ---- writing --------------------------------------------------------------------------------- */
+
+/* Writes len bytes to path through a temporary file and rename: all or nothing. */
+pl_status file_write_atomic(const char *path, const void *data, size_t len, pl_diag *diag);
+
+#endif
