@@ -8,7 +8,7 @@ WERROR  ?= 0   # 1: warnings are errors (CI sets it)
 V       ?= 0   # 1: print whole commands instead of "CC file.c"
 PKGS    := libxml-2.0 stb
 TPKGS   := cmocka
-SUITES  := framework part1 part2 part3 part4 part5
+SUITES  := framework grader part1 part2 part3 part4 part5
 
 # ---- flags ------------------------------------------------------------------------------------
 WARN     := -Wall -Wextra -Wpedantic -Wshadow -Wno-unused-parameter
