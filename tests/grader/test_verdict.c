@@ -133,9 +133,10 @@ static void test_verdict__local_bias_fails_at_its_block(void **state)
     assert_false(v.pass);
     assert_true(v.worst_t < 0);
     if (v.worst_block_x >= 0) {
-        int x0 = v.worst_block_x * W / v.blocks_x, y0 = v.worst_block_y * H / v.blocks_y;
-        assert_in_range(x0, 100 - W / v.blocks_x, 130);
-        assert_in_range(y0, 20 - H / v.blocks_y, 50);
+        /* the block [x0, x1) x [y0, y1) overlaps the patch (100, 130) x (20, 50) */
+        int x0 = v.worst_block_x * W / v.blocks_x, x1 = (v.worst_block_x + 1) * W / v.blocks_x;
+        int y0 = v.worst_block_y * H / v.blocks_y, y1 = (v.worst_block_y + 1) * H / v.blocks_y;
+        assert_true(x0 < 130 && x1 > 100 && y0 < 50 && y1 > 20);
     }
     verdict_free(&v);
     free(cand);
