@@ -1,0 +1,128 @@
+/* Grader machinery: not part of any assignment.
+ * bin/grade: grades a submission part by part (DESIGN.md section 8). For each part N it builds a
+ * tree from the submission's part N and the solution's other parts, runs part N's unit-test suite
+ * (verdicts read from cmocka's XML files, never from the console) and renders part N's image cases,
+ * each judged against its reference by tools/verdict.c. In a student's own tree (--cumulative) it
+ * builds the tree as it is and grades the public cases, so a student sees the verdicts first.
+ *
+ * Modules: grade_cases.c (grading/cases.json), grade_run.c (children with limits and timeouts),
+ * grade_part.c (build, suite, cases of one part), grade_report.c (table, results.json, HTML). */
+#ifndef PL_GRADE_H
+#define PL_GRADE_H
+
+#include <stdbool.h>
+#include <stdint.h>
+#include <stdio.h>
+#include "../framework/status.h"
+#include "verdict.h"
+
+#define GRADE_MAX_CASES 16
+#define GRADE_MAX_FLAGS 16
+#define GRADE_NUM_PARTS 5
+
+/* ---- cases (grading/cases.json) ------------------------------------------------------------ */
+
+typedef struct {
+    char name[64];
+    char scene[256];                    /* relative to the repository root */
+    char *flags[GRADE_MAX_FLAGS];       /* renderer flags, owned */
+    int num_flags;
+    int width, height, samples;         /* the candidate's render */
+    int reference_samples;              /* the reference: one render at this many samples ... */
+    int reference_runs;                 /* ... or the mean of this many runs (adaptive cases) */
+    double points;
+    bool hidden;
+    bool work_per_ray, sample_counts;   /* also judge BVH work per ray / per-pixel sample counts */
+    char shows[160];                    /* what the case makes visible, for the report */
+} grade_case;
+
+typedef struct {
+    int part;                           /* 1..5 */
+    double unit_points;
+    grade_case cases[GRADE_MAX_CASES];
+    int num_cases;
+} grade_part_spec;
+
+typedef struct {
+    double family_alpha;
+    grade_part_spec parts[GRADE_NUM_PARTS];
+} grade_spec;
+
+pl_status grade_spec_load(const char *path, grade_spec *out, pl_diag *diag);
+void grade_spec_free(grade_spec *s);
+
+/* ---- results ------------------------------------------------------------------------------- */
+
+typedef struct {
+    const grade_case *spec;
+    bool ran;                  /* the render finished and its file was read */
+    char reason[256];          /* why it did not run or failed, when it did not pass */
+    verdict v;                 /* the image verdict (when ran) */
+    double score;
+    char images[3][320];       /* candidate, reference, z-map PNGs, relative to the report folder */
+} grade_case_result;
+
+typedef struct {
+    int part;
+    bool built;
+    char build_log[320];       /* path of the compiler's output */
+    int tests_run, tests_failed;
+    char suite_reason[256];    /* why the suite scored zero (crash, timeout, no results), or "" */
+    char failures[2048];       /* names and messages of the failed tests, Markdown */
+    double unit_score, unit_max;
+    grade_case_result cases[GRADE_MAX_CASES];
+    int num_cases;
+    double score, max_score;
+} grade_part_result;
+
+typedef struct {
+    uint64_t seed;             /* drawn at grading time, recorded */
+    double seconds;
+    grade_part_result parts[GRADE_NUM_PARTS];
+    int num_parts;
+} grade_result;
+
+/* ---- running children ---------------------------------------------------------------------- */
+
+typedef struct {
+    double wall_seconds;       /* kill the whole process group after this */
+    const char *cwd;           /* run in this folder */
+    const char *log_path;      /* stdout and stderr go here, truncated at log_max bytes */
+    long log_max;
+    char *const *env;          /* extra "NAME=value" entries, NULL-terminated, or NULL */
+} grade_run_opts;
+
+typedef struct {
+    bool exited;               /* ended by exit(), not by a signal or the timeout */
+    int status;                /* exit status when exited, else the signal */
+    bool timed_out;
+    double seconds;
+} grade_run_result;
+
+/* Runs argv as a child in its own process group; never reads what it prints except into the log. */
+grade_run_result grade_run(char *const argv[], const grade_run_opts *o);
+/* A one-line reason for a child that did not exit normally ("killed by signal 11", "timed out"). */
+void grade_run_describe(const grade_run_result *r, char *out, size_t size);
+
+/* ---- one part -------------------------------------------------------------------------------- */
+
+typedef struct {
+    const char *root;          /* the solution's (instructor's) tree, or the student's tree */
+    const char *submission;    /* a folder holding the submission's parts/, or NULL (cumulative) */
+    const char *work;          /* scratch: build trees, renders, logs */
+    const char *report;        /* the report folder (images and index.html) */
+    bool public_only;
+    uint64_t seed;
+    int threads;
+} grade_env;
+
+/* Builds (or reuses) the tree for part p, runs its suite and cases, and fills r. */
+void grade_part(const grade_env *env, const grade_spec *spec, const grade_part_spec *p, grade_part_result *r);
+
+/* ---- reports --------------------------------------------------------------------------------- */
+
+void grade_print_table(const grade_result *r, FILE *out);
+pl_status grade_write_results_json(const grade_result *r, const char *path, pl_diag *diag);
+pl_status grade_write_html(const grade_result *r, const char *folder, pl_diag *diag);
+
+#endif

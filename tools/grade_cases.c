@@ -1,0 +1,90 @@
+/* Grader machinery: not part of any assignment. Reads grading/cases.json (jansson). */
+#include "grade.h"
+#include <jansson.h>
+#include <stdlib.h>
+#include <string.h>
+
+/* Every field is checked, with the case named: an instructor's typo must not become a silent 0. */
+static pl_status read_case(const char *path, int part, json_t *j, grade_case *c, pl_diag *diag)
+{
+    memset(c, 0, sizeof *c);
+    const char *name = json_string_value(json_object_get(j, "name"));
+    if (!name || strlen(name) >= sizeof c->name || strspn(name, "abcdefghijklmnopqrstuvwxyz0123456789_") != strlen(name))
+        return pl_fail(diag, PL_ERR_PARSE, "%s: part %d: a case needs a \"name\" of [a-z0-9_], under %zu characters",
+                       path, part, sizeof c->name);
+    snprintf(c->name, sizeof c->name, "%s", name);
+    const char *scene = json_string_value(json_object_get(j, "scene"));
+    const char *vis = json_string_value(json_object_get(j, "visibility"));
+    json_t *res = json_object_get(j, "resolution"), *flags = json_object_get(j, "flags");
+    if (!scene || strlen(scene) >= sizeof c->scene || !json_is_array(res) || json_array_size(res) != 2 ||
+        !json_is_array(flags) || json_array_size(flags) > GRADE_MAX_FLAGS || !vis ||
+        (strcmp(vis, "public") && strcmp(vis, "hidden")))
+        return pl_fail(diag, PL_ERR_PARSE,
+                       "%s: case %s: expected \"scene\", \"flags\" (at most %d strings), \"resolution\" [w, h] "
+                       "and \"visibility\" public|hidden", path, c->name, GRADE_MAX_FLAGS);
+    snprintf(c->scene, sizeof c->scene, "%s", scene);
+    c->hidden = !strcmp(vis, "hidden");
+    c->width = (int)json_integer_value(json_array_get(res, 0));
+    c->height = (int)json_integer_value(json_array_get(res, 1));
+    c->samples = (int)json_integer_value(json_object_get(j, "samples"));
+    c->reference_samples = (int)json_integer_value(json_object_get(j, "reference_samples"));
+    c->reference_runs = (int)json_integer_value(json_object_get(j, "reference_runs"));
+    c->points = json_number_value(json_object_get(j, "points"));
+    c->work_per_ray = json_is_true(json_object_get(j, "work_per_ray"));
+    c->sample_counts = json_is_true(json_object_get(j, "sample_counts"));
+    const char *shows = json_string_value(json_object_get(j, "shows"));
+    snprintf(c->shows, sizeof c->shows, "%s", shows ? shows : "");
+    if (c->width < 1 || c->height < 1 || c->width > 4096 || c->height > 4096 || c->samples < 1 || c->points < 0 ||
+        (c->reference_samples < 1) == (c->reference_runs < 1))
+        return pl_fail(diag, PL_ERR_PARSE,
+                       "%s: case %s: expected a resolution in 1..4096, samples >= 1, points >= 0, and exactly one "
+                       "of reference_samples, reference_runs", path, c->name);
+    size_t i;
+    json_t *f;
+    json_array_foreach(flags, i, f) {
+        const char *s = json_string_value(f);
+        if (!s) return pl_fail(diag, PL_ERR_PARSE, "%s: case %s: flag %zu is not a string", path, c->name, i + 1);
+        if (!(c->flags[c->num_flags++] = strdup(s))) return pl_fail(diag, PL_ERR_NOMEM, "out of memory");
+    }
+    return PL_OK;
+}
+
+pl_status grade_spec_load(const char *path, grade_spec *out, pl_diag *diag)
+{
+    memset(out, 0, sizeof *out);
+    json_error_t err;
+    json_t *root = json_load_file(path, JSON_REJECT_DUPLICATES, &err);
+    if (!root) return pl_fail(diag, PL_ERR_PARSE, "%s:%d: %s", path, err.line, err.text);
+    pl_status st = PL_OK;
+    json_t *parts = json_object_get(root, "parts");
+    out->family_alpha = json_number_value(json_object_get(root, "family_alpha"));
+    if (!(out->family_alpha > 0 && out->family_alpha < 0.1) || !json_is_array(parts) ||
+        json_array_size(parts) != GRADE_NUM_PARTS)
+        st = pl_fail(diag, PL_ERR_PARSE, "%s: expected \"family_alpha\" in (0, 0.1) and \"parts\": %d entries",
+                     path, GRADE_NUM_PARTS);
+    for (int k = 0; !st && k < GRADE_NUM_PARTS; k++) {
+        json_t *pj = json_array_get(parts, (size_t)k), *cases = json_object_get(pj, "cases");
+        grade_part_spec *p = &out->parts[k];
+        p->part = (int)json_integer_value(json_object_get(pj, "part"));
+        p->unit_points = json_number_value(json_object_get(pj, "unit_points"));
+        if (p->part != k + 1 || !json_is_array(cases) || json_array_size(cases) > GRADE_MAX_CASES) {
+            st = pl_fail(diag, PL_ERR_PARSE, "%s: parts[%d]: expected \"part\": %d and at most %d \"cases\"", path, k,
+                         k + 1, GRADE_MAX_CASES);
+            break;
+        }
+        for (size_t i = 0; !st && i < json_array_size(cases); i++)
+            st = read_case(path, p->part, json_array_get(cases, i), &p->cases[p->num_cases++], diag);
+    }
+    json_decref(root);
+    if (st) grade_spec_free(out);
+    return st;
+}
+
+void grade_spec_free(grade_spec *s)
+{
+    if (!s) return;
+    for (int k = 0; k < GRADE_NUM_PARTS; k++)
+        for (int i = 0; i < s->parts[k].num_cases; i++)
+            for (int f = 0; f < s->parts[k].cases[i].num_flags; f++) free(s->parts[k].cases[i].flags[f]);
+    memset(s, 0, sizeof *s);
+}

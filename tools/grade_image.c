@@ -1,0 +1,113 @@
+/* Grader machinery: not part of any assignment. One image case. */
+#include "grade_image.h"
+#include "../framework/image.h"
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#define RENDER_SECONDS 120
+#define LOG_MAX (256 * 1024)
+#define Z_SCALE 5.0f  /* the z-map saturates at |t| = 5 */
+
+/* The mean image of an EXR the renderer wrote: R, G, B, top row first. */
+static pl_status read_mean(const char *path, image *out, pl_diag *diag)
+{
+    return image_read(path, out, diag);
+}
+
+/* The signed t of every block, blue below the reference, red above, white at 0, at image size. */
+static pl_status write_z_map(const verdict *v, int width, int height, const char *path, pl_diag *diag)
+{
+    uint8_t *px = malloc((size_t)width * height * 3);
+    if (!px) return pl_fail(diag, PL_ERR_NOMEM, "out of memory");
+    for (int y = 0; y < height; y++)
+        for (int x = 0; x < width; x++) {
+            int bx = (int)((long)x * v->blocks_x / width), by = (int)((long)y * v->blocks_y / height);
+            float t = 0.0f;  /* the channel with the largest |t| */
+            for (int ch = 0; ch < 3; ch++) {
+                float tc = v->t[((long)by * v->blocks_x + bx) * 3 + ch];
+                if (fabsf(tc) > fabsf(t)) t = tc;
+            }
+            float a = fminf(fabsf(t) / Z_SCALE, 1.0f);
+            uint8_t fade = (uint8_t)(255.0f * (1.0f - a) + 0.5f);
+            uint8_t *p = px + 3 * ((long)y * width + x);
+            p[0] = t > 0 ? 255 : fade;
+            p[1] = fade;
+            p[2] = t < 0 ? 255 : fade;
+        }
+    pl_status st = image_write_png_rgb8(px, width, height, path, diag);
+    free(px);
+    return st;
+}
+
+void grade_image_case(const grade_env *env, const grade_spec *spec, const char *tree, int part, grade_case_result *c)
+{
+    const grade_case *k = c->spec;
+    char out[4096], log[4096], bin[4096], scene[4096], ref[4096], seed[32], res_w[16], res_h[16], spp[16], thr[16];
+    snprintf(out, sizeof out, "%s/part%d/%s.exr", env->work, part, k->name);
+    snprintf(log, sizeof log, "%s/part%d/%s.log", env->work, part, k->name);
+    snprintf(bin, sizeof bin, "%s/bin/pathtracer", tree);
+    snprintf(scene, sizeof scene, "%s/%s", env->root, k->scene);
+    snprintf(ref, sizeof ref, "%s/reference_images/part%d/%s.exr", env->root, part, k->name);
+    snprintf(seed, sizeof seed, "%llu", (unsigned long long)env->seed);
+    snprintf(res_w, sizeof res_w, "%d", k->width);
+    snprintf(res_h, sizeof res_h, "%d", k->height);
+    snprintf(spp, sizeof spp, "%d", k->samples);
+    snprintf(thr, sizeof thr, "%d", env->threads);
+
+    /* The render, in a child: the student's code never runs in the grader's process. */
+    char *argv[GRADE_MAX_FLAGS + 20];
+    int n = 0;
+    argv[n++] = bin;
+    for (int f = 0; f < k->num_flags; f++) argv[n++] = k->flags[f];
+    char *fixed[] = {"-r", res_w, res_h, "-s", spp, "--seed", seed, "-t", thr, "-q", "-f", out, scene, NULL};
+    for (char **f = fixed; *f; f++) argv[n++] = *f;
+    argv[n] = NULL;
+    remove(out);
+    grade_run_opts o = {RENDER_SECONDS, tree, log, LOG_MAX, NULL};
+    grade_run_result rr = grade_run(argv, &o);
+    if (!rr.exited || rr.status != 0) {
+        char why[128];
+        grade_run_describe(&rr, why, sizeof why);
+        snprintf(c->reason, sizeof c->reason, "the render %s (its output: %s)", why, log);
+        return;
+    }
+
+    /* The verdict, from the two files, in this process. */
+    image cand = {0}, refimg = {0};
+    pl_diag diag = pl_diag_default();
+    if (read_mean(ref, &refimg, &diag) != PL_OK) {
+        snprintf(c->reason, sizeof c->reason, "no reference: %s (run make references)", diag.error);
+        return;
+    }
+    if (read_mean(out, &cand, &diag) != PL_OK) {
+        snprintf(c->reason, sizeof c->reason, "the render wrote no readable image: %s", diag.error);
+        image_free(&refimg);
+        return;
+    }
+    verdict_image vc = {cand.width, cand.height, (const float *)cand.pixels};
+    verdict_image vr = {refimg.width, refimg.height, (const float *)refimg.pixels};
+    verdict_params vp = verdict_params_default(k->samples);
+    vp.family_alpha = spec->family_alpha;
+    if (verdict_compute(&vc, &vr, &vp, &c->v, &diag) != PL_OK) {
+        snprintf(c->reason, sizeof c->reason, "%s", diag.error);
+    }
+    else {
+        c->ran = true;
+        c->score = c->v.pass ? k->points : 0.0;
+        /* Pictures for the report: candidate, reference, z-map. */
+        static const char *const kinds[3] = {"candidate", "reference", "z"};
+        for (int i = 0; i < 3; i++) {
+            char path[4096];
+            snprintf(c->images[i], sizeof c->images[i], "part%d_%s_%s.png", part, k->name, kinds[i]);
+            snprintf(path, sizeof path, "%s/%s", env->report, c->images[i]);
+            pl_status st = i == 0 ? image_write_png(&cand, path, &diag)
+                         : i == 1 ? image_write_png(&refimg, path, &diag)
+                                  : write_z_map(&c->v, cand.width, cand.height, path, &diag);
+            if (st != PL_OK) c->images[i][0] = '\0';
+        }
+    }
+    image_free(&cand);
+    image_free(&refimg);
+}

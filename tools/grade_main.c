@@ -1,0 +1,104 @@
+/* Grader machinery: not part of any assignment.
+ * bin/grade [--submission DIR] [--public] [--out DIR] [--seed N] [--threads N] [--parts 1,3]
+ *   --submission DIR  grade DIR/parts/ part by part, each among the solution's other parts (autograder);
+ *                     without it, grade this tree as it is, public cases only (a student's make grade)
+ *   --out DIR         where results.json, the report (DIR/report/index.html) and scratch go (grade-out)
+ * Exit status: 0 when every graded part got full marks, 1 otherwise, 2 for bad arguments. */
+#include "grade.h"
+#include <errno.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <sys/random.h>
+#include <sys/stat.h>
+#include <time.h>
+#include <unistd.h>
+
+static double now(void)
+{
+    struct timespec ts;
+    clock_gettime(CLOCK_MONOTONIC, &ts);
+    return (double)ts.tv_sec + ts.tv_nsec * 1e-9;
+}
+
+static int usage(const char *msg)
+{
+    fprintf(stderr, "grade: %s\nusage: grade [--submission DIR] [--public] [--out DIR] [--seed N] [--threads N] "
+                    "[--parts 1,2,...]\n", msg);
+    return 2;
+}
+
+/* The grading seed: fresh from the kernel unless given, and recorded in every output. */
+static uint64_t fresh_seed(void)
+{
+    uint64_t s = 0;
+    if (getrandom(&s, sizeof s, 0) != (ssize_t)sizeof s) s = (uint64_t)time(NULL) * 2654435761u;
+    return s % 1000000000000ull;
+}
+
+static bool make_dir(const char *path)
+{
+    return mkdir(path, 0755) == 0 || errno == EEXIST;
+}
+
+int main(int argc, char **argv)
+{
+    const char *submission = NULL, *out = "grade-out", *parts = "1,2,3,4,5";
+    bool public_only = false, seed_given = false;
+    uint64_t seed = 0;
+    int threads = 2;
+    for (int i = 1; i < argc; i++) {
+        const char *a = argv[i], *v = i + 1 < argc ? argv[i + 1] : NULL;
+        if (!strcmp(a, "--public")) public_only = true;
+        else if (!v) return usage("missing value");
+        else if (!strcmp(a, "--submission")) submission = argv[++i];
+        else if (!strcmp(a, "--out")) out = argv[++i];
+        else if (!strcmp(a, "--parts")) parts = argv[++i];
+        else if (!strcmp(a, "--seed")) { seed = strtoull(argv[++i], NULL, 10); seed_given = true; }
+        else if (!strcmp(a, "--threads")) threads = atoi(argv[++i]);
+        else return usage("unknown option");
+    }
+    if (threads < 1 || threads > 64) return usage("--threads: expected 1..64");
+    if (!submission) public_only = true;  /* a student's own tree has no hidden cases */
+
+    char root[4096], outdir[4096], work[4096], report[4096], json[4200];
+    if (!getcwd(root, sizeof root)) return usage("cannot read the current folder");
+    if (!make_dir(out) || !realpath(out, outdir)) return usage("--out: cannot create the folder");
+    snprintf(work, sizeof work, "%s/work", outdir);
+    snprintf(report, sizeof report, "%s/report", outdir);
+    if (!make_dir(work) || !make_dir(report)) return usage("--out: cannot create its work/ and report/ folders");
+    char subdir[4096];
+    if (submission && !realpath(submission, subdir)) return usage("--submission: no such folder");
+
+    pl_diag diag = pl_diag_default();
+    grade_spec spec;
+    if (grade_spec_load("grading/cases.json", &spec, &diag) != PL_OK) {
+        fprintf(stderr, "grade: %s\n", diag.error);
+        return 2;
+    }
+    grade_result result;
+    memset(&result, 0, sizeof result);
+    result.seed = seed_given ? seed : fresh_seed();
+    grade_env env = {root, submission ? subdir : NULL, work, report, public_only, result.seed, threads};
+    double t0 = now();
+    for (int k = 0; k < GRADE_NUM_PARTS; k++) {
+        char digit[2] = {(char)('1' + k), 0};
+        if (!strstr(parts, digit)) continue;
+        fprintf(stderr, "grade: part %d ...\n", k + 1);
+        grade_part(&env, &spec, &spec.parts[k], &result.parts[result.num_parts++]);
+        result.seconds = now() - t0;
+    }
+    result.seconds = now() - t0;
+
+    grade_print_table(&result, stdout);
+    snprintf(json, sizeof json, "%s/results.json", outdir);
+    int code = 0;
+    if (grade_write_results_json(&result, json, &diag) != PL_OK || grade_write_html(&result, report, &diag) != PL_OK) {
+        fprintf(stderr, "grade: %s\n", diag.error);
+        code = 1;
+    }
+    printf("results: %s\nreport:  %s/index.html\n", json, report);
+    for (int i = 0; i < result.num_parts; i++) code |= result.parts[i].score < result.parts[i].max_score;
+    grade_spec_free(&spec);
+    return code;
+}

@@ -1,0 +1,193 @@
+/* Grader machinery: not part of any assignment. The three outputs of one grading run: a terminal
+ * table, results.json in Gradescope's format, and a static HTML report. */
+#include "grade.h"
+#include "../framework/file.h"
+#include <jansson.h>
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+static const char *const channel_names[3] = {"red", "green", "blue"};
+
+/* One case's verdict in words (Markdown): the same text in results.json and the HTML report. */
+static void case_text(const grade_case_result *c, char *out, size_t size)
+{
+    const verdict *v = &c->v;
+    if (!c->ran) {
+        snprintf(out, size, "**did not run**: %s", c->reason);
+        return;
+    }
+    int len = snprintf(out, size, "%s. p-value %.3g (fails below the case's alpha), relMSE %.4f, mean ratio "
+                       "red %.3f green %.3f blue %.3f.",
+                       v->pass ? "**matches the reference**" : "**differs from the reference**", v->p_value,
+                       v->rel_mse, v->ratio[0], v->ratio[1], v->ratio[2]);
+    if (len < 0 || (size_t)len >= size) return;
+    if (v->bad_pixels)
+        len += snprintf(out + len, size - len, " %ld pixels are NaN, infinite or negative; the first at x=%d y=%d "
+                        "(from the bottom-left).", v->bad_pixels, v->bad_x, v->bad_y);
+    else if (!v->pass && v->worst_block_x >= 0)
+        len += snprintf(out + len, size - len, " Most different: the %s channel of block (%d, %d) from the top-left "
+                        "(t = %+.1f: %s than the reference).", channel_names[v->worst_channel], v->worst_block_x,
+                        v->worst_block_y, v->worst_t, v->worst_t > 0 ? "brighter" : "darker");
+    else if (!v->pass)
+        len += snprintf(out + len, size - len, " The whole image's %s channel is %s than the reference (t = %+.1f).",
+                        channel_names[v->worst_channel], v->worst_t > 0 ? "brighter" : "darker", v->worst_t);
+    if (!v->pass && v->hint[0] && (size_t)len < size) snprintf(out + len, size - len, " Hint: %s.", v->hint);
+}
+
+void grade_print_table(const grade_result *r, FILE *out)
+{
+    double total = 0, max = 0;
+    fprintf(out, "%-5s  %-12s  %-24s  %s\n", "part", "unit tests", "image cases", "score");
+    for (int i = 0; i < r->num_parts; i++) {
+        const grade_part_result *p = &r->parts[i];
+        int passed = 0;
+        for (int k = 0; k < p->num_cases; k++) passed += p->cases[k].ran && p->cases[k].v.pass;
+        char unit[32];
+        if (p->suite_reason[0]) snprintf(unit, sizeof unit, "0 (see report)");
+        else snprintf(unit, sizeof unit, "%d/%d passed", p->tests_run - p->tests_failed, p->tests_run);
+        fprintf(out, "%-5d  %-12s  %2d/%-2d matched            %5.1f / %.1f\n", p->part, unit, passed, p->num_cases,
+                p->score, p->max_score);
+        total += p->score;
+        max += p->max_score;
+    }
+    fprintf(out, "total%52.1f / %.1f   (seed %llu, %.0f s)\n", total, max, (unsigned long long)r->seed, r->seconds);
+}
+
+/* ---- results.json: Gradescope's format ------------------------------------------------------- */
+
+static json_t *test_entry(const char *name, double score, double max, bool passed, const char *output, bool hidden)
+{
+    return json_pack("{s:s, s:f, s:f, s:s, s:s, s:s, s:s}", "name", name, "score", score, "max_score", max, "status",
+                     passed ? "passed" : "failed", "output", output, "output_format", "md", "visibility",
+                     hidden ? "after_published" : "visible");
+}
+
+pl_status grade_write_results_json(const grade_result *r, const char *path, pl_diag *diag)
+{
+    json_t *tests = json_array();
+    double total = 0;
+    for (int i = 0; i < r->num_parts; i++) {
+        const grade_part_result *p = &r->parts[i];
+        char name[128], text[3072];
+        total += p->score;
+        snprintf(name, sizeof name, "Part %d: unit tests", p->part);
+        if (p->suite_reason[0])
+            snprintf(text, sizeof text, "**0 points**: %s.%s%s", p->suite_reason, p->built ? "" : " Compiler output: ",
+                     p->built ? "" : p->build_log);
+        else
+            snprintf(text, sizeof text, "%d of %d tests passed.\n\n%s", p->tests_run - p->tests_failed, p->tests_run,
+                     p->failures);
+        json_array_append_new(tests, test_entry(name, p->unit_score, p->unit_max,
+                                                !p->suite_reason[0] && p->tests_failed == 0, text, false));
+        for (int k = 0; k < p->num_cases; k++) {
+            const grade_case_result *c = &p->cases[k];
+            snprintf(name, sizeof name, "Part %d: image %s%s", p->part, c->spec->name, c->spec->hidden ? " (hidden)" : "");
+            case_text(c, text, sizeof text);
+            json_array_append_new(tests, test_entry(name, c->score, c->spec->points, c->ran && c->v.pass, text,
+                                                    c->spec->hidden));
+        }
+    }
+    char summary[128];
+    snprintf(summary, sizeof summary, "pathlab grader, seed %llu", (unsigned long long)r->seed);
+    json_t *root = json_pack("{s:f, s:f, s:s, s:o}", "score", total, "execution_time", r->seconds, "output", summary,
+                             "tests", tests);
+    char *text = root ? json_dumps(root, JSON_INDENT(2)) : NULL;
+    json_decref(root);
+    if (!text) return pl_fail(diag, PL_ERR_NOMEM, "%s: out of memory", path);
+    pl_status st = file_write_atomic(path, text, strlen(text), diag);
+    free(text);
+    return st;
+}
+
+/* ---- the HTML report: one page, a row per case with its three pictures ----------------------- */
+
+static void html_escape(FILE *f, const char *s)
+{
+    for (; *s; s++) {
+        if (*s == '<') fputs("&lt;", f);
+        else if (*s == '>') fputs("&gt;", f);
+        else if (*s == '&') fputs("&amp;", f);
+        else if (*s == '"') fputs("&quot;", f);
+        else fputc(*s, f);
+    }
+}
+
+pl_status grade_write_html(const grade_result *r, const char *folder, pl_diag *diag)
+{
+    char path[4096];
+    snprintf(path, sizeof path, "%s/index.html", folder);
+    FILE *f = fopen(path, "w");
+    if (!f) return pl_fail(diag, PL_ERR_IO, "%s: cannot write", path);
+    fprintf(f, "<!doctype html>\n<html><head><meta charset=\"utf-8\"><title>pathlab grade</title>\n<style>\n"
+               "body{font:15px/1.45 system-ui,sans-serif;margin:24px;color:#222;max-width:1200px}\n"
+               "table.sum td,table.sum th{padding:4px 12px;border-bottom:1px solid #ddd;text-align:left}\n"
+               ".pass{color:#17702b;font-weight:600}.fail{color:#b3261e;font-weight:600}\n"
+               ".case{border:1px solid #ddd;border-radius:6px;padding:12px;margin:12px 0}\n"
+               ".imgs{display:flex;gap:12px}.imgs figure{margin:0}.imgs img{width:320px;image-rendering:pixelated;"
+               "border:1px solid #ccc}\nfigcaption{font-size:13px;color:#555}\n"
+               ".scale{display:inline-block;width:160px;height:10px;background:linear-gradient(90deg,#00f,#fff,#f00);"
+               "vertical-align:middle}\npre{background:#f6f6f6;padding:8px;white-space:pre-wrap}\n"
+               "</style></head><body>\n<h1>pathlab grade</h1>\n");
+    fprintf(f, "<p>Seed %llu, %.0f s. Each image case renders a scene with your part and compares it with the "
+               "reference, block by block; a case fails only when the difference is too large to be noise (a "
+               "correct part fails a case about once in a thousand gradings).</p>\n",
+            (unsigned long long)r->seed, r->seconds);
+    fprintf(f, "<table class=\"sum\"><tr><th>part</th><th>unit tests</th><th>image cases</th><th>score</th></tr>\n");
+    for (int i = 0; i < r->num_parts; i++) {
+        const grade_part_result *p = &r->parts[i];
+        int passed = 0;
+        for (int k = 0; k < p->num_cases; k++) passed += p->cases[k].ran && p->cases[k].v.pass;
+        fprintf(f, "<tr><td><a href=\"#part%d\">Part %d</a></td><td>%d/%d</td><td>%d/%d</td><td>%.1f / %.1f</td></tr>\n",
+                p->part, p->part, p->tests_run - p->tests_failed, p->tests_run, passed, p->num_cases, p->score,
+                p->max_score);
+    }
+    fprintf(f, "</table>\n");
+    for (int i = 0; i < r->num_parts; i++) {
+        const grade_part_result *p = &r->parts[i];
+        fprintf(f, "<h2 id=\"part%d\">Part %d: %.1f / %.1f</h2>\n", p->part, p->part, p->score, p->max_score);
+        if (p->suite_reason[0]) {
+            fprintf(f, "<p class=\"fail\">Unit tests: 0 points: ");
+            html_escape(f, p->suite_reason);
+            fprintf(f, "</p>\n");
+        }
+        else {
+            fprintf(f, "<p class=\"%s\">Unit tests: %d of %d passed</p>\n", p->tests_failed ? "fail" : "pass",
+                    p->tests_run - p->tests_failed, p->tests_run);
+            if (p->failures[0]) {
+                fprintf(f, "<pre>");
+                html_escape(f, p->failures);
+                fprintf(f, "</pre>\n");
+            }
+        }
+        for (int k = 0; k < p->num_cases; k++) {
+            const grade_case_result *c = &p->cases[k];
+            char text[2048];
+            case_text(c, text, sizeof text);
+            fprintf(f, "<div class=\"case\"><h3>%s%s: <span class=\"%s\">%s</span></h3><p><i>", c->spec->name,
+                    c->spec->hidden ? " (hidden)" : "", c->ran && c->v.pass ? "pass" : "fail",
+                    c->ran && c->v.pass ? "matches" : "differs");
+            html_escape(f, c->spec->shows);
+            fprintf(f, "</i></p><p>");
+            html_escape(f, text);
+            fprintf(f, "</p>\n");
+            if (c->ran && c->images[0][0]) {
+                static const char *const captions[3] = {
+                    "your render", "the reference",
+                    "difference per block: <span class=\"scale\"></span> darker &harr; brighter (t from -5 to +5)"};
+                fprintf(f, "<div class=\"imgs\">");
+                static const char *const alts[3] = {"your render", "the reference", "difference per block"};
+                for (int m = 0; m < 3; m++)
+                    if (c->images[m][0])
+                        fprintf(f, "<figure><img src=\"%s\" alt=\"%s\"><figcaption>%s</figcaption></figure>", c->images[m],
+                                alts[m], captions[m]);
+                fprintf(f, "</div>\n");
+            }
+            fprintf(f, "</div>\n");
+        }
+    }
+    fprintf(f, "</body></html>\n");
+    if (fclose(f) != 0) return pl_fail(diag, PL_ERR_IO, "%s: cannot write", path);
+    return PL_OK;
+}
