@@ -1,10 +1,14 @@
 /* Grader machinery: not part of any assignment.
  * bin/grade [--submission DIR] [--public] [--out DIR] [--seed N] [--threads N] [--parts 1,3]
+ * bin/grade --calibrate N [--parts ...]
  *   --submission DIR  grade DIR/parts/ part by part, each among the solution's other parts (autograder);
  *                     without it, grade this tree as it is, public cases only (a student's make grade)
  *   --out DIR         where results.json, the report (DIR/report/index.html) and scratch go (grade-out)
+ *   --calibrate N     render every case of this tree N times with fresh seeds and print, per case, how
+ *                     often it failed beside the alpha it claims, and the deciles of its p-values
  * Exit status: 0 when every graded part got full marks, 1 otherwise, 2 for bad arguments. */
 #include "grade.h"
+#include "grade_image.h"
 #include <errno.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -36,6 +40,42 @@ static uint64_t fresh_seed(void)
     return s % 1000000000000ull;
 }
 
+/* --calibrate: the grader's own false-failure rate, measured on this tree (the solution). */
+static int calibrate(const grade_env *base, const grade_spec *spec, const char *parts, int runs)
+{
+    int worst = 0;
+    printf("%-28s %6s %9s %8s  p-value deciles\n", "case", "runs", "failures", "alpha");
+    for (int k = 0; k < GRADE_NUM_PARTS; k++) {
+        char digit[2] = {(char)('1' + k), 0};
+        if (!strstr(parts, digit)) continue;
+        const grade_part_spec *p = &spec->parts[k];
+        for (int i = 0; i < p->num_cases; i++) {
+            int failures = 0, decile[10] = {0};
+            for (int run = 0; run < runs; run++) {
+                grade_env env = *base;
+                env.seed = fresh_seed();
+                grade_case_result c;
+                memset(&c, 0, sizeof c);
+                c.spec = &p->cases[i];
+                grade_image_case(&env, spec, env.root, p->part, &c);
+                if (!c.ran) {
+                    fprintf(stderr, "grade: %s: %s\n", c.spec->name, c.reason);
+                    return 1;
+                }
+                failures += !c.v.pass;
+                decile[c.v.p_value >= 1.0 ? 9 : (int)(c.v.p_value * 10)]++;
+                verdict_free(&c.v);
+            }
+            printf("part%d/%-22s %6d %9d %8.0e ", p->part, p->cases[i].name, runs, failures, spec->family_alpha);
+            for (int d = 0; d < 10; d++) printf(" %3d", decile[d]);
+            printf("\n");
+            fflush(stdout);
+            worst = failures > worst ? failures : worst;
+        }
+    }
+    return worst > 0;
+}
+
 static bool make_dir(const char *path)
 {
     return mkdir(path, 0755) == 0 || errno == EEXIST;
@@ -46,7 +86,7 @@ int main(int argc, char **argv)
     const char *submission = NULL, *out = "grade-out", *parts = "1,2,3,4,5";
     bool public_only = false, seed_given = false;
     uint64_t seed = 0;
-    int threads = 2;
+    int threads = 2, calibrate_runs = 0;
     for (int i = 1; i < argc; i++) {
         const char *a = argv[i], *v = i + 1 < argc ? argv[i + 1] : NULL;
         if (!strcmp(a, "--public")) public_only = true;
@@ -56,6 +96,7 @@ int main(int argc, char **argv)
         else if (!strcmp(a, "--parts")) parts = argv[++i];
         else if (!strcmp(a, "--seed")) { seed = strtoull(argv[++i], NULL, 10); seed_given = true; }
         else if (!strcmp(a, "--threads")) threads = atoi(argv[++i]);
+        else if (!strcmp(a, "--calibrate")) calibrate_runs = atoi(argv[++i]);
         else return usage("unknown option");
     }
     if (threads < 1 || threads > 64) return usage("--threads: expected 1..64");
@@ -80,6 +121,11 @@ int main(int argc, char **argv)
     memset(&result, 0, sizeof result);
     result.seed = seed_given ? seed : fresh_seed();
     grade_env env = {root, submission ? subdir : NULL, work, report, public_only, result.seed, threads};
+    if (calibrate_runs > 0) {
+        int code = calibrate(&env, &spec, parts, calibrate_runs);
+        grade_spec_free(&spec);
+        return code;
+    }
     double t0 = now();
     for (int k = 0; k < GRADE_NUM_PARTS; k++) {
         char digit[2] = {(char)('1' + k), 0};
