@@ -90,7 +90,19 @@ typedef struct {
     const char *log_path;      /* stdout and stderr go here, truncated at log_max bytes */
     long log_max;
     char *const *env;          /* extra "NAME=value" entries, NULL-terminated, or NULL */
+    bool untrusted;            /* runs student code: limits, no network, an unprivileged user */
 } grade_run_opts;
+
+/* What grade_run can do to contain untrusted code on this machine: limits always; a network
+ * namespace and another user only as root. The report names what was unavailable. */
+typedef struct {
+    bool as_other_user;        /* runs as `nobody` (the grader is root) */
+    bool no_network;           /* a new network namespace */
+    unsigned uid, gid;         /* nobody's */
+} grade_sandbox;
+
+/* Finds what this machine allows (call once, before any child runs). */
+grade_sandbox grade_sandbox_probe(void);
 
 typedef struct {
     bool exited;               /* ended by exit(), not by a signal or the timeout */
@@ -114,6 +126,7 @@ typedef struct {
     bool public_only;
     uint64_t seed;
     int threads;
+    grade_sandbox sandbox;     /* what containment this machine allows */
 } grade_env;
 
 /* Builds (or reuses) the tree for part p, runs its suite and cases, and fills r. */

@@ -65,7 +65,7 @@ void grade_image_case(const grade_env *env, const grade_spec *spec, const char *
     for (char **f = fixed; *f; f++) argv[n++] = *f;
     argv[n] = NULL;
     remove(out);
-    grade_run_opts o = {RENDER_SECONDS, tree, log, LOG_MAX, NULL};
+    grade_run_opts o = {RENDER_SECONDS, tree, log, LOG_MAX, NULL, env->submission != NULL};
     grade_run_result rr = grade_run(argv, &o);
     if (!rr.exited || rr.status != 0) {
         char why[128];

@@ -120,7 +120,8 @@ int main(int argc, char **argv)
     grade_result result;
     memset(&result, 0, sizeof result);
     result.seed = seed_given ? seed : fresh_seed();
-    grade_env env = {root, submission ? subdir : NULL, work, report, public_only, result.seed, threads};
+    grade_env env = {root, submission ? subdir : NULL, work, report, public_only, result.seed, threads,
+                     grade_sandbox_probe()};
     if (calibrate_runs > 0) {
         int code = calibrate(&env, &spec, parts, calibrate_runs);
         grade_spec_free(&spec);

@@ -34,7 +34,7 @@ static bool part_folder(const char *root, int n, char *out, size_t size)
 
 static bool run_quiet(char *const argv[], const char *log)
 {
-    grade_run_opts o = {BUILD_SECONDS, NULL, log, LOG_MAX, NULL};
+    grade_run_opts o = {BUILD_SECONDS, NULL, log, LOG_MAX, NULL, false};
     grade_run_result r = grade_run(argv, &o);
     return r.exited && r.status == 0;
 }
@@ -74,7 +74,16 @@ static bool make_tree(const grade_env *env, int n, char *tree, size_t size, grad
         return false;
     }
     char *rm_part[] = {"rm", "-rf", to, NULL}, *cp_part[] = {"cp", "-r", from, to, NULL};
-    return run_quiet(rm_part, NULL) && run_quiet(cp_part, log);
+    if (!run_quiet(rm_part, NULL) || !run_quiet(cp_part, log)) return false;
+    /* Student code runs as `nobody` when the grader is root: give it this part's folder, only. */
+    if (env->sandbox.as_other_user) {
+        char owner[64], part_dir[4096];
+        snprintf(owner, sizeof owner, "%u:%u", env->sandbox.uid, env->sandbox.gid);
+        snprintf(part_dir, sizeof part_dir, "%s/part%d", env->work, n);
+        char *chown[] = {"chown", "-R", owner, part_dir, NULL};
+        if (!run_quiet(chown, log)) return false;
+    }
+    return true;
 }
 
 static bool build(const grade_env *env, const char *tree, int n, grade_part_result *r)
@@ -83,7 +92,10 @@ static bool build(const grade_env *env, const char *tree, int n, grade_part_resu
     snprintf(target, sizeof target, "bin/test-part%d", n);
     snprintf(r->build_log, sizeof r->build_log, "%s/part%d/build.log", env->work, n);
     char *argv[] = {"make", "-C", (char *)tree, "-j2", "--no-print-directory", "bin/pathtracer", target, NULL};
-    return run_quiet(argv, r->build_log);
+    /* The compiler reads student code too (#include, .incbin): it runs contained like the code. */
+    grade_run_opts o = {BUILD_SECONDS, NULL, r->build_log, LOG_MAX, NULL, env->submission != NULL};
+    grade_run_result rr = grade_run(argv, &o);
+    return rr.exited && rr.status == 0;
 }
 
 /* ---- the suite: verdicts from cmocka's XML files, one per test group ------------------------- */
@@ -139,7 +151,7 @@ static void run_suite(const grade_env *env, const char *tree, const grade_part_s
     snprintf(bin, sizeof bin, "%s/bin/test-part%d", tree, p->part);
     char *envv[] = {"CMOCKA_MESSAGE_OUTPUT=xml", xml_env, NULL};
     char *argv[] = {bin, NULL};
-    grade_run_opts o = {SUITE_SECONDS, tree, log, LOG_MAX, envv};
+    grade_run_opts o = {SUITE_SECONDS, tree, log, LOG_MAX, envv, env->submission != NULL};
     grade_run_result rr = grade_run(argv, &o);
 
     /* A suite that crashed, timed out or exited early scores zero, whatever files it left. */

@@ -1,6 +1,9 @@
 /* Grader machinery: not part of any assignment. Children: own process group, limits, a timeout. */
 #include "grade.h"
 #include <errno.h>
+#include <grp.h>
+#include <pwd.h>
+#include <sched.h>
 #include <fcntl.h>
 #include <signal.h>
 #include <stdio.h>
@@ -19,6 +22,40 @@ static double now(void)
     return (double)ts.tv_sec + ts.tv_nsec * 1e-9;
 }
 
+/* Limits for untrusted children: generous for a render of a grading case, small for a fork bomb,
+ * a memory hog or a file flood. */
+#define LIMIT_CPU_SECONDS 600
+#define LIMIT_ADDRESS_SPACE ((rlim_t)8 << 30)
+#define LIMIT_FILE_BYTES ((rlim_t)1 << 30)
+#define LIMIT_OPEN_FILES 256
+#define LIMIT_PROCESSES 256
+
+static grade_sandbox sandbox;
+
+grade_sandbox grade_sandbox_probe(void)
+{
+    memset(&sandbox, 0, sizeof sandbox);
+    struct passwd *pw = getpwnam("nobody");
+    if (geteuid() == 0 && pw) {
+        sandbox.as_other_user = true;
+        sandbox.uid = pw->pw_uid;
+        sandbox.gid = pw->pw_gid;
+    }
+    /* A network namespace needs privilege; try it in a throwaway child. */
+    pid_t pid = fork();
+    if (pid == 0) _exit(unshare(CLONE_NEWNET) == 0 ? 0 : 1);
+    int status = 1;
+    if (pid > 0) waitpid(pid, &status, 0);
+    sandbox.no_network = pid > 0 && WIFEXITED(status) && WEXITSTATUS(status) == 0;
+    return sandbox;
+}
+
+static void set_limit(int resource, rlim_t value)
+{
+    struct rlimit l = {value, value};
+    setrlimit(resource, &l);
+}
+
 /* In the child, before exec: a group of its own (so the timeout kills every descendant), the log
  * as stdout and stderr, no stdin, and a cap on every file it writes so a flood cannot fill the disk. */
 static void child_setup(const grade_run_opts *o)
@@ -33,10 +70,19 @@ static void child_setup(const grade_run_opts *o)
         dup2(log, 1);
         dup2(log, 2);
     }
-    struct rlimit fsize = {(rlim_t)1 << 30, (rlim_t)1 << 30}, core = {0, 0};
-    setrlimit(RLIMIT_FSIZE, &fsize);
-    setrlimit(RLIMIT_CORE, &core);
+    set_limit(RLIMIT_FSIZE, LIMIT_FILE_BYTES);
+    set_limit(RLIMIT_CORE, 0);
     for (char *const *e = o->env; e && *e; e++) putenv(*e);
+    if (!o->untrusted) return;
+    set_limit(RLIMIT_CPU, LIMIT_CPU_SECONDS);
+    set_limit(RLIMIT_AS, LIMIT_ADDRESS_SPACE);
+    set_limit(RLIMIT_NOFILE, LIMIT_OPEN_FILES);
+    if (sandbox.no_network && unshare(CLONE_NEWNET) != 0) _exit(126);
+    if (sandbox.as_other_user) {
+        /* Drop every privilege for good: groups, then gid, then uid (the order matters). */
+        if (setgroups(0, NULL) != 0 || setgid(sandbox.gid) != 0 || setuid(sandbox.uid) != 0) _exit(126);
+        set_limit(RLIMIT_NPROC, LIMIT_PROCESSES);  /* counts nobody's processes, not the grader's */
+    }
 }
 
 grade_run_result grade_run(char *const argv[], const grade_run_opts *o)
