@@ -16,8 +16,6 @@
 
 /* Deeper than any exporter writes, shallow enough for the C stack. */
 #define MAX_NODE_DEPTH 128
-/* <instance_node> can multiply work exponentially (a node instancing another twice, 40 times). */
-#define MAX_NODE_VISITS 1000000L
 
 /* ---- XML errors -------------------------------------------------------------------------- */
 
@@ -65,6 +63,25 @@ static void on_start_element(void *user, const xmlChar *localname, const xmlChar
     if (parser->node && parser->input) parser->node->_private = (void *)(intptr_t)parser->input->line;
 }
 
+/* COLLADA never needs entities, and expanding them is how a 100 KB file asks for gigabytes
+ * ("billion laughs"): a document that declares any is refused at the declaration, before a byte
+ * is expanded. References to undeclared entities are already well-formedness errors. */
+static void on_entity_decl(void *user, const xmlChar *name, int type, const xmlChar *public_id,
+                           const xmlChar *system_id, xmlChar *content)
+{
+    (void)type, (void)public_id, (void)system_id, (void)content;
+    xmlParserCtxtPtr parser = user;
+    xml_errors *errs = parser->_private;
+    if (!errs->failed) {
+        errs->failed = true;
+        pl_fail(errs->ctx->diag, PL_ERR_PARSE,
+                "%s:%d: <!ENTITY %.64s>: expected no entity declarations (COLLADA needs none, and their "
+                "expansion can cost gigabytes)", errs->ctx->name, parser->input ? parser->input->line : 1,
+                name ? (const char *)name : "?");
+    }
+    xmlStopParser(parser);
+}
+
 static pl_status parse_xml(dae_ctx *c, const char *xml, size_t len)
 {
     if (len > INT_MAX) return pl_fail(c->diag, PL_ERR_PARSE, "%s:1: XML: file too large", c->name);
@@ -78,6 +95,7 @@ static pl_status parse_xml(dae_ctx *c, const char *xml, size_t len)
     void *saved_context = xmlStructuredErrorContext;
     xmlSetStructuredErrorFunc(&errs, on_library_error);
     parser->sax->startElementNs = on_start_element;
+    parser->sax->entityDecl = on_entity_decl;
     /* NONET: never fetch; no NOENT/DTDLOAD: external entities stay unloaded; BIG_LINES: exact lines
      * past 65535 in libxml2's own messages. */
     int opts = XML_PARSE_NONET | XML_PARSE_NOERROR | XML_PARSE_NOWARNING | XML_PARSE_BIG_LINES;
@@ -198,9 +216,10 @@ static pl_status visit_node(dae_ctx *c, const xmlNode *node, mat4 parent, int de
     if (depth > MAX_NODE_DEPTH)
         return dae_error(c, node, PL_ERR_PARSE, "nodes nested deeper than %d levels (an <instance_node> cycle?)",
                          MAX_NODE_DEPTH);
-    if (++c->node_visits > MAX_NODE_VISITS)
-        return dae_error(c, node, PL_ERR_PARSE, "more than %ld node instances (<instance_node> fan-out?)",
-                         MAX_NODE_VISITS);
+    /* <instance_node> can multiply work exponentially (a node instancing another twice, 40 times). */
+    if (++c->node_visits > c->limits.max_instances)
+        return dae_error(c, node, PL_ERR_INVALID, "more than %ld node instances (<instance_node> fan-out?): the "
+                         "limit guards time and memory", c->limits.max_instances);
     mat4 local;
     pl_status st = node_transform(c, node, &local);
     mat4 m = mat4_mul(parent, local);
@@ -238,7 +257,14 @@ static pl_status load_document(dae_ctx *c)
 
 /* ---- entry points ------------------------------------------------------------------------ */
 
-pl_status dae_load_memory(const char *xml, size_t len, const char *name, scene *out, pl_diag *diag)
+dae_limits dae_limits_default(void)
+{
+    dae_limits l = {2000000L, 1000000L};
+    return l;
+}
+
+pl_status dae_load_memory_limited(const char *xml, size_t len, const char *name, const dae_limits *limits,
+                                  scene *out, pl_diag *diag)
 {
     pl_diag fallback = pl_diag_default();  /* a NULL diag still gets errors recorded and warnings printed */
     memset(out, 0, sizeof *out);
@@ -248,6 +274,7 @@ pl_status dae_load_memory(const char *xml, size_t len, const char *name, scene *
     c.diag = diag ? diag : &fallback;
     c.out = out;
     c.default_material = -1;
+    c.limits = limits ? *limits : dae_limits_default();
     c.diag->error[0] = '\0';
 
     pl_status st = parse_xml(&c, xml ? xml : "", xml ? len : 0);
@@ -263,14 +290,24 @@ pl_status dae_load_memory(const char *xml, size_t len, const char *name, scene *
     return PL_OK;
 }
 
-pl_status dae_load(const char *path, scene *out, pl_diag *diag)
+pl_status dae_load_limited(const char *path, const dae_limits *limits, scene *out, pl_diag *diag)
 {
     memset(out, 0, sizeof *out);
     char *buf;
     size_t len;
     pl_status st = file_read_all(path, "scene", DAE_MAX_FILE_BYTES, &buf, &len, diag);
     if (st) return st;
-    st = dae_load_memory(buf, len, path, out, diag);
+    st = dae_load_memory_limited(buf, len, path, limits, out, diag);
     free(buf);
     return st;
+}
+
+pl_status dae_load_memory(const char *xml, size_t len, const char *name, scene *out, pl_diag *diag)
+{
+    return dae_load_memory_limited(xml, len, name, NULL, out, diag);
+}
+
+pl_status dae_load(const char *path, scene *out, pl_diag *diag)
+{
+    return dae_load_limited(path, NULL, out, diag);
 }

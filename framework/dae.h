@@ -14,9 +14,29 @@
  * Blender export about 70 MB. Larger files are refused before a byte is read. */
 #define DAE_MAX_FILE_BYTES ((size_t)256 << 20)
 
+/* What one scene may ask for. A 32 KB file can ask for 10^8 triangles through <instance_node>
+ * fan-out, so both are bounded before anything is allocated; the message names the element that
+ * crossed the limit. A triangle costs about 80 bytes, its BVH share about 40: the default primitive
+ * cap keeps a hostile scene near 300 MB; `--max-primitives N` raises it for a real big scene. */
+typedef struct {
+    long max_primitives;  /* triangles + spheres (2,000,000: ~150 MB of triangles) */
+    long max_instances;   /* nodes visited, counting every <instance_node> expansion (1,000,000) */
+} dae_limits;
+
+dae_limits dae_limits_default(void);
+
+/* Every vertex, sphere centre and radius must lie within +-DAE_MAX_COORD after its node
+ * transforms: then every sum and product the BVH build forms of them (extents, centroids, surface
+ * areas ~ (2e18)^2 * 6) stays finite in float, whose largest value is 3.4e38. */
+#define DAE_MAX_COORD 1e18f
+
 /* Loads path into *out (which it initialises). On failure *out is empty and nothing leaks. */
 pl_status dae_load(const char *path, scene *out, pl_diag *diag);
 /* The same from a buffer; name is used in messages. */
 pl_status dae_load_memory(const char *xml, size_t len, const char *name, scene *out, pl_diag *diag);
+/* Both with explicit limits (NULL: the defaults). */
+pl_status dae_load_limited(const char *path, const dae_limits *limits, scene *out, pl_diag *diag);
+pl_status dae_load_memory_limited(const char *xml, size_t len, const char *name, const dae_limits *limits,
+                                  scene *out, pl_diag *diag);
 
 #endif

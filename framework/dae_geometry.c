@@ -29,6 +29,7 @@ typedef struct {
     bool mirrored;         /* det < 0: swap winding so the front stays the front */
     const dae_binding *bindings;
     int num_bindings;
+    const xmlNode *elem;   /* the <instance_geometry>, named in errors about what it produced */
 } instance;
 
 /* ---- sources ----------------------------------------------------------------------------- */
@@ -153,6 +154,8 @@ static pl_status read_corner(dae_ctx *c, const xmlNode *p, const inputs *in, con
         return dae_error(c, p, PL_ERR_PARSE, "VERTEX index %d is out of range (the positions have %d entr%s)",
                          v, in->positions.count, in->positions.count == 1 ? "y" : "ies");
     out->p = mat4_point(inst->to_world, element(&in->positions, v));
+    pl_status st = dae_check_coord(c, inst->elem, "a vertex", out->p);
+    if (st) return st;
     out->has_normal = false;
     if (in->normal_offset >= 0) {
         int n = idx[in->normal_offset];
@@ -213,6 +216,7 @@ static pl_status read_list(dae_ctx *c, const xmlNode *prim, const inputs *in, co
     }
     long long corners = 0;
     for (int i = 0; i < count && !st; i++) corners += polylist ? vcount[i] : 3;
+    if (!st) st = dae_check_room(c, inst->elem, (long)(corners - 2LL * count));  /* n - 2 triangles per polygon */
     if (!st && corners > 0 && !p) st = dae_error(c, prim, PL_ERR_PARSE, "expected a <p> with the indices");
     if (!st && p) st = dae_int_list(c, p, &idx, &num_idx);
     if (!st && num_idx != corners * in->stride)
@@ -250,6 +254,7 @@ static pl_status read_polygons(dae_ctx *c, const xmlNode *prim, const inputs *in
         if (n % in->stride != 0 || n / in->stride < 3)
             st = dae_error(c, p, PL_ERR_PARSE, "expected at least 3 corners of %d indices each, found %d indices",
                            in->stride, n);
+        if (!st) st = dae_check_room(c, inst->elem, n / in->stride - 2);
         if (!st) st = add_polygon(c, p, in, inst, idx, n / in->stride, mat);
         free(idx);
         found++;
@@ -304,8 +309,12 @@ static pl_status read_sphere(dae_ctx *c, const xmlNode *shape, const instance *i
     sphere sp;
     sp.center = mat4_point(m, vec3_make(0, 0, 0));
     sp.radius = radius * scale;
-    if (!(sp.radius > 0) || !isfinite(sp.radius))
-        return dae_error(c, shape, PL_ERR_INVALID, "the node's transform scales the sphere to radius %g", sp.radius);
+    if (!(sp.radius > 0) || !(sp.radius <= DAE_MAX_COORD))
+        return dae_error(c, inst->elem, PL_ERR_INVALID,
+                         "the node's transform scales the sphere to radius %g: expected (0, %g]", sp.radius, DAE_MAX_COORD);
+    st = dae_check_coord(c, inst->elem, "the sphere's centre", sp.center);
+    if (!st) st = dae_check_room(c, inst->elem, 1);
+    if (st) return st;
     st = dae_bound_material(c, shape, inst->bindings, inst->num_bindings, NULL, &sp.material);
     if (!st && scene_add_sphere(c->out, sp) < 0) st = pl_fail(c->diag, PL_ERR_NOMEM, "%s: out of memory", c->name);
     return st;
@@ -331,6 +340,7 @@ pl_status dae_instance_geometry(dae_ctx *c, const xmlNode *inst_elem, mat4 to_wo
     /* A singular transform flattens the mesh; its normals then follow the matrix itself. */
     inst.normal_to_world = mat4_inverse(to_world, &inv) ? mat4_transpose(inv) : to_world;
     inst.mirrored = det3(to_world) < 0;
+    inst.elem = inst_elem;
     dae_binding *bindings;
     if ((st = dae_bind_materials(c, inst_elem, &bindings, &inst.num_bindings))) return st;
     inst.bindings = bindings;

@@ -12,6 +12,7 @@
 #include <stdbool.h>
 #include <stddef.h>
 #include <libxml/tree.h>
+#include "dae.h"
 #include "scene.h"
 #include "status.h"
 
@@ -43,6 +44,7 @@ typedef struct {
     int default_material;  /* grey 0.5, created on first use; -1 before */
     bool has_camera;
     long node_visits;      /* bounds the work <instance_node> chains can cause */
+    dae_limits limits;     /* primitives and instances the scene may ask for */
     const char *warned[DAE_MAX_WARN_KINDS];  /* kinds already warned about (string literals or names in doc) */
     int num_warned;
 } dae_ctx;
@@ -92,6 +94,12 @@ pl_status dae_attr_int(dae_ctx *c, const xmlNode *n, const char *name, bool requ
 pl_status dae_color(dae_ctx *c, const xmlNode *n, rgb *out);
 /* The colour in parent's child `name`: its text, or its <color> child. */
 pl_status dae_child_color(dae_ctx *c, const xmlNode *parent, const char *name, bool required, rgb *out);
+
+/* A point or length after its node transforms: finite and within +-DAE_MAX_COORD, else a located
+ * error at `at` (the <instance_geometry> whose transform produced it) naming what. */
+pl_status dae_check_coord(dae_ctx *c, const xmlNode *at, const char *what, vec3 p);
+/* Room for `more` primitives within the limit, else a located error at `at`. */
+pl_status dae_check_room(dae_ctx *c, const xmlNode *at, long more);
 
 /* ---- converters, one per module ---------------------------------------------------------- */
 pl_status dae_instance_geometry(dae_ctx *c, const xmlNode *inst, mat4 to_world);

@@ -4,6 +4,7 @@
 #include "dae_internal.h"
 
 #include <errno.h>
+#include <math.h>
 #include <limits.h>
 #include <stdint.h>
 #include <stdarg.h>
@@ -243,7 +244,15 @@ static pl_status parse_float(dae_ctx *c, const xmlNode *n, const char *tok, cons
     return PL_OK;
 }
 
-typedef struct { float *v; int count, cap; bool grow; } float_sink;
+/* Where numbers go: a caller's fixed array (want or want_alt numbers) or a growing one. */
+typedef struct { float *v; int count, cap; bool grow; int want, want_alt; } float_sink;
+
+static pl_status too_many(dae_ctx *c, const xmlNode *n, const float_sink *s)
+{
+    if (s->want_alt > 0)
+        return dae_error(c, n, PL_ERR_PARSE, "expected %d or %d numbers, found more", s->want, s->want_alt);
+    return dae_error(c, n, PL_ERR_PARSE, "expected %d number%s, found more", s->want, s->want == 1 ? "" : "s");
+}
 
 static pl_status take_float(dae_ctx *c, const xmlNode *n, void *user, const char *tok, const char *end)
 {
@@ -251,8 +260,10 @@ static pl_status take_float(dae_ctx *c, const xmlNode *n, void *user, const char
     float v = 0.0f;
     pl_status st = parse_float(c, n, tok, end, &v);
     if (st) return st;
-    if (s->count == s->cap) {
-        if (!s->grow) { s->count++; return PL_OK; }  /* fixed buffer: only count the excess */
+    if (s->count >= s->cap) {
+        /* A fixed array is full: one number more is already an error, so reading stops here and
+         * nothing is ever written past the caller's array. */
+        if (!s->grow) return too_many(c, n, s);
         if (s->cap > INT_MAX / 2) return dae_error(c, n, PL_ERR_PARSE, "too many numbers");
         int cap = s->cap ? 2 * s->cap : 64;
         float *v2 = realloc(s->v, (size_t)cap * sizeof *v2);
@@ -266,7 +277,7 @@ static pl_status take_float(dae_ctx *c, const xmlNode *n, void *user, const char
 
 pl_status dae_floats(dae_ctx *c, const xmlNode *n, float *out, int want, int want_alt, int *found)
 {
-    float_sink s = {out, 0, want > want_alt ? want : want_alt, false};
+    float_sink s = {out, 0, want > want_alt ? want : want_alt, false, want, want_alt};
     pl_status st = for_each_token(c, n, take_float, &s);
     if (found) *found = s.count;
     if (st) return st;
@@ -278,7 +289,7 @@ pl_status dae_floats(dae_ctx *c, const xmlNode *n, float *out, int want, int wan
 
 pl_status dae_float_list(dae_ctx *c, const xmlNode *n, float **out, int *count)
 {
-    float_sink s = {NULL, 0, 0, true};
+    float_sink s = {NULL, 0, 0, true, 0, 0};
     pl_status st = for_each_token(c, n, take_float, &s);
     if (st) { free(s.v); s.v = NULL; s.count = 0; }
     *out = s.v;
@@ -367,4 +378,24 @@ pl_status dae_child_color(dae_ctx *c, const xmlNode *parent, const char *name, b
     /* profile_COMMON wraps colours (<diffuse><color>); CGL writes them inline (<radiance>1 1 1). */
     const xmlNode *inner = dae_child(n, "color");
     return dae_color(c, inner ? inner : n, out);
+}
+
+/* ---- limits ------------------------------------------------------------------------------ */
+
+pl_status dae_check_coord(dae_ctx *c, const xmlNode *at, const char *what, vec3 p)
+{
+    bool ok = fabsf(p.x) <= DAE_MAX_COORD && fabsf(p.y) <= DAE_MAX_COORD && fabsf(p.z) <= DAE_MAX_COORD;
+    if (ok) return PL_OK;  /* NaN fails every comparison, so it lands below too */
+    return dae_error(c, at, PL_ERR_INVALID,
+                     "%s is (%g, %g, %g) in world space: expected finite coordinates within +-%g "
+                     "(check the node transforms above it)", what, p.x, p.y, p.z, DAE_MAX_COORD);
+}
+
+pl_status dae_check_room(dae_ctx *c, const xmlNode *at, long more)
+{
+    long have = (long)c->out->num_triangles + c->out->num_spheres;
+    if (more <= c->limits.max_primitives - have) return PL_OK;
+    return dae_error(c, at, PL_ERR_INVALID,
+                     "the scene would hold more than %ld primitives (%ld so far, %ld more here): "
+                     "the limit guards memory; --max-primitives N raises it", c->limits.max_primitives, have, more);
 }

@@ -7,7 +7,8 @@ int render_tests(void);
 int camera_file_tests(void);
 int dae_tests(void);
 int scenes_tests(void);
-int strip_tests(void);  /* the release stripper (tools/strip.c) */
+int strip_tests(void);
+int file_tests(void);    /* whole-file reads and their refusals */  /* the release stripper (tools/strip.c) */
 
 int main(void)
 {
@@ -21,5 +22,6 @@ int main(void)
     failed += dae_tests();
     failed += scenes_tests();
     failed += strip_tests();
+    failed += file_tests();
     return failed ? 1 : 0;
 }
