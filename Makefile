@@ -115,5 +115,5 @@ test:
 clean:
 	rm -rf build bin release
 
-include $(wildcard tools/*.mk bench/*.mk tests/mutants/*.mk)
+include $(wildcard tools/*.mk bench/*.mk tests/mutants/*.mk fuzz/*.mk)
 -include $(shell find build -name '*.d' 2>/dev/null)
