@@ -2,6 +2,7 @@
  * fan-triangulated, the file's normals when present) and CS184's CGL spheres. */
 #include "dae_internal.h"
 
+#include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -20,6 +21,8 @@ typedef struct {
     int position_offset, normal_offset;  /* normal_offset -1: no normals */
     bool normals_from_vertices;          /* NORMAL given in <vertices>: indexed like positions */
     int stride;                          /* indices per corner: max offset + 1 */
+    vec3 *world_p, *world_n;             /* every position and normal in world space, transformed once
+                                            per list (not once per corner); a NaN x marks a normal to skip */
 } inputs;
 
 /* The instance being converted: its transforms and material bindings. */
@@ -146,25 +149,42 @@ static pl_status read_inputs(dae_ctx *c, const xmlNode *prim, inputs *in)
 /* One corner, transformed to world space; has_normal false when the file gives none. */
 typedef struct { vec3 p, n; bool has_normal; } corner;
 
-static pl_status read_corner(dae_ctx *c, const xmlNode *p, const inputs *in, const instance *inst,
-                             const int *idx, corner *out)
+static pl_status read_corner(dae_ctx *c, const xmlNode *p, const inputs *in, const int *idx, corner *out)
 {
     int v = idx[in->position_offset];
     if (v >= in->positions.count)
         return dae_error(c, p, PL_ERR_PARSE, "VERTEX index %d is out of range (the positions have %d entr%s)",
                          v, in->positions.count, in->positions.count == 1 ? "y" : "ies");
-    out->p = mat4_point(inst->to_world, element(&in->positions, v));
-    pl_status st = dae_check_coord(c, inst->elem, "a vertex", out->p);
-    if (st) return st;
+    out->p = in->world_p[v];
     out->has_normal = false;
     if (in->normal_offset >= 0) {
         int n = idx[in->normal_offset];
         if (n >= in->normals.count)
             return dae_error(c, p, PL_ERR_PARSE, "NORMAL index %d is out of range (the normals have %d entr%s)",
                              n, in->normals.count, in->normals.count == 1 ? "y" : "ies");
-        vec3 normal = vec3_normalize(mat4_dir(inst->normal_to_world, element(&in->normals, n)));
-        out->n = normal;
-        out->has_normal = vec3_is_finite(normal) && vec3_length(normal) > 0.5f;
+        out->n = in->world_n[n];
+        out->has_normal = !isnan(out->n.x);
+    }
+    return PL_OK;
+}
+
+/* Transforms the list's positions and normals to world space once: a vertex is shared by about six
+ * triangles, so this is a sixth of the work of transforming every corner. Every position is
+ * checked against the coordinate bound here. */
+static pl_status transform_inputs(dae_ctx *c, inputs *in, const instance *inst)
+{
+    in->world_p = malloc(((size_t)in->positions.count + 1) * sizeof *in->world_p);
+    in->world_n = malloc(((size_t)in->normals.count + 1) * sizeof *in->world_n);
+    if (!in->world_p || !in->world_n) return pl_fail(c->diag, PL_ERR_NOMEM, "%s: out of memory", c->name);
+    for (int i = 0; i < in->positions.count; i++) {
+        in->world_p[i] = mat4_point(inst->to_world, element(&in->positions, i));
+        pl_status st = dae_check_coord(c, inst->elem, "a vertex", in->world_p[i]);
+        if (st) return st;
+    }
+    for (int i = 0; i < in->normals.count; i++) {
+        vec3 n = vec3_normalize(mat4_dir(inst->normal_to_world, element(&in->normals, i)));
+        /* A zero or broken normal is skipped: the triangle's face normal stands in for it. */
+        in->world_n[i] = vec3_is_finite(n) && vec3_length(n) > 0.5f ? n : vec3_make(NAN, 0, 0);
     }
     return PL_OK;
 }
@@ -185,10 +205,10 @@ static pl_status add_polygon(dae_ctx *c, const xmlNode *p, const inputs *in, con
                              const int *idx, int n, int mat)
 {
     corner first, prev, cur;
-    pl_status st = read_corner(c, p, in, inst, idx, &first);
-    if (!st) st = read_corner(c, p, in, inst, idx + in->stride, &prev);
+    pl_status st = read_corner(c, p, in, idx, &first);
+    if (!st) st = read_corner(c, p, in, idx + in->stride, &prev);
     for (int k = 2; k < n && !st; k++) {
-        st = read_corner(c, p, in, inst, idx + (size_t)k * (size_t)in->stride, &cur);
+        st = read_corner(c, p, in, idx + (size_t)k * (size_t)in->stride, &cur);
         if (!st) st = add_triangle(c, inst, first, prev, cur, mat);
         prev = cur;
     }
@@ -271,9 +291,13 @@ static pl_status read_primitive(dae_ctx *c, const xmlNode *prim, const instance 
     pl_status st = dae_attr_int(c, prim, "count", true, 0, 0, &count);
     if (!st) st = read_inputs(c, prim, &in);
     if (!st) st = dae_bound_material(c, prim, inst->bindings, inst->num_bindings, dae_attr(prim, "material"), &mat);
-    if (st) return st;
-    return dae_is(prim, "polygons") ? read_polygons(c, prim, &in, inst, count, mat)
-                                    : read_list(c, prim, &in, inst, count, mat);
+    if (!st) st = transform_inputs(c, &in, inst);
+    if (!st)
+        st = dae_is(prim, "polygons") ? read_polygons(c, prim, &in, inst, count, mat)
+                                      : read_list(c, prim, &in, inst, count, mat);
+    free(in.world_p);
+    free(in.world_n);
+    return st;
 }
 
 static pl_status read_mesh(dae_ctx *c, const xmlNode *mesh, const instance *inst)

@@ -4,10 +4,12 @@
  * input is rejected (tests/data/broken: each file's first line says the status, line and message). */
 #include "../common/test.h"
 #include <dirent.h>
+#include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 #include "../../framework/dae.h"
+#include "../../framework/rng.h"
 
 #define VALID "tests/data/valid/"
 #define BROKEN "tests/data/broken/"
@@ -96,6 +98,63 @@ static const char TRIANGLE_GEOMETRY[] =
     "<vertices id=\"tri-v\"><input semantic=\"POSITION\" source=\"#tri-pos\"/></vertices>"
     "<triangles count=\"1\"><input semantic=\"VERTEX\" source=\"#tri-v\" offset=\"0\"/><p>0 1 2</p></triangles>"
     "</mesh></geometry></library_geometries>";
+
+/* Numbers are read as strtof reads them, bit for bit, whatever their form: the loader's fast path
+ * for short decimals must agree with the C library on every one (both round correctly). */
+static void test_dae_load__numbers_match_strtof_exactly(void **state)
+{
+    (void)state;
+    enum { TRIS = 400, NUMS = TRIS * 9 };
+    static const char *const forms[] = {"%.0f", "%.1f", "%.3f", "%.6f", "%.7f", "%.9f", "%.10f", "%.12f", "%g", "%.8e"};
+    char (*text)[40] = malloc(sizeof *text * NUMS);
+    assert_non_null(text);
+    rng g = rng_seeded(2024, 7);
+    size_t len = 0;
+    for (int i = 0; i < NUMS; i++) {
+        double scale = pow(10.0, (double)(rng_u32(&g) % 12) - 6.0);
+        double v = (rng_uniform(&g) * 2.0 - 1.0) * scale * 10.0;
+        snprintf(text[i], sizeof text[i], forms[rng_u32(&g) % (sizeof forms / sizeof forms[0])], v);
+        len += strlen(text[i]) + 1;
+    }
+    char *floats = malloc(len + 1), *at = floats;
+    assert_non_null(floats);
+    for (int i = 0; i < NUMS; i++) at += sprintf(at, "%s ", text[i]);
+    char *p = malloc(TRIS * 3 * 8 + 1);
+    assert_non_null(p);
+    at = p;
+    for (int i = 0; i < TRIS * 3; i++) at += sprintf(at, "%d ", i);
+    char *lib = NULL, *node = NULL;
+    assert_true(asprintf(&lib,
+                         "<library_geometries><geometry id=\"g\"><mesh><source id=\"s\">"
+                         "<float_array id=\"a\" count=\"%d\">%s</float_array><technique_common>"
+                         "<accessor source=\"#a\" count=\"%d\" stride=\"3\"/></technique_common></source>"
+                         "<vertices id=\"v\"><input semantic=\"POSITION\" source=\"#s\"/></vertices>"
+                         "<triangles count=\"%d\"><input semantic=\"VERTEX\" source=\"#v\" offset=\"0\"/>"
+                         "<p>%s</p></triangles></mesh></geometry></library_geometries>",
+                         NUMS, floats, TRIS * 3, TRIS, p) > 0);
+    assert_true(asprintf(&node, "<node id=\"n\"><instance_geometry url=\"#g\"/></node>") > 0);
+    scene sc;
+    warn_log w = {0};
+    load_document_ok("Y_UP", lib, node, &sc, &w);
+    assert_int_equal(TRIS, sc.num_triangles);
+    int mismatches = 0;
+    for (int t = 0; t < TRIS; t++) {
+        const vec3 *corners[3] = {&sc.triangles[t].p0, &sc.triangles[t].p1, &sc.triangles[t].p2};
+        for (int k = 0; k < 9; k++) {
+            float got = k % 3 == 0 ? corners[k / 3]->x : k % 3 == 1 ? corners[k / 3]->y : corners[k / 3]->z;
+            float want = strtof(text[t * 9 + k], NULL);
+            if (got != want && mismatches++ < 5)  /* value, not bits: the transform makes -0 +0 */
+                print_error("'%s': loader %a, strtof %a\n", text[t * 9 + k], got, want);
+        }
+    }
+    assert_int_equal(0, mismatches);
+    scene_free(&sc);
+    free(lib);
+    free(node);
+    free(p);
+    free(floats);
+    free(text);
+}
 
 /* ---- errors ------------------------------------------------------------------------------ */
 
@@ -681,6 +740,7 @@ int dae_tests(void)
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(test_dae_load__missing_file_is_io_error_naming_it),
         cmocka_unit_test(test_dae_load__every_broken_file_is_rejected_with_file_line_and_element),
+        cmocka_unit_test(test_dae_load__numbers_match_strtof_exactly),
         cmocka_unit_test(test_dae_load__truncated_files_are_rejected_at_every_cut),
         cmocka_unit_test(test_dae_load__random_corruption_never_crashes),
         cmocka_unit_test(test_dae_load__large_mesh_loads_and_errors_keep_exact_lines),
