@@ -66,6 +66,7 @@ help:
 	@echo "pathlab targets:"
 	@echo "  make                  build bin/pathtracer (start here)"
 	@echo "  make test-part1       run part 1's tests (likewise test-part2 .. test-part5)"
+	@echo "  make test-part3 FILTER='*hemisphere*'  run only the tests whose names match"
 	@echo "  make test-framework   run the framework's tests"
 	@echo "  make test             run every suite"
 	@echo "  make test SAN=1       the same under AddressSanitizer + UBSan"
@@ -102,7 +103,7 @@ ifeq ($(strip $(call suite_obj,$(1))),)
 	@echo "test-$(1): no tests yet"
 else
 	@echo "== test-$(1)"
-	$$(Q)$(BIN)/test-$(1)
+	$$(Q)PL_TEST_FILTER='$$(FILTER)' $(BIN)/test-$(1)
 endif
 endef
 $(foreach s,$(SUITES),$(eval $(call suite_rules,$(s))))

@@ -71,16 +71,17 @@ static void check_sampler(const char *name, dir_sampler sample, dir_pdf pdf, voi
         assert_implemented();
         if (!(fabsf(vec3_length(w) - 1.0f) < 1e-3f)) {
             print_error("%s: sample %d is not a unit vector: (%g, %g, %g)\n", name, i, w.x, w.y, w.z);
-            fail();
+            check_fail(__FILE__, __LINE__);
         }
         observed[bin_of(w)] += 1.0;
     }
     double total = expected_counts(pdf, user, expected, N_SAMPLES);
     assert_float_near(1.0, total, 2e-3);
-    stats_result r = stats_chi2_test(observed, expected, BINS, 5.0, PART3_CHECK_ALPHA);
+    double alpha = PART3_CHECK_ALPHA;
+    stats_result r = stats_chi2_test(observed, expected, BINS, 5.0, alpha);
     if (r.reject) {
         print_error("%s: directions do not follow the pdf: chi-square %.1f with %g dof, p = %.3g < %.3g "
-                    "(below-surface samples: %g)\n", name, r.stat, r.dof, r.p, PART3_CHECK_ALPHA, observed[BINS - 1]);
+                    "(below-surface samples: %g)\n", name, r.stat, r.dof, r.p, alpha, observed[BINS - 1]);
         print_error("  cos(theta) bin: observed / expected\n");
         for (int iz = 0; iz < BINS_Z; iz++) {
             double o = 0, e = 0;
@@ -96,8 +97,9 @@ static void check_sampler(const char *name, dir_sampler sample, dir_pdf pdf, voi
     }
     free(observed);
     free(expected);
-    assert_false(r.reject);
+    PL_CHECK(!r.reject);
 }
+#define check_sampler(...) PL_AT(check_sampler(__VA_ARGS__))  /* failures name the calling test's line */
 
 /* ---- the framework's samplers -------------------------------------------------------------- */
 static vec3 uniform_sample(void *u, vec2 xi, float *p) { (void)u; vec3 w = sample_uniform_hemisphere(xi); *p = sample_uniform_hemisphere_pdf(w); return w; }

@@ -45,6 +45,7 @@ static void check_rule_keeps_mean(int next_depth, rgb beta0, uint64_t seed)
     assert_mean_matches(&acc[1], beta0.g, PART4_CHECK_ALPHA, what);
     assert_mean_matches(&acc[2], beta0.b, PART4_CHECK_ALPHA, what);
 }
+#define check_rule_keeps_mean(...) PL_AT(check_rule_keeps_mean(__VA_ARGS__))  /* failures name the calling test's line */
 
 static void test_russian_roulette__compensates_the_paths_it_ends(void **state)
 {
