@@ -26,7 +26,7 @@ void check_rgb_near(rgb e, rgb g, float eps, const char *what, const char *file,
 void check_float_near(double e, double g, double eps, const char *what, const char *file, int line)
 {
     if (!(fabs(e - g) <= eps)) {
-        print_error("%s: wrong: expected %.9g, got %.9g (tolerance %g)\n", what, e, g, eps);
+        print_error("%s: wrong: expected %.12g, got %.12g (tolerance %g)\n", what, e, g, eps);
         check_fail(file, line);
     }
 }

@@ -7,7 +7,10 @@ int render_tests(void);
 int camera_file_tests(void);
 int dae_tests(void);
 int scenes_tests(void);
-int strip_tests(void);  /* the release stripper (tools/strip.c) */
+int strip_tests(void);
+int lights_tests(void);
+int sampler_tests(void);
+int stats_tests(void);  /* the tests' own statistics (tests/common/stats.c) */  /* the release stripper (tools/strip.c) */
 
 int main(void)
 {
@@ -21,5 +24,8 @@ int main(void)
     failed += dae_tests();
     failed += scenes_tests();
     failed += strip_tests();
+    failed += lights_tests();
+    failed += sampler_tests();
+    failed += stats_tests();
     return failed ? 1 : 0;
 }
