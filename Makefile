@@ -71,7 +71,7 @@ help:
 	@echo "  make test             run every suite"
 	@echo "  make test SAN=1       the same under AddressSanitizer + UBSan"
 	@echo "  make bench            speed figures, not a test (bench-bvh, bench-transport; see bench/RESULTS.md)"
-	@echo "  make figures          every figure the handout asks for, into build/figures/"
+	@echo "  make figures          every figure the handout asks for (parts 1-5), into out/figures/"
 	@if [ -d tests/mutants ]; then \
 	   echo "instructors:"; \
 	   echo "  make release-check    cut release/student (solutions -> stubs) and prove it sound"; \
