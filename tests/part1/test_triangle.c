@@ -150,7 +150,7 @@ static void test_triangle_intersect__degenerate_triangle_never_hits(void **state
  * is several percent of these triangles: it reports hits for rays that pass beside the triangle,
  * and these tests fail it. */
 #define PREC_MARGIN 0.02
-#define PREC_RAYS 64
+#define PREC_RAYS 128
 
 typedef struct { double x, y, z; } dvec3;
 static dvec3 dv(vec3 v) { dvec3 d = {v.x, v.y, v.z}; return d; }
@@ -248,11 +248,21 @@ static vec3 prec_point(const triangle *tri, double b1, double b2)
                      (float)(b0 * p0.z + b1 * p1.z + b2 * p2.z));
 }
 
-/* Barycentrics from just outside an edge (or vertex) to well inside: most rays are judged. */
-static void prec_barycentrics(uint64_t *g, double *b1, double *b2)
+/* Barycentrics for an aim point: every other one anywhere from just outside the triangle to well
+ * inside, the others within 0.1 of an edge's line on either side, where rounding decides. */
+static void prec_barycentrics(uint64_t *g, int i, double *b1, double *b2)
 {
-    *b1 = -0.3 + 1.6 * prec_uniform(g);
-    *b2 = -0.3 + 1.6 * prec_uniform(g);
+    if (i % 2 == 0) {
+        *b1 = -0.3 + 1.6 * prec_uniform(g);
+        *b2 = -0.3 + 1.6 * prec_uniform(g);
+        return;
+    }
+    double along = prec_uniform(g), off = (prec_uniform(g) < 0.5 ? -1 : 1) * (0.02 + 0.08 * prec_uniform(g));
+    switch ((int)(3 * prec_uniform(g))) {
+    case 0: *b1 = off; *b2 = along; break;
+    case 1: *b1 = along; *b2 = off; break;
+    default: *b1 = along * (1 - off); *b2 = (1 - along) * (1 - off); break;
+    }
 }
 
 static const double prec_cases[][2] = {  /* {distance from the world origin, size across} */
@@ -268,7 +278,7 @@ static void test_triangle_intersect__small_triangles_far_from_the_origin(void **
             triangle tri = prec_triangle(&g, prec_cases[c][0], prec_cases[c][1], &n);
             for (int i = 0; i < PREC_RAYS; i++) {
                 double b1, b2;
-                prec_barycentrics(&g, &b1, &b2);
+                prec_barycentrics(&g, i, &b1, &b2);
                 vec3 aim = prec_point(&tri, b1, b2);
                 vec3 o = vec3_add(aim, vec3_scale(prec_unit(&g), (float)(prec_cases[c][1] * (2 + 48 * prec_uniform(&g)))));
                 ray r = ray_make(o, vec3_normalize(vec3_sub(aim, o)), 0.0f, INFINITY);
@@ -289,7 +299,7 @@ static void test_triangle_intersect__near_parallel_rays(void **state)
             triangle tri = prec_triangle(&g, prec_cases[c][0], size, &n);
             for (int i = 0; i < PREC_RAYS; i++) {
                 double b1, b2;
-                prec_barycentrics(&g, &b1, &b2);
+                prec_barycentrics(&g, i, &b1, &b2);
                 vec3 aim = prec_point(&tri, b1, b2);
                 double angle = pow(10.0, -2.0 - 3.0 * prec_uniform(&g));
                 double lift = (i % 3 - 1) * size * (0.05 + prec_uniform(&g));  /* below, on, above */
