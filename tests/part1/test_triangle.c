@@ -209,19 +209,22 @@ static void check_precise_at(const triangle *tri, ray r, const char *kind, doubl
     hit h;
     h.t = -7.0f;
     bool found = triangle_intersect(tri, &r, &h);
-    assert_implemented();
+    check_implemented(file, line);
     if (found != in) {
         print_error("wrong: %s: triangle %.2g across at %.2g from the world origin, ray from (%.9g, %.9g, %.9g) "
-                 "dir (%.9g, %.9g, %.9g): expected a %s (exact barycentrics b1 = %.4f, b2 = %.4f, plane at t = %.6g), "
-                 "got a %s at t = %.9g. Is the inside-outside test computed from the hit point o + t d? Its "
-                 "coordinates are rounded to their float grid; test the ray against the edges instead.\n",
-                 kind, size, where, r.o.x, r.o.y, r.o.z, r.d.x, r.d.y, r.d.z, in ? "hit" : "miss", b1, b2, t,
-                 found ? "hit" : "miss", found ? h.t : 0.0);
-        _fail(file, line);
+                    "dir (%.9g, %.9g, %.9g): expected a %s (exact barycentrics b1 = %.4f, b2 = %.4f, plane at "
+                    "t = %.6g), got a %s at t = %.9g. %s\n",
+                    kind, size, where, r.o.x, r.o.y, r.o.z, r.d.x, r.d.y, r.d.z, in ? "hit" : "miss", b1, b2, t,
+                    found ? "hit" : "miss", found ? h.t : 0.0,
+                    "Is the inside-outside test computed from the hit point o + t d? Its coordinates are rounded to "
+                    "their float grid, a few percent of this triangle: test the ray against the edges instead, as "
+                    "Moller-Trumbore does.");
+        check_fail(file, line);
     }
     if (found && !(fabs(h.t - t) <= 1e-5 * t + 1e-4 * size / cosine)) {
-        print_error("wrong: %s: hit at t = %.9g, exactly %.9g (triangle %.2g across at %.2g)\n", kind, h.t, t, size, where);
-        _fail(file, line);
+        print_error("wrong: %s: hit at t = %.9g, exactly %.9g (triangle %.2g across at %.2g)\n", kind, h.t, t, size,
+                    where);
+        check_fail(file, line);
     }
 }
 
