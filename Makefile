@@ -75,7 +75,8 @@ help:
 	@if [ -d tests/mutants ]; then \
 	   echo "instructors:"; \
 	   echo "  make release-check    cut release/student (solutions -> stubs) and prove it sound"; \
-	   echo "  make mutants          show each catalogued student bug is caught by its part's tests"; fi
+	   echo "  make mutants          show each catalogued student bug is caught by its part's tests"; \
+	   echo "  make calibrate N=200  each suite's false-failure rate over N fresh seeds, beside its alpha"; fi
 	@echo "  make clean            remove build/, bin/ and release/"
 	@echo "settings: V=1 (full commands), WERROR=1, SAN=1, OPT=-O0"
 
