@@ -66,15 +66,17 @@ help:
 	@echo "pathlab targets:"
 	@echo "  make                  build bin/pathtracer (start here)"
 	@echo "  make test-part1       run part 1's tests (likewise test-part2 .. test-part5)"
+	@echo "  make test-part3 FILTER='*hemisphere*'  run only the tests whose names match"
 	@echo "  make test-framework   run the framework's tests"
 	@echo "  make test             run every suite"
 	@echo "  make test SAN=1       the same under AddressSanitizer + UBSan"
 	@echo "  make bench            speed figures, not a test (bench-bvh, bench-transport; see bench/RESULTS.md)"
-	@echo "  make figures          every figure the handout asks for, into build/figures/"
+	@echo "  make figures          every figure the handout asks for (parts 1-5), into out/figures/"
 	@if [ -d tests/mutants ]; then \
 	   echo "instructors:"; \
 	   echo "  make release-check    cut release/student (solutions -> stubs) and prove it sound"; \
-	   echo "  make mutants          show each catalogued student bug is caught by its part's tests"; fi
+	   echo "  make mutants          show each catalogued student bug is caught by its part's tests"; \
+	   echo "  make calibrate N=200  each suite's false-failure rate over N fresh seeds, beside its alpha"; fi
 	@echo "  make clean            remove build/, bin/ and release/"
 	@echo "settings: V=1 (full commands), WERROR=1, SAN=1, OPT=-O0"
 
@@ -102,7 +104,7 @@ ifeq ($(strip $(call suite_obj,$(1))),)
 	@echo "test-$(1): no tests yet"
 else
 	@echo "== test-$(1)"
-	$$(Q)$(BIN)/test-$(1)
+	$$(Q)PL_TEST_FILTER='$$(FILTER)' $(BIN)/test-$(1)
 endif
 endef
 $(foreach s,$(SUITES),$(eval $(call suite_rules,$(s))))

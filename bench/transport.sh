@@ -44,7 +44,7 @@ for row in "bunny scenes/cornell_bunny.dae 21.6" "spheres scenes/cornell_spheres
         json="${img%.hdr}.json"
         rays=$(field rays_traced "$json" | awk '{printf "%.1f", $1 / 1e6}')
         spp=$(field mean_samples_per_pixel "$json")
-        rel=$("$BIN/transport_img" relmse "$img" "$ref")
+        rel=$("$BIN/imgtool" relmse "$img" "$ref")
         speed=$(echo "$cs184 $secs" | awk '{printf "%.2fx", $1 / $2}')
         case "$flags" in *-a*) ;; *) cs184=-; speed=- ;; esac
         printf '%-8s %-26s %9s %7s %9s %8s %9s %9s %8s\n' "$name" "$flags" "$secs" "$cpu" "$spp" "$rays" "$rel" "$cs184" "$speed"

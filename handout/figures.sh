@@ -1,24 +1,52 @@
 #!/bin/sh
-# The figures of handout/part3.md, part4.md and part5.md, one pathtracer command each, written to
-# build/figures/part<N>/. Run all:  make figures     One part:  handout/figures.sh part4
-# Each command is printed before it runs, so it can be copied and changed.
+# The figures of every part's handout (handout/part1.md .. part5.md), one command each, written to
+# out/figures/part<N>/. Run all:  make figures     One part:  handout/figures.sh part4
+# It builds what it needs first (bin/pathtracer and bin/imgtool, through make), so it also works on a
+# fresh tree. Each command is printed before it runs, so it can be copied and changed.
+# Settings (environment): BIN (bin), OUT (out/figures).
 set -eu
+cd "$(dirname "$0")/.."
 BIN=${BIN:-bin}
+OUT=${OUT:-out/figures}
 T="-t 2 -q"
 R="-r 320 240"
 bunny=scenes/cornell_bunny.dae
 spheres=scenes/cornell_spheres.dae
+empty=scenes/cornell_empty.dae
 only=${1:-all}
+case "$only" in
+    all|part1|part2|part3|part4|part5) ;;
+    *) echo "usage: handout/figures.sh [all|part1|part2|part3|part4|part5]" >&2; exit 2 ;;
+esac
 
+${MAKE:-make} --no-print-directory -s "$BIN/pathtracer" "$BIN/imgtool"
+
+say() { echo "$*"; "$@"; }
 run() {  # run OUT.png pathtracer-args...
     out=$1; shift
     mkdir -p "$(dirname "$out")"
-    echo "$BIN/pathtracer $* -f $out"
-    "$BIN/pathtracer" "$@" -f "$out"
+    say "$BIN/pathtracer" "$@" -f "$out"
 }
+want() { [ "$only" = all ] || [ "$only" = "$1" ]; }
 
-if [ "$only" = all ] || [ "$only" = part3 ]; then
-    d=build/figures/part3
+if want part1; then
+    d=$OUT/part1
+    # 1.1-1.3: normal shading of the spheres and the empty box; 1.4: 16 samples per pixel
+    run $d/spheres.png $T --normals -r 480 360 $spheres
+    run $d/empty.png $T --normals -r 480 360 $empty
+    run $d/spheres_s16.png $T --normals -s 16 -r 480 360 $spheres
+fi
+
+if want part2; then
+    d=$OUT/part2
+    # 2.2-2.3: the bunny through the BVH, and the heat map of node boxes visited per pixel
+    run $d/bunny.png $T --normals -r 400 300 $bunny
+    mkdir -p $d
+    say "$BIN/pathtracer" $T --normals -r 400 300 --heatmap $d/bunny_heatmap.png $bunny
+fi
+
+if want part3; then
+    d=$OUT/part3
     # 3.4 / 3.5: hemisphere sampling against light sampling, same samples and time budget
     run $d/bunny_hemisphere.png $T $R -s 16 -l 8 -m 1 -H $bunny
     run $d/bunny_importance.png $T $R -s 16 -l 8 -m 1 $bunny
@@ -27,13 +55,12 @@ if [ "$only" = all ] || [ "$only" = part3 ]; then
     run $d/spheres_importance.png $T $R -s 64 -l 4 -m 1 $spheres
 fi
 
-if [ "$only" = all ] || [ "$only" = part4 ]; then
-    d=build/figures/part4
+if want part4; then
+    d=$OUT/part4
     # 4.1: direct light only, and the indirect light alone (all bounces minus the direct ones)
     run $d/bunny_direct.hdr $T $R -s 64 -l 4 -m 1 $bunny
     run $d/bunny_all.hdr $T $R -s 64 -l 4 -m 5 $bunny
-    echo "$BIN/transport_img sub $d/bunny_all.hdr $d/bunny_direct.hdr $d/bunny_indirect.png"
-    "$BIN/transport_img" sub $d/bunny_all.hdr $d/bunny_direct.hdr $d/bunny_indirect.png
+    say "$BIN/imgtool" sub $d/bunny_all.hdr $d/bunny_direct.hdr $d/bunny_indirect.png
     run $d/bunny_direct.png $T $R -s 64 -l 4 -m 1 $bunny
     # 4.3: the k-th bounce alone
     for k in 0 1 2 3 4 5; do run $d/bunny_bounce$k.png $T $R -s 64 -l 4 -m $k -o 0 $bunny; done
@@ -43,9 +70,10 @@ if [ "$only" = all ] || [ "$only" = part4 ]; then
     for s in 1 2 4 8 16 64 256; do run $d/spheres_s$s.png $T $R -s $s -l 4 -m 5 $spheres; done
 fi
 
-if [ "$only" = all ] || [ "$only" = part5 ]; then
-    d=build/figures/part5
+if want part5; then
+    d=$OUT/part5
     # 5.1: adaptive sampling and its sample-rate map (written beside it as *_rate.png)
     run $d/bunny_adaptive.png $T $R -s 1024 -a 64 0.05 -l 1 -m 5 $bunny
     run $d/spheres_adaptive.png $T $R -s 1024 -a 64 0.05 -l 1 -m 5 $spheres
 fi
+echo "figures: $OUT/"

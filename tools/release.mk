@@ -13,16 +13,11 @@ $(BIN)/strip_solutions: $(BUILD)/tools/strip_solutions.o $(STRIP_OBJ) $(TOOL_LIB
 	@mkdir -p $(dir $@)
 	$(Q)$(CC) $(LDFLAGS) -o $@ $^ $(LDLIBS)
 
-$(BIN)/image_stats: $(BUILD)/tools/image_stats.o $(TOOL_LIB_OBJ)
-	$(say) LD $@
-	@mkdir -p $(dir $@)
-	$(Q)$(CC) $(LDFLAGS) -o $@ $^ $(LDLIBS)
-
 # An extra prerequisite lands in the suite rule's $^, so the framework tests link the stripper.
 $(BIN)/test-framework: $(STRIP_OBJ)
 
 release: $(BIN)/strip_solutions
 	$(Q)sh tools/make_release build $(BIN)/strip_solutions
 
-release-check: release $(BIN)/image_stats
-	$(Q)sh tools/make_release check $(BIN)/strip_solutions $(BIN)/image_stats
+release-check: release $(BIN)/imgtool
+	$(Q)sh tools/make_release check $(BIN)/strip_solutions $(BIN)/imgtool

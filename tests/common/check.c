@@ -10,7 +10,7 @@ void check_vec3_near(vec3 e, vec3 g, float eps, const char *what, const char *fi
     if (far(e.x, g.x, eps) || far(e.y, g.y, eps) || far(e.z, g.z, eps)) {
         print_error("%s: wrong: expected (%.6g, %.6g, %.6g), got (%.6g, %.6g, %.6g) (tolerance %g)\n",
                     what, e.x, e.y, e.z, g.x, g.y, g.z, eps);
-        _fail(file, line);
+        check_fail(file, line);
     }
 }
 
@@ -19,15 +19,54 @@ void check_rgb_near(rgb e, rgb g, float eps, const char *what, const char *file,
     if (far(e.r, g.r, eps) || far(e.g, g.g, eps) || far(e.b, g.b, eps)) {
         print_error("%s: wrong: expected rgb(%.6g, %.6g, %.6g), got rgb(%.6g, %.6g, %.6g) (tolerance %g)\n",
                     what, e.r, e.g, e.b, g.r, g.g, g.b, eps);
-        _fail(file, line);
+        check_fail(file, line);
     }
 }
 
 void check_float_near(double e, double g, double eps, const char *what, const char *file, int line)
 {
     if (!(fabs(e - g) <= eps)) {
-        print_error("%s: wrong: expected %.9g, got %.9g (tolerance %g)\n", what, e, g, eps);
-        _fail(file, line);
+        print_error("%s: wrong: expected %.12g, got %.12g (tolerance %g)\n", what, e, g, eps);
+        check_fail(file, line);
+    }
+}
+
+/* ---- call sites: the failing test's own line ---------------------------------------------------- */
+/* The outermost PL_AT call site of the running test; only the outermost one is kept, which is the
+ * test's own line however deep the helpers nest. */
+static const char *at_file;
+static int at_line, at_depth;
+
+void pl_at_push(const char *file, int line)
+{
+    if (at_depth++ == 0) {
+        at_file = file;
+        at_line = line;
+    }
+}
+
+void pl_at_pop(void)
+{
+    if (at_depth > 0) at_depth--;
+}
+
+void check_fail(const char *file, int line)
+{
+    /* A failure ends the test (cmocka longjmps out), so the next test starts with no call site. */
+    bool nested = at_depth > 0;
+    at_depth = 0;
+    if (nested) {
+        print_error("(failed in a helper at %s:%d)\n", file, line);
+        _fail(at_file, at_line);
+    }
+    _fail(file, line);
+}
+
+void check_true(bool cond, const char *what, const char *file, int line)
+{
+    if (!cond) {
+        print_error("wrong: expected %s\n", what);
+        check_fail(file, line);
     }
 }
 
@@ -35,7 +74,7 @@ void check_implemented(const char *file, int line)
 {
     if (pl_todo_count() > 0) {
         print_error("not implemented: %s is still a stub\n", pl_todo_last() ? pl_todo_last() : "a task");
-        _fail(file, line);
+        check_fail(file, line);
     }
 }
 
@@ -44,6 +83,7 @@ int test_setup(void **state)
     (void)state;
     pl_todo_set_quiet(true);
     pl_todo_reset();
+    at_depth = 0;
     return 0;
 }
 
@@ -52,6 +92,6 @@ void check_hit(bool found, bool expected, const char *what, const char *file, in
     check_implemented(file, line);
     if (found != expected) {
         print_error("%s: wrong: expected a %s, got a %s\n", what, expected ? "hit" : "miss", found ? "hit" : "miss");
-        _fail(file, line);
+        check_fail(file, line);
     }
 }

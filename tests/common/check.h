@@ -26,6 +26,24 @@ void check_implemented(const char *file, int line);
 #define assert_miss(call) check_hit((call), false, #call, __FILE__, __LINE__)
 void check_hit(bool found, bool expected, const char *what, const char *file, int line);
 
+/* A helper that several tests call reports a failure at the calling test's line, not its own: wrap
+ * its calls with PL_AT, e.g. right after the helper's definition
+ *     #define check_direct(...) PL_AT(check_direct(__VA_ARGS__))
+ * (a macro does not expand inside itself, so the inner name is the function). The checks here and
+ * in mc_assert.h then fail at the outermost PL_AT call site and name the helper's line as well.
+ * The helper must return void. */
+#define PL_AT(call) (pl_at_push(__FILE__, __LINE__), (call), pl_at_pop())
+void pl_at_push(const char *file, int line);
+void pl_at_pop(void);
+/* cmocka's _fail at the outermost PL_AT call site if there is one, else at file:line. */
+void check_fail(const char *file, int line);
+
+/* PL_CHECK(cond) and PL_CHECK_NEAR(expected, got, eps): on failure print the expression, both
+ * values and the calling test's line (through PL_AT helpers too), then fail the test. */
+#define PL_CHECK(cond) check_true((cond), #cond, __FILE__, __LINE__)
+#define PL_CHECK_NEAR(expected, got, eps) check_float_near((expected), (got), (eps), #got, __FILE__, __LINE__)
+void check_true(bool cond, const char *what, const char *file, int line);
+
 /* cmocka setup/teardown that reset and silence the stub counter; use for every student-code test. */
 int test_setup(void **state);
 

@@ -10,7 +10,7 @@ void mc_check_radiance(rgb L, const char *what, const char *where, const char *f
         print_error("%s: invalid radiance at %s: rgb(%g, %g, %g) (NaN, Inf and negative values are "
                     "bugs: look for a division by a zero pdf or a negative cosine)\n",
                     what, where, L.r, L.g, L.b);
-        _fail(file, line);
+        check_fail(file, line);
     }
 }
 
@@ -57,7 +57,7 @@ void mc_check_mean(const stats_acc *a, double expected, double alpha, const char
         print_error("%s: wrong mean: expected %.6g, got %.6g +- %.3g (standard error, %ld samples); "
                     "t = %.2f, p = %.3g < alpha = %.3g\n",
                     what, expected, a->mean, stats_acc_sem(a), a->n, t.stat, t.p, alpha);
-        _fail(file, line);
+        check_fail(file, line);
     }
 }
 

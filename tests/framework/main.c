@@ -7,8 +7,11 @@ int render_tests(void);
 int camera_file_tests(void);
 int dae_tests(void);
 int scenes_tests(void);
-int strip_tests(void);
-int file_tests(void);    /* whole-file reads and their refusals */  /* the release stripper (tools/strip.c) */
+int strip_tests(void);    /* the release stripper (tools/strip.c) */
+int file_tests(void);     /* whole-file reads and their refusals */
+int lights_tests(void);
+int sampler_tests(void);
+int stats_tests(void);    /* the tests' own statistics (tests/common/stats.c) */
 
 int main(void)
 {
@@ -23,5 +26,8 @@ int main(void)
     failed += scenes_tests();
     failed += strip_tests();
     failed += file_tests();
+    failed += lights_tests();
+    failed += sampler_tests();
+    failed += stats_tests();
     return failed ? 1 : 0;
 }

@@ -1,6 +1,5 @@
 /* Test machinery: not part of any assignment. The part 3 suite: make test-part3. */
 int sampling_tests(void);
-int light_tests(void);
 int direct_tests(void);
 int cornell_tests(void);
 
@@ -8,7 +7,6 @@ int main(void)
 {
     int failed = 0;
     failed += sampling_tests();
-    failed += light_tests();
     failed += direct_tests();
     failed += cornell_tests();
     return failed != 0;

@@ -44,6 +44,7 @@ static void render_blocks(tiny_world *w, bool hemisphere, uint64_t seed, stats_a
                 stats_acc_add(&blocks[(y / BLOCK) * (W / BLOCK) + x / BLOCK], rgb_luminance(L));
             }
 }
+#define render_blocks(...) PL_AT(render_blocks(__VA_ARGS__))  /* failures name the calling test's line */
 
 static void test_direct__hemisphere_and_importance_sampling_agree_on_cornell_box(void **state)
 {

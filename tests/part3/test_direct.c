@@ -52,6 +52,7 @@ static void check_direct(tiny_world *w, mc_estimator est, const char *name, int 
     snprintf(what, sizeof what, "%s (-l %d) at floor point (%g, 0, %g), expected rho Le F", name, light_samples, px, pz);
     assert_mean_matches(&acc[0], expected, PART3_CHECK_ALPHA, what);
 }
+#define check_direct(...) PL_AT(check_direct(__VA_ARGS__))  /* failures name the calling test's line */
 
 static void test_zero_bounce__emitter_is_Le_from_the_front_only(void **state)
 {
@@ -140,6 +141,7 @@ static void check_point(const float *att, float px, float pz)
     tiny_world_free(&w);
     assert_float_near(expected, acc[0].mean, 1e-4 * expected);
 }
+#define check_point(...) PL_AT(check_point(__VA_ARGS__))  /* failures name the calling test's line */
 
 static void test_direct_importance__point_light_follows_inverse_square_and_cosine(void **state)
 {

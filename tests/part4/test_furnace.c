@@ -56,6 +56,7 @@ static void check_furnace(tiny_world *w, int max_depth, bool accumulate, bool he
     mc_run_ray(&w->ctx, name, &r, seed, N, acc, __FILE__, __LINE__);
     assert_mean_matches(&acc[0], expected, PART4_CHECK_ALPHA, name);
 }
+#define check_furnace(...) PL_AT(check_furnace(__VA_ARGS__))  /* failures name the calling test's line */
 
 static void test_furnace__kth_bounce_alone_is_rho_to_the_k(void **state)
 {

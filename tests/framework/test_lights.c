@@ -2,13 +2,13 @@
  * The framework's lights (framework/light.c): area light samples have the solid-angle density they
  * claim (the mean of 1 / pdf is the solid angle the light subtends), point and spot lights follow
  * the inverse square law and COLLADA attenuation, one-sided lights are dark from behind.
- * alpha: statistical checks run at PART3_CHECK_ALPHA (part3_alpha.h, family 1e-3). Fixed seeds. */
+ * alpha: statistical checks run at FRAMEWORK_CHECK_ALPHA (framework_alpha.h). Fixed seeds. */
 #include <stdio.h>
 #include "../common/test.h"
 #include "../common/stats.h"
 #include "../common/mc_assert.h"
 #include "../../framework/light.h"
-#include "part3_alpha.h"
+#include "framework_alpha.h"
 #include <string.h>
 
 #define SEED mc_seed(0x5eed3002ull)
@@ -47,7 +47,7 @@ static void test_area_light__mean_inverse_pdf_is_solid_angle(void **state)
         stats_acc_add(&acc, 1.0 / ls.pdf);
     }
     double omega = 4.0 * asin(a * b / sqrt((a * a + h * h) * (b * b + h * h)));
-    assert_mean_matches(&acc, omega, PART3_CHECK_ALPHA, "mean 1 / pdf of the area light (solid angle)");
+    assert_mean_matches(&acc, omega, FRAMEWORK_CHECK_ALPHA, "mean 1 / pdf of the area light (solid angle)");
 }
 
 static void test_area_light__sample_lies_on_the_light(void **state)
@@ -167,7 +167,7 @@ static void test_ambient_light__uniform_over_the_upper_hemisphere(void **state)
     }
 }
 
-int light_tests(void)
+int lights_tests(void)
 {
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(test_area_light__mean_inverse_pdf_is_solid_angle),
@@ -178,5 +178,5 @@ int light_tests(void)
         cmocka_unit_test(test_spot_light__cone_and_falloff),
         cmocka_unit_test(test_ambient_light__uniform_over_the_upper_hemisphere),
     };
-    return cmocka_run_group_tests_name("part3: framework lights", tests, NULL, NULL);
+    return cmocka_run_group_tests_name("framework: lights", tests, NULL, NULL);
 }

@@ -1,0 +1,155 @@
+/* Image tool: not part of any assignment. One reader of rendered images for the tests, the release
+ * check, the benchmarks and the handout's figures (PNG and Radiance .hdr, through framework/image.h).
+ *
+ *   imgtool stats FILE                    "FILE: W x H, magenta fraction F": how much of the image is
+ *                                         the stubs' "not implemented" magenta (the release check)
+ *   imgtool mean FILE                     the mean of each channel: "r g b"
+ *   imgtool relmse CANDIDATE REFERENCE    relMSE = mean over pixels and channels of
+ *                                         (c - r)^2 / (r^2 + 0.01) (the transport benchmark)
+ *   imgtool sub A B OUT.png|OUT.hdr       max(A - B, 0) per channel, e.g. indirect light alone =
+ *                                         (-m 5 render) - (-m 1 render)
+ *   imgtool montage OUT.png A.png B.png   PNGs of one size side by side, to see a ladder of figures
+ *
+ * Exit status: 0 done, 1 an image could not be read or written, 2 bad usage. */
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include "../framework/image.h"
+
+#define MONTAGE_MAX 32
+
+/* ---- reading, with one message format ---------------------------------------------------------- */
+static bool load(const char *path, image *img)
+{
+    pl_diag d = pl_diag_default();
+    if (image_read(path, img, &d) != PL_OK) {
+        fprintf(stderr, "imgtool: %s\n", d.error);
+        return false;
+    }
+    return true;
+}
+
+/* Two images compared pixel by pixel must have one size. */
+static bool same_size(const image *a, const char *pa, const image *b, const char *pb)
+{
+    if (a->width == b->width && a->height == b->height) return true;
+    fprintf(stderr, "imgtool: %s is %dx%d but %s is %dx%d\n", pa, a->width, a->height, pb, b->width, b->height);
+    return false;
+}
+
+/* ---- stats: the stub colour's share ------------------------------------------------------------ */
+/* Stub magenta is rgb(1, 0, 1) radiance: 255, 0, 255 after the tone curve. The margins allow for
+ * lossy viewers and future tone curves without letting red, blue or grey pass. */
+static bool is_magenta(rgb c) { return c.r > 0.9f && c.b > 0.9f && c.g < 0.1f; }
+
+static int cmd_stats(const char *path)
+{
+    image img = {0};
+    if (!load(path, &img)) return 1;
+    long magenta = 0, total = (long)img.width * img.height;
+    for (long i = 0; i < total; i++) magenta += is_magenta(img.pixels[i]);
+    printf("%s: %d x %d, magenta fraction %.4f\n", path, img.width, img.height,
+           total ? (double)magenta / (double)total : 0.0);
+    image_free(&img);
+    return 0;
+}
+
+/* ---- mean, relmse, sub: radiance arithmetic ---------------------------------------------------- */
+static int cmd_mean(const char *path)
+{
+    image a = {0};
+    if (!load(path, &a)) return 1;
+    double m[3] = {0, 0, 0};
+    long n = (long)a.width * a.height;
+    for (long i = 0; i < n; i++) {
+        m[0] += a.pixels[i].r;
+        m[1] += a.pixels[i].g;
+        m[2] += a.pixels[i].b;
+    }
+    printf("%.6f %.6f %.6f\n", m[0] / n, m[1] / n, m[2] / n);
+    image_free(&a);
+    return 0;
+}
+
+/* relmse (out == NULL) or sub (out names the difference image). */
+static int cmd_pair(const char *pa, const char *pb, const char *out)
+{
+    image a = {0}, b = {0};
+    int status = 1;
+    if (!load(pa, &a) || !load(pb, &b) || !same_size(&a, pa, &b, pb)) goto done;
+    long n = (long)a.width * a.height;
+    if (!out) {
+        double sum = 0.0;
+        for (long i = 0; i < n; i++) {
+            const float *c = &a.pixels[i].r, *r = &b.pixels[i].r;
+            for (int k = 0; k < 3; k++)
+                sum += (double)(c[k] - r[k]) * (c[k] - r[k]) / ((double)r[k] * r[k] + 0.01);
+        }
+        printf("%.6f\n", sum / (3.0 * n));
+    } else {
+        for (long i = 0; i < n; i++) {
+            rgb p = a.pixels[i], q = b.pixels[i];
+            a.pixels[i] = rgb_make(fmaxf(p.r - q.r, 0.0f), fmaxf(p.g - q.g, 0.0f), fmaxf(p.b - q.b, 0.0f));
+        }
+        pl_diag d = pl_diag_default();
+        if (image_write(&a, out, &d) != PL_OK) {
+            fprintf(stderr, "imgtool: %s\n", d.error);
+            goto done;
+        }
+    }
+    status = 0;
+done:
+    image_free(&a);
+    image_free(&b);
+    return status;
+}
+
+/* ---- montage: PNGs side by side ---------------------------------------------------------------- */
+/* PNGs are read as 8-bit values / 255 and written back byte for byte, no tone curve. */
+static int cmd_montage(const char *out, int count, char **paths)
+{
+    image tiles[MONTAGE_MAX] = {{0}};
+    int loaded = 0, status = 1;
+    uint8_t *rgb8 = NULL;
+    for (; loaded < count; loaded++)
+        if (!load(paths[loaded], &tiles[loaded]) || !same_size(&tiles[0], paths[0], &tiles[loaded], paths[loaded]))
+            goto done;
+    int w = tiles[0].width, h = tiles[0].height;
+    rgb8 = calloc((size_t)w * count * h * 3, 1);
+    if (!rgb8) { fprintf(stderr, "imgtool: out of memory\n"); goto done; }
+    for (int i = 0; i < count; i++)
+        for (int y = 0; y < h; y++)
+            for (int x = 0; x < w; x++) {
+                rgb c = image_get(&tiles[i], x, y);
+                uint8_t *p = &rgb8[((size_t)y * w * count + (size_t)i * w + x) * 3];
+                p[0] = (uint8_t)(c.r * 255.0f + 0.5f);
+                p[1] = (uint8_t)(c.g * 255.0f + 0.5f);
+                p[2] = (uint8_t)(c.b * 255.0f + 0.5f);
+            }
+    pl_diag d = pl_diag_default();
+    if (image_write_png_rgb8(rgb8, w * count, h, out, &d) != PL_OK) fprintf(stderr, "imgtool: %s\n", d.error);
+    else status = 0;
+done:
+    free(rgb8);
+    for (int i = 0; i < loaded && i < count; i++) image_free(&tiles[i]);
+    return status;
+}
+
+static int usage(void)
+{
+    fprintf(stderr, "usage: imgtool stats FILE | mean FILE | relmse CANDIDATE REFERENCE | sub A B OUT |\n"
+                    "       montage OUT.png A.png B.png ... (at most %d)\n", MONTAGE_MAX);
+    return 2;
+}
+
+int main(int argc, char **argv)
+{
+    const char *cmd = argc > 1 ? argv[1] : "";
+    if (strcmp(cmd, "stats") == 0 && argc == 3) return cmd_stats(argv[2]);
+    if (strcmp(cmd, "mean") == 0 && argc == 3) return cmd_mean(argv[2]);
+    if (strcmp(cmd, "relmse") == 0 && argc == 4) return cmd_pair(argv[2], argv[3], NULL);
+    if (strcmp(cmd, "sub") == 0 && argc == 5) return cmd_pair(argv[2], argv[3], argv[4]);
+    if (strcmp(cmd, "montage") == 0 && argc >= 4 && argc - 3 <= MONTAGE_MAX)
+        return cmd_montage(argv[2], argc - 3, argv + 3);
+    return usage();
+}
