@@ -28,11 +28,12 @@ typedef struct {
     char *flags[GRADE_MAX_FLAGS];       /* renderer flags, owned */
     int num_flags;
     int width, height, samples;         /* the candidate's render */
-    int reference_samples;              /* the reference: one render at this many samples ... */
-    int reference_runs;                 /* ... or the mean of this many runs (adaptive cases) */
+    int reference_samples;              /* the reference: the solution's render at this many samples */
+    char *reference_flags[GRADE_MAX_FLAGS];  /* its flags when they differ (adaptive cases), owned */
+    int num_reference_flags;            /* 0: the reference uses flags */
     double points;
     bool hidden;
-    bool work_per_ray, sample_counts;   /* also judge BVH work per ray / per-pixel sample counts */
+    bool work_per_ray;                  /* also judge BVH node visits per ray against the solution's */
     char shows[160];                    /* what the case makes visible, for the report */
 } grade_case;
 

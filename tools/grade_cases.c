@@ -4,6 +4,21 @@
 #include <stdlib.h>
 #include <string.h>
 
+static pl_status read_flags(const char *path, const char *name, json_t *array, char **out, int *count, pl_diag *diag)
+{
+    if (!json_is_array(array) || json_array_size(array) > GRADE_MAX_FLAGS)
+        return pl_fail(diag, PL_ERR_PARSE, "%s: case %s: expected an array of at most %d flags", path, name,
+                       GRADE_MAX_FLAGS);
+    size_t i;
+    json_t *f;
+    json_array_foreach(array, i, f) {
+        const char *s = json_string_value(f);
+        if (!s) return pl_fail(diag, PL_ERR_PARSE, "%s: case %s: flag %zu is not a string", path, name, i + 1);
+        if (!(out[(*count)++] = strdup(s))) return pl_fail(diag, PL_ERR_NOMEM, "out of memory");
+    }
+    return PL_OK;
+}
+
 /* Every field is checked, with the case named: an instructor's typo must not become a silent 0. */
 static pl_status read_case(const char *path, int part, json_t *j, grade_case *c, pl_diag *diag)
 {
@@ -28,25 +43,21 @@ static pl_status read_case(const char *path, int part, json_t *j, grade_case *c,
     c->height = (int)json_integer_value(json_array_get(res, 1));
     c->samples = (int)json_integer_value(json_object_get(j, "samples"));
     c->reference_samples = (int)json_integer_value(json_object_get(j, "reference_samples"));
-    c->reference_runs = (int)json_integer_value(json_object_get(j, "reference_runs"));
+
     c->points = json_number_value(json_object_get(j, "points"));
     c->work_per_ray = json_is_true(json_object_get(j, "work_per_ray"));
-    c->sample_counts = json_is_true(json_object_get(j, "sample_counts"));
+
     const char *shows = json_string_value(json_object_get(j, "shows"));
     snprintf(c->shows, sizeof c->shows, "%s", shows ? shows : "");
     if (c->width < 1 || c->height < 1 || c->width > 4096 || c->height > 4096 || c->samples < 1 || c->points < 0 ||
-        (c->reference_samples < 1) == (c->reference_runs < 1))
+        c->reference_samples < c->samples)
         return pl_fail(diag, PL_ERR_PARSE,
-                       "%s: case %s: expected a resolution in 1..4096, samples >= 1, points >= 0, and exactly one "
-                       "of reference_samples, reference_runs", path, c->name);
-    size_t i;
-    json_t *f;
-    json_array_foreach(flags, i, f) {
-        const char *s = json_string_value(f);
-        if (!s) return pl_fail(diag, PL_ERR_PARSE, "%s: case %s: flag %zu is not a string", path, c->name, i + 1);
-        if (!(c->flags[c->num_flags++] = strdup(s))) return pl_fail(diag, PL_ERR_NOMEM, "out of memory");
-    }
-    return PL_OK;
+                       "%s: case %s: expected a resolution in 1..4096, samples >= 1, points >= 0 and "
+                       "reference_samples >= samples", path, c->name);
+    pl_status st = read_flags(path, c->name, flags, c->flags, &c->num_flags, diag);
+    json_t *ref_flags = json_object_get(j, "reference_flags");
+    if (!st && ref_flags) st = read_flags(path, c->name, ref_flags, c->reference_flags, &c->num_reference_flags, diag);
+    return st;
 }
 
 pl_status grade_spec_load(const char *path, grade_spec *out, pl_diag *diag)
@@ -85,6 +96,9 @@ void grade_spec_free(grade_spec *s)
     if (!s) return;
     for (int k = 0; k < GRADE_NUM_PARTS; k++)
         for (int i = 0; i < s->parts[k].num_cases; i++)
-            for (int f = 0; f < s->parts[k].cases[i].num_flags; f++) free(s->parts[k].cases[i].flags[f]);
+            for (int f = 0; f < GRADE_MAX_FLAGS; f++) {
+                free(s->parts[k].cases[i].flags[f]);
+                free(s->parts[k].cases[i].reference_flags[f]);
+            }
     memset(s, 0, sizeof *s);
 }
