@@ -22,7 +22,7 @@ $(BIN)/image_stats: $(BUILD)/tools/image_stats.o $(TOOL_LIB_OBJ)
 $(BIN)/test-framework: $(STRIP_OBJ)
 
 release: $(BIN)/strip_solutions
-	$(Q)sh tools/make_release build $(BIN)/strip_solutions
+	$(Q)bash tools/make_release build $(BIN)/strip_solutions
 
 release-check: release $(BIN)/image_stats
-	$(Q)sh tools/make_release check $(BIN)/strip_solutions $(BIN)/image_stats
+	$(Q)bash tools/make_release check $(BIN)/strip_solutions $(BIN)/image_stats
