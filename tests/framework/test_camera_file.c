@@ -122,6 +122,26 @@ static void test_camera_file_load__refuses_non_regular_files(void **state)
     assert_non_null(strstr(d.error, "expected a regular file"));
 }
 
+/* The documented 64 KB cap: a valid camera followed by padding past it is refused before parsing. */
+static void test_camera_file_load__refuses_files_over_the_cap(void **state)
+{
+    size_t n = 70 * 1024;
+    char *text = malloc(n + 1);
+    assert_non_null(text);
+    const char *camera_text = "50 40 1.333 0.1 100\n1 2 3 0 0 0\n0 0 3.7 0.1 10\n1 0 0 0 1 0 0 0 1\n800 600 1\n4.7 0\n";
+    memset(text, '\n', n);
+    memcpy(text, camera_text, strlen(camera_text));
+    text[n] = '\0';
+    const char *path = write_file(text);
+    free(text);
+    camera c;
+    pl_diag d = pl_diag_default();
+    pl_status s = camera_file_load(path, &c, &d);
+    remove(path);
+    assert_int_equal(PL_ERR_IO, s);
+    assert_non_null(strstr(d.error, "the limit is 65536"));
+}
+
 int camera_file_tests(void)
 {
     const struct CMUnitTest tests[] = {
@@ -130,6 +150,7 @@ int camera_file_tests(void)
         cmocka_unit_test(test_camera_file_load__refuses_values_that_are_not_a_camera),
         cmocka_unit_test(test_camera_file_load__accepts_rounded_rotations),
         cmocka_unit_test(test_camera_file_load__refuses_non_regular_files),
+        cmocka_unit_test(test_camera_file_load__refuses_files_over_the_cap),
     };
     return cmocka_run_group_tests_name("camera_file", tests, NULL, NULL);
 }
