@@ -1,6 +1,6 @@
 #!/bin/bash
 # Light transport benchmark: whole-process wall time of the renders the course's compiled
-# reference solution was timed on (480x360, -s 64 -l 4 -m 5, 2 threads; it always samples
+# program was timed on (480x360, -s 64 -l 4 -m 5, 2 threads; it always samples
 # adaptively with batch 32 and tolerance 0.05, so pathlab runs with -a 32 0.05 too), and the noise
 # of each render as relMSE against a converged render of the same scene.
 # Environment: BIN (bin), REF_SPP (1024: samples per pixel of the converged renders, cached in

@@ -17,7 +17,7 @@ $(BIN)/strip_solutions: $(BUILD)/tools/strip_solutions.o $(STRIP_OBJ) $(TOOL_LIB
 $(BIN)/test-framework: $(STRIP_OBJ)
 
 release: $(BIN)/strip_solutions
-	$(Q)sh tools/make_release build $(BIN)/strip_solutions
+	$(Q)bash tools/make_release build $(BIN)/strip_solutions
 
 release-check: release $(BIN)/imgtool
-	$(Q)sh tools/make_release check $(BIN)/strip_solutions $(BIN)/imgtool
+	$(Q)bash tools/make_release check $(BIN)/strip_solutions $(BIN)/imgtool

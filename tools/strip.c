@@ -5,6 +5,7 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <strings.h>
 
 /* Split literals: a whole marker in this file would make the release strip the stripper. */
 #define MARK_BEGIN "/* BEGIN " "SOLUTION */"
@@ -88,6 +89,42 @@ static pl_status fail(const pass *p, const line *l, const char *what)
     return pl_fail(p->diag, PL_ERR_PARSE, "%s:%d: %s", p->name, l->number, what);
 }
 
+/* Whether s[0..len) starts, ignoring case, with word and a character that cannot continue it. */
+static bool starts_word(const char *s, size_t len, const char *word)
+{
+    size_t n = strlen(word);
+    if (len < n || strncasecmp(s, word, n) != 0) return false;
+    return len == n || !isalnum((unsigned char)s[n]);
+}
+
+/* A comment that a reader (or a careless edit) would take for a marker but the stripper would not:
+ * a line comment instead of a block comment, a missing or doubled blank, another letter case. Such
+ * a line would pass through a release with the solution under it, so it is an error, never plain
+ * text. Looked for after every comment opener on the line: a BEGIN or END word followed by SOLUTION
+ * (blanks, '_' or '-' between), or a comment whose first word is STUB followed by a colon or
+ * nothing ("Stub bookkeeping" in prose is fine). */
+static bool near_miss(const line *l)
+{
+    for (size_t i = 0; i + 1 < l->len; i++) {
+        if (l->text[i] != '/' || (l->text[i + 1] != '*' && l->text[i + 1] != '/')) continue;
+        const char *c = l->text + i + 2, *end = l->text + l->len;
+        while (c < end && (*c == '*' || *c == '/' || isspace((unsigned char)*c))) c++;
+        if (starts_word(c, (size_t)(end - c), "stub")) {
+            const char *d = c + 4;
+            while (d < end && isspace((unsigned char)*d)) d++;
+            if (d == end || *d == ':' || (*d == '*' && d + 1 < end && d[1] == '/')) return true;
+        }
+        for (; c < end; c++) {
+            size_t w = starts_word(c, (size_t)(end - c), "begin") ? 5 : starts_word(c, (size_t)(end - c), "end") ? 3 : 0;
+            if (w == 0 || (c > l->text && isalnum((unsigned char)c[-1]))) continue;
+            const char *d = c + w;
+            while (d < end && (isspace((unsigned char)*d) || *d == '_' || *d == '-')) d++;
+            if (starts_word(d, (size_t)(end - d), "solution")) return true;
+        }
+    }
+    return false;
+}
+
 /* What a line is; a marker that shares its line with anything else is an error. */
 static pl_status classify(const pass *p, const line *l, line_kind *kind)
 {
@@ -110,6 +147,10 @@ static pl_status classify(const pass *p, const line *l, line_kind *kind)
         *kind = LINE_STUB;
         return PL_OK;
     }
+    if (near_miss(l))
+        return fail(p, l, "a comment that looks like a solution marker but is not spelt exactly `" MARK_BEGIN
+                          "`, `" MARK_END "` or `" MARK_STUB " <code> */`; expected the exact marker (the "
+                          "release would copy this line and the solution after it)");
     *kind = starts(s, n, MARK_BANNER) ? LINE_BANNER : LINE_PLAIN;
     return PL_OK;
 }
@@ -326,6 +367,40 @@ static pl_status track_task(pass *p, task_state *st, const line *l, line_kind ki
 
 /* ---- the pass ----------------------------------------------------------------------------- */
 
+/* Adds the line's braces to *depth, skipping comments (*in_comment carries a block comment to the
+ * next line), string and character literals. Depth 0 is file scope: a region there may be a whole
+ * helper removed without a stub; deeper, it sits in a function body and needs its STUB. */
+static void count_braces(const line *l, bool *in_comment, int *depth)
+{
+    for (size_t i = 0; i < l->len; i++) {
+        char c = l->text[i], next = i + 1 < l->len ? l->text[i + 1] : '\0';
+        if (*in_comment) {
+            if (c == '*' && next == '/') *in_comment = false, i++;
+        } else if (c == '/' && next == '*') {
+            *in_comment = true;
+            i++;
+        } else if (c == '/' && next == '/') {
+            return;
+        } else if (c == '"' || c == '\'') {
+            for (i++; i < l->len && l->text[i] != c; i++)
+                if (l->text[i] == '\\') i++;
+        } else if (c == '{') {
+            (*depth)++;
+        } else if (c == '}') {
+            (*depth)--;
+        }
+    }
+}
+
+/* A region inside a function body removed without a STUB would silently delete code from a
+ * function the student is given: an error at the region's BEGIN. */
+static pl_status stubless_in_body(const pass *p, const line *begin)
+{
+    return fail(p, begin, "solution region inside a function body has no STUB line; expected `" MARK_STUB
+                          " <code> */` right after its END SOLUTION marker (only a region at file scope "
+                          "may be removed whole)");
+}
+
 static pl_status run(pass *p, const char *in, size_t len)
 {
     if (memchr(in, '\0', len)) {
@@ -336,6 +411,8 @@ static pl_status run(pass *p, const char *in, size_t len)
     }
     bool in_region = false, after_end = false;
     bool last_blank = true;  /* the last line written was blank (the start of the file counts) */
+    bool in_comment = false;
+    int depth = 0, begin_depth = 0;  /* brace depth now, and at the latest BEGIN */
     line begin_line = {0};
     task_state st = TASK_NONE;
     size_t pos = 0;
@@ -345,6 +422,9 @@ static pl_status run(pass *p, const char *in, size_t len)
         pl_status s = classify(p, &l, &kind);
         if (s == PL_OK && p->banners) s = track_task(p, &st, &l, kind, after_end);
         if (s != PL_OK) return s;
+        if (after_end && kind != LINE_STUB && begin_depth > 0) return stubless_in_body(p, &begin_line);
+        if (kind == LINE_BEGIN) begin_depth = depth;
+        count_braces(&l, &in_comment, &depth);
         if (in_region) {
             if (kind == LINE_BEGIN) {
                 char msg[160];
@@ -386,6 +466,7 @@ static pl_status run(pass *p, const char *in, size_t len)
     }
     if (in_region) return fail(p, &begin_line, "BEGIN SOLUTION never closed; expected END SOLUTION before the "
                                               "end of the file");
+    if (after_end && begin_depth > 0) return stubless_in_body(p, &begin_line);
     if (p->banners && st != TASK_NONE && st != TASK_DONE) {
         line l = {0};
         l.number = p->current.line;

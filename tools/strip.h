@@ -4,8 +4,10 @@
  * Marker grammar, line by line (a marker line holds its marker and nothing else but blanks):
  *   BEGIN SOLUTION marker ... END SOLUTION marker   removed, both lines included;
  *   a STUB line directly after an END marker        becomes its code at the same indentation.
- * A region at file scope may have no STUB line (solution-only helpers). A STUB line anywhere else,
- * a nested BEGIN, an END without BEGIN and a region left open are errors. Line endings (LF or
+ * A region at file scope (brace depth 0) may have no STUB line: it removes solution-only helpers
+ * whole. A region inside a function body must have one. A STUB line anywhere else, a nested BEGIN,
+ * an END without BEGIN, a region left open, and a comment that looks like a marker but is not
+ * spelt exactly like one (a line comment, other blanks, other letter case) are errors. Line endings (LF or
  * CRLF) are kept as they are. The exact marker texts are in STYLE.md's task example; this code
  * spells them as split string literals, so the stripper's own sources hold no marker and pass
  * through a release unchanged. */

@@ -6,12 +6,12 @@
  *   strip_solutions --tasks FILE...  validate markers and task banners; print one line a task:
  *                                    "<part> <id> <function> <file>:<line>"
  * Exit status: 0 when everything is valid, 2 otherwise (each problem printed as file:line: ...). */
-#include <errno.h>
+#include <stdbool.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 #include "strip.h"
-#include "../framework/image.h"
+#include "../framework/file.h"
 
 static void usage(FILE *f)
 {
@@ -20,31 +20,8 @@ static void usage(FILE *f)
                "       strip_solutions --tasks FILE...\n");
 }
 
-/* Reads the whole file into a malloc'ed buffer. */
-static pl_status read_all(const char *path, char **data, size_t *len, pl_diag *diag)
-{
-    FILE *f = fopen(path, "rb");
-    if (!f) return pl_fail(diag, PL_ERR_IO, "%s: cannot read: %s", path, strerror(errno));
-    size_t cap = 1 << 16, n = 0;
-    char *buf = malloc(cap);
-    while (buf) {
-        n += fread(buf + n, 1, cap - n, f);
-        if (n < cap) break;
-        char *grown = realloc(buf, cap *= 2);
-        if (!grown) free(buf);
-        buf = grown;
-    }
-    bool failed = ferror(f);
-    fclose(f);
-    if (!buf) return pl_fail(diag, PL_ERR_NOMEM, "%s: out of memory", path);
-    if (failed) {
-        free(buf);
-        return pl_fail(diag, PL_ERR_IO, "%s: cannot read", path);
-    }
-    *data = buf;
-    *len = n;
-    return PL_OK;
-}
+/* No source file of the lab comes near this; a bigger one is not a source file. */
+#define SOURCE_MAX_BYTES (16u << 20)
 
 /* One file in one mode; prints its problem or its tasks. */
 static bool process(const char *mode, const char *src, const char *dst)
@@ -52,7 +29,7 @@ static bool process(const char *mode, const char *src, const char *dst)
     pl_diag diag = pl_diag_default();
     char *in = NULL, *out = NULL;
     size_t len = 0;
-    pl_status s = read_all(src, &in, &len, &diag);
+    pl_status s = file_read_all(src, "source file", SOURCE_MAX_BYTES, &in, &len, &diag);
     if (s == PL_OK && strcmp(mode, "--tasks") == 0) {
         strip_task *tasks = NULL;
         int num_tasks = 0;

@@ -6,7 +6,7 @@
 #include "../../framework/todo.h"
 
 /* === PART 4 | TASK 4.2 | russian_roulette ===========================================
- * End long paths at random without bias (handout/part4.md, 4.2). The rule of this solution:
+ * End long paths at random without bias (handout/part4.md, 4.2). A rule that works well:
  * bounces 1, 2 and 3 are always taken; before bounce k >= 4 the path goes on with probability
  *   q = min(1, max(beta.r, beta.g, beta.b)),
  * and a surviving path divides beta by q: it carries the paths that were ended.
@@ -34,7 +34,7 @@ bool russian_roulette(rgb *beta, int next_depth, rng *g)
  *   L = sum_{k=1..max_depth} beta_k * one_bounce_radiance(vertex k),
  *   beta_1 = 1,  beta_{k+1} = beta_k * f(wo, wi) cos(theta_i) / pdf(wi)   (wi from bsdf_sample_f)
  * With -o 0 (!opts->accumulate) only the k = max_depth term is kept. Loop or recurse, as you like.
- * This solution spends the -l light samples at the first vertex only and samples each light once
+ * A cheaper choice spends the -l light samples at the first vertex only and samples each light once
  * at deeper vertices, where the path's own noise dominates (handout/part4.md, 4.1: same mean,
  * about a quarter less time in the Cornell boxes for the same noise). Calling one_bounce_radiance
  * with ctx at every vertex, as CS184 does, is just as correct.

@@ -1,5 +1,6 @@
 /* Test machinery: not part of any assignment. The release stripper's rules (tools/strip.h). */
 #include "../common/test.h"
+#include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 #include "../../tools/strip.h"
@@ -146,6 +147,49 @@ static void test_strip__rejects_empty_stub(void **state)
     assert_rejected(BEGIN "\n" END "\n" STUB("") "\n", "t.c:3:", "empty STUB");
 }
 
+/* Regression (issue 7, defect 13): a marker spelt almost right used to be copied into the release as
+ * plain text, with the solution under it. Every near miss is an error at its line. The literals are
+ * split so that this file holds no near miss itself. */
+static void test_strip__rejects_near_miss_markers(void **state)
+{
+    (void)state;
+    const char *near[] = {
+        "/* BEGIN" " SOLUTION  */", "/*  BEGIN" " SOLUTION */", "// BEGIN" " SOLUTION", "/*BEGIN" " SOLUTION*/",
+        "/* begin" " solution */", "/* Begin" " Solution */", "/* BEGIN" "_SOLUTION */", "/* BEGIN" "  SOLUTION */",
+        "/* END" " SOLUTION  */", "// END" " SOLUTION", "/*END" " SOLUTION*/", "/* end" " solution */",
+        "/* STUB" " : return 0; */", "// STUB" ": return 0;", "/*STUB" ": return 0; */", "/* stub" ": return 0; */",
+        "/* STUB" " */", "int x; // END" " SOLUTION",
+    };
+    for (size_t i = 0; i < sizeof near / sizeof near[0]; i++) {
+        char in[256];
+        snprintf(in, sizeof in, "int f(void)\n{\n    %s\n    return 42;\n}\n", near[i]);
+        pl_diag diag = pl_diag_default();
+        char *out = NULL;
+        pl_status s = strip_text(in, strlen(in), "t.c", &out, &diag);
+        if (s != PL_ERR_PARSE || strncmp(diag.error, "t.c:3:", 6) != 0 || !strstr(diag.error, "looks like a solution marker"))
+            fail_msg("near miss %zu '%s': expected an error at t.c:3:, got status %d '%s'", i, near[i], s, diag.error);
+        free(out);
+    }
+    /* Prose that names the words is not a marker. */
+    assert_strips_to("/* Stub bookkeeping: which tasks ran. */\n/* The end of the solution space. */\n",
+                     "/* Stub bookkeeping: which tasks ran. */\n/* The end of the solution space. */\n");
+}
+
+/* Regression (issue 7, defect 13): a region in a function body without a STUB used to vanish, leaving
+ * the student a function with part of its body silently gone. */
+static void test_strip__rejects_region_in_function_body_without_stub(void **state)
+{
+    (void)state;
+    assert_rejected("int f(void)\n{\n    " BEGIN "\n    return 1;\n    " END "\n}\n", "t.c:3:", "no STUB line");
+    assert_rejected("int f(void)\n{\n    " BEGIN "\n    return 1;\n    " END "\n", "t.c:3:", "no STUB line");
+    assert_rejected("struct s { int a; };\nint f(void) {\n    if (1) {\n" BEGIN "\nx();\n" END "\n    }\n}\n", "t.c:4:",
+                    "no STUB line");
+    /* At file scope, even after braces in strings, characters and comments, a region may go whole. */
+    assert_strips_to("const char *s = \"{\", c = '{';\n/* { */ // {\nint f(void) { return 1; }\n" BEGIN
+                     "\nstatic int h(void) { return 2; }\n" END "\nint g;\n",
+                     "const char *s = \"{\", c = '{';\n/* { */ // {\nint f(void) { return 1; }\nint g;\n");
+}
+
 /* ---- banners ----------------------------------------------------------------------------- */
 
 #define BANNER(part, id, fn) "/* === PART " part " | TASK " id " | " fn " ========\n * Does it.\n * ======== */\n"
@@ -256,6 +300,8 @@ int strip_tests(void)
         cmocka_unit_test(test_strip__rejects_stub_inside_region),
         cmocka_unit_test(test_strip__rejects_marker_sharing_its_line),
         cmocka_unit_test(test_strip__rejects_empty_stub),
+        cmocka_unit_test(test_strip__rejects_near_miss_markers),
+        cmocka_unit_test(test_strip__rejects_region_in_function_body_without_stub),
         cmocka_unit_test(test_strip_tasks__lists_banners_in_order),
         cmocka_unit_test(test_strip_tasks__file_without_banners_has_no_tasks),
         cmocka_unit_test(test_strip_tasks__rejects_stub_naming_another_task),
