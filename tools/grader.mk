@@ -10,3 +10,20 @@ $(BIN)/grade: $(GRADE_OBJ)
 	@mkdir -p $(dir $@)
 	$(Q)$(CC) $(LDFLAGS) -o $@ $^ $(LDLIBS) $(shell pkg-config --libs jansson)
 $(BUILD)/tools/grade%.o: CPPFLAGS += $(shell pkg-config --cflags jansson)
+
+# bin/references: the reference images (make references [FORCE=1] [CASES="part3 spot"] [SLURM=1]).
+REF_OBJ := $(BUILD)/tools/references.o $(BUILD)/tools/grade_cases.o $(BUILD)/tools/grade_run.o \
+           $(BUILD)/framework/file.o $(BUILD)/framework/status.o
+$(BIN)/references: $(REF_OBJ)
+	$(say) LD $@
+	@mkdir -p $(dir $@)
+	$(Q)$(CC) $(LDFLAGS) -o $@ $^ $(LDLIBS) $(shell pkg-config --libs jansson)
+$(BUILD)/tools/references.o: CPPFLAGS += $(shell pkg-config --cflags jansson)
+
+.PHONY: references grade
+references: $(BIN)/references $(BIN)/pathtracer
+	$(Q)$(BIN)/references $(if $(FORCE),--force) $(if $(SLURM),--slurm $(if $(SBATCH),--sbatch "$(SBATCH)")) $(CASES)
+
+# A student's make grade: this tree as it is, public cases, the report under out/grade/.
+grade: $(BIN)/grade
+	$(Q)$(BIN)/grade --out out/grade $(if $(PARTS),--parts $(PARTS))
