@@ -49,7 +49,10 @@ typedef struct {
     grade_part_spec parts[GRADE_NUM_PARTS];
 } grade_spec;
 
-pl_status grade_spec_load(const char *path, grade_spec *out, pl_diag *diag);
+/* grading/cases.json, plus the hidden cases of hidden_path when that file exists (NULL: none). */
+#define GRADE_CASES "grading/cases.json"
+#define GRADE_HIDDEN_CASES "grading/hidden/cases.json"
+pl_status grade_spec_load(const char *path, const char *hidden_path, grade_spec *out, pl_diag *diag);
 void grade_spec_free(grade_spec *s);
 
 /* ---- results ------------------------------------------------------------------------------- */
@@ -120,7 +123,7 @@ void grade_run_describe(const grade_run_result *r, char *out, size_t size);
 /* ---- one part -------------------------------------------------------------------------------- */
 
 typedef struct {
-    const char *root;          /* the solution's (instructor's) tree, or the student's tree */
+    const char *root;          /* the tree holding the other parts (the course's), or the student's tree */
     const char *submission;    /* a folder holding the submission's parts/, or NULL (cumulative) */
     const char *work;          /* scratch: build trees, renders, logs */
     const char *report;        /* the report folder (images and index.html) */

@@ -19,7 +19,7 @@ static pl_status read_flags(const char *path, const char *name, json_t *array, c
     return PL_OK;
 }
 
-/* Every field is checked, with the case named: an instructor's typo must not become a silent 0. */
+/* Every field is checked, with the case named: a typo in a case must not become a silent 0. */
 static pl_status read_case(const char *path, int part, json_t *j, grade_case *c, pl_diag *diag)
 {
     memset(c, 0, sizeof *c);
@@ -60,33 +60,53 @@ static pl_status read_case(const char *path, int part, json_t *j, grade_case *c,
     return st;
 }
 
-pl_status grade_spec_load(const char *path, grade_spec *out, pl_diag *diag)
+/* Adds the cases of one file's "parts" to out; base says whether parts must list all five. */
+static pl_status read_parts(const char *path, json_t *root, bool base, grade_spec *out, pl_diag *diag)
+{
+    json_t *parts = json_object_get(root, "parts");
+    if (!json_is_array(parts) || (base && json_array_size(parts) != GRADE_NUM_PARTS))
+        return pl_fail(diag, PL_ERR_PARSE, "%s: expected \"parts\": %s", path,
+                       base ? "one entry per part, 1 to 5" : "an array");
+    for (size_t k = 0; k < json_array_size(parts); k++) {
+        json_t *pj = json_array_get(parts, k), *cases = json_object_get(pj, "cases");
+        int part = (int)json_integer_value(json_object_get(pj, "part"));
+        if (part < 1 || part > GRADE_NUM_PARTS || (base && part != (int)k + 1) || !json_is_array(cases))
+            return pl_fail(diag, PL_ERR_PARSE, "%s: parts[%zu]: expected \"part\" 1..5 (in order) and \"cases\"",
+                           path, k);
+        grade_part_spec *p = &out->parts[part - 1];
+        p->part = part;
+        if (base) p->unit_points = json_number_value(json_object_get(pj, "unit_points"));
+        if (p->num_cases + json_array_size(cases) > GRADE_MAX_CASES)
+            return pl_fail(diag, PL_ERR_PARSE, "%s: part %d: more than %d cases", path, part, GRADE_MAX_CASES);
+        for (size_t i = 0; i < json_array_size(cases); i++) {
+            pl_status st = read_case(path, part, json_array_get(cases, i), &p->cases[p->num_cases++], diag);
+            if (st) return st;
+        }
+    }
+    return PL_OK;
+}
+
+pl_status grade_spec_load(const char *path, const char *hidden_path, grade_spec *out, pl_diag *diag)
 {
     memset(out, 0, sizeof *out);
     json_error_t err;
     json_t *root = json_load_file(path, JSON_REJECT_DUPLICATES, &err);
     if (!root) return pl_fail(diag, PL_ERR_PARSE, "%s:%d: %s", path, err.line, err.text);
-    pl_status st = PL_OK;
-    json_t *parts = json_object_get(root, "parts");
     out->family_alpha = json_number_value(json_object_get(root, "family_alpha"));
-    if (!(out->family_alpha > 0 && out->family_alpha < 0.1) || !json_is_array(parts) ||
-        json_array_size(parts) != GRADE_NUM_PARTS)
-        st = pl_fail(diag, PL_ERR_PARSE, "%s: expected \"family_alpha\" in (0, 0.1) and \"parts\": %d entries",
-                     path, GRADE_NUM_PARTS);
-    for (int k = 0; !st && k < GRADE_NUM_PARTS; k++) {
-        json_t *pj = json_array_get(parts, (size_t)k), *cases = json_object_get(pj, "cases");
-        grade_part_spec *p = &out->parts[k];
-        p->part = (int)json_integer_value(json_object_get(pj, "part"));
-        p->unit_points = json_number_value(json_object_get(pj, "unit_points"));
-        if (p->part != k + 1 || !json_is_array(cases) || json_array_size(cases) > GRADE_MAX_CASES) {
-            st = pl_fail(diag, PL_ERR_PARSE, "%s: parts[%d]: expected \"part\": %d and at most %d \"cases\"", path, k,
-                         k + 1, GRADE_MAX_CASES);
-            break;
-        }
-        for (size_t i = 0; !st && i < json_array_size(cases); i++)
-            st = read_case(path, p->part, json_array_get(cases, i), &p->cases[p->num_cases++], diag);
-    }
+    pl_status st = out->family_alpha > 0 && out->family_alpha < 0.1
+                       ? read_parts(path, root, true, out, diag)
+                       : pl_fail(diag, PL_ERR_PARSE, "%s: expected \"family_alpha\" in (0, 0.1)", path);
     json_decref(root);
+
+    /* The hidden cases, where this tree has them (never in a student's). */
+    FILE *probe = hidden_path ? fopen(hidden_path, "r") : NULL;
+    if (!st && probe) {
+        fclose(probe);
+        root = json_load_file(hidden_path, JSON_REJECT_DUPLICATES, &err);
+        st = root ? read_parts(hidden_path, root, false, out, diag)
+                  : pl_fail(diag, PL_ERR_PARSE, "%s:%d: %s", hidden_path, err.line, err.text);
+        json_decref(root);
+    }
     if (st) grade_spec_free(out);
     return st;
 }

@@ -113,7 +113,7 @@ int main(int argc, char **argv)
 
     pl_diag diag = pl_diag_default();
     grade_spec spec;
-    if (grade_spec_load("grading/cases.json", &spec, &diag) != PL_OK) {
+    if (grade_spec_load(GRADE_CASES, GRADE_HIDDEN_CASES, &spec, &diag) != PL_OK) {
         fprintf(stderr, "grade: %s\n", diag.error);
         return 2;
     }

@@ -17,7 +17,7 @@
 
 /* ---- the tree: the submission's part N among the solution's other parts ----------------------- */
 
-/* parts/part<N>_<topic>: the folder name of part n in root, e.g. "part2_bvh". */
+/* The folder name of part n in root, e.g. "part2_bvh". */
 static bool part_folder(const char *root, int n, char *out, size_t size)
 {
     char parts[4096], prefix[16];
@@ -51,7 +51,7 @@ static bool make_tree(const grade_env *env, int n, char *tree, size_t size, grad
     snprintf(tree, size, "%s/part%d/tree", env->work, n);
     snprintf(log, sizeof log, "%s/part%d/copy.log", env->work, n);
     if (!part_folder(env->root, n, folder, sizeof folder)) {
-        snprintf(r->suite_reason, sizeof r->suite_reason, "the solution has no parts/part%d_*", n);
+        snprintf(r->suite_reason, sizeof r->suite_reason, "no folder for part %d under parts/", n);
         return false;
     }
     char *rm[] = {"rm", "-rf", tree, NULL}, *mk[] = {"mkdir", "-p", tree, NULL};

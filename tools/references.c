@@ -122,7 +122,8 @@ static void case_key(const grade_case *c, uint64_t code, char out[17])
 
 typedef struct {
     const grade_case *spec;
-    int part, index;           /* index: the case's place in the spec, for its seed */
+    int part;
+    unsigned long long seed;   /* REFERENCE_SEED + a hash of the case's name: stable as cases come and go */
     char key[17];
     char range_dir[512];       /* build/references/part<N>/<case> */
     char out_base[512];        /* reference_images/part<N>/<case> */
@@ -149,7 +150,7 @@ static void range_command(const ref_case *rc, int r, command *cmd)
     snprintf(cmd->buf[1], sizeof cmd->buf[1], "%d", rc->spec->height);
     snprintf(cmd->buf[2], sizeof cmd->buf[2], "%d", rc->spec->reference_samples);
     snprintf(cmd->buf[3], sizeof cmd->buf[3], "%d:%d", a, b);
-    snprintf(cmd->buf[4], sizeof cmd->buf[4], "%llu", REFERENCE_SEED + (unsigned long long)rc->index);
+    snprintf(cmd->buf[4], sizeof cmd->buf[4], "%llu", rc->seed);
     range_path(rc, r, cmd->buf[5], sizeof cmd->buf[5]);
     cmd->argv[n++] = "bin/pathtracer";
     for (int i = 0; i < nf; i++) cmd->argv[n++] = flags[i];
@@ -227,7 +228,7 @@ static bool merge_case(const ref_case *rc)
         strcat(line, " ");
     }
     json_t *j = json_pack("{s:s, s:s, s:i, s:i, s:I, s:s}", "key", rc->key, "case", rc->spec->name, "part", rc->part,
-                          "samples", rc->spec->reference_samples, "seed", (json_int_t)(REFERENCE_SEED + rc->index),
+                          "samples", rc->spec->reference_samples, "seed", (json_int_t)rc->seed,
                           "command_of_the_first_range", line);
     char *text = json_dumps(j, JSON_INDENT(2) | JSON_SORT_KEYS);
     json_decref(j);
@@ -394,7 +395,7 @@ int main(int argc, char **argv)
     if (jobs < 1) jobs = 1;
     pl_diag diag = pl_diag_default();
     grade_spec spec;
-    if (grade_spec_load("grading/cases.json", &spec, &diag) != PL_OK) {
+    if (grade_spec_load(GRADE_CASES, GRADE_HIDDEN_CASES, &spec, &diag) != PL_OK) {
         fprintf(stderr, "references: %s\n", diag.error);
         return 2;
     }
@@ -402,16 +403,16 @@ int main(int argc, char **argv)
 
     /* The cases asked for, with their keys; the ones up to date are left alone. */
     ref_case cases[GRADE_NUM_PARTS * GRADE_MAX_CASES];
-    int n = 0, index = 0;
+    int n = 0;
     for (int k = 0; k < GRADE_NUM_PARTS; k++)
-        for (int i = 0; i < spec.parts[k].num_cases; i++, index++) {
+        for (int i = 0; i < spec.parts[k].num_cases; i++) {
             const grade_case *c = &spec.parts[k].cases[i];
             if (!wanted(c, k + 1, argc - first, argv + first)) continue;
             ref_case *rc = &cases[n];
             memset(rc, 0, sizeof *rc);
             rc->spec = c;
             rc->part = k + 1;
-            rc->index = index;
+            rc->seed = REFERENCE_SEED + fnv_str(1469598103934665603ull, c->name) % 1000000ull;
             case_key(c, code, rc->key);
             snprintf(rc->range_dir, sizeof rc->range_dir, "build/references/part%d/%s/%s", rc->part, c->name, rc->key);
             snprintf(rc->out_base, sizeof rc->out_base, "reference_images/part%d/%s", rc->part, c->name);

@@ -178,5 +178,5 @@ int lights_tests(void)
         cmocka_unit_test(test_spot_light__cone_and_falloff),
         cmocka_unit_test(test_ambient_light__uniform_over_the_upper_hemisphere),
     };
-    return cmocka_run_group_tests_name("framework: lights", tests, NULL, NULL);
+    return cmocka_run_group_tests_name("framework: lights", tests, test_setup, NULL);  /* forget stubs earlier groups ran */
 }

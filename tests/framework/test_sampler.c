@@ -35,5 +35,5 @@ int sampler_tests(void)
         cmocka_unit_test(test_uniform_hemisphere__matches_its_pdf),
         cmocka_unit_test(test_cosine_hemisphere__matches_its_pdf),
     };
-    return cmocka_run_group_tests_name("framework: hemisphere samplers", tests, NULL, NULL);
+    return cmocka_run_group_tests_name("framework: hemisphere samplers", tests, test_setup, NULL);  /* forget stubs earlier groups ran */
 }

@@ -1,6 +1,6 @@
 #!/bin/sh
 # Test machinery: a real single-node Slurm cluster from Debian's packages, for the reference job
-# array test (tests/slurm/test_references.sh). Needs root: it runs munged, slurmctld and slurmd as
+# array test. Needs root: it runs munged, slurmctld and slurmd as
 # root in a container, with proctrack/linuxproc and task/none (no cgroups), no accounting.
 #   tests/slurm/cluster.sh up DIR     start the daemons, state and logs under DIR; prints SLURM_CONF
 #   tests/slurm/cluster.sh down DIR   stop exactly the daemons that `up DIR` started
