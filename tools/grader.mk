@@ -27,3 +27,8 @@ references: $(BIN)/references $(BIN)/pathtracer
 # A student's make grade: this tree as it is, public cases, the report under out/grade/.
 grade: $(BIN)/grade
 	$(Q)$(BIN)/grade --out out/grade $(if $(PARTS),--parts $(PARTS))
+
+# The Slurm test (issue 12): a real single-node cluster; skips with a reason when not root.
+.PHONY: test-slurm
+test-slurm:
+	$(Q)sh tests/slurm/run.sh

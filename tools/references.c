@@ -14,6 +14,7 @@
  *   bin/references --status [CASE...]                                 what is done, missing, stale
  *   bin/references --merge-only [CASE...]                             merge finished ranges (the
  *                                                                     Slurm array's last job)
+ *   --out DIR (reference_images) and --work DIR (build/references) move the results and the ranges.
  * CASE is a case name or part<N>; none means every case. */
 #include "grade.h"
 #include "../framework/file.h"
@@ -297,13 +298,14 @@ static void *worker(void *arg)
 
 /* One task per missing range: the array's tasks read their command from tasks.txt. A dependent job
  * merges when every task has succeeded. */
-static int submit_slurm(ref_case *cases, int n, const char *sbatch_args)
+static int submit_slurm(ref_case *cases, int n, const char *sbatch_args, const char *out_dir, const char *work_dir)
 {
-    const char *dir = "build/references/slurm";
-    char tasks[256], script[256], cmdline[8192];
+    char dir[600], tasks[700], script[700], cmdline[8192];
+    snprintf(dir, sizeof dir, "%s/slurm", work_dir);
     snprintf(tasks, sizeof tasks, "%s/tasks.txt", dir);
     snprintf(script, sizeof script, "%s/array.sh", dir);
-    mkdir("build", 0755), mkdir("build/references", 0755), mkdir(dir, 0755);
+    snprintf(cmdline, sizeof cmdline, "mkdir -p '%s'", dir);
+    if (system(cmdline) != 0) return fprintf(stderr, "references: cannot create %s\n", dir), 1;
     FILE *f = fopen(tasks, "w");
     if (!f) return fprintf(stderr, "references: cannot write %s\n", tasks), 1;
     int count = 0;
@@ -343,8 +345,8 @@ static int submit_slurm(ref_case *cases, int n, const char *sbatch_args)
     }
     snprintf(cmdline, sizeof cmdline,
              "sbatch --parsable --chdir=%s --job-name=pl-ref-merge --output=%s/merge.log %s%s %s --wrap "
-             "'bin/references --merge-only%s'", cwd, dir, array_id[0] ? "--dependency=afterok:" : "", array_id,
-             sbatch_args, names);
+             "'bin/references --merge-only --out %s --work %s%s'", cwd, dir, array_id[0] ? "--dependency=afterok:" : "",
+             array_id, sbatch_args, out_dir, work_dir, names);
     FILE *p = popen(cmdline, "r");
     char merge_id[64] = "";
     if (!p || !fgets(merge_id, sizeof merge_id, p)) return fprintf(stderr, "references: sbatch failed\n"), 1;
@@ -380,7 +382,7 @@ int main(int argc, char **argv)
 {
     bool force = false, slurm = false, status = false, merge_only = false;
     int jobs = (int)sysconf(_SC_NPROCESSORS_ONLN);
-    const char *sbatch_args = "";
+    const char *sbatch_args = "", *out_dir = "reference_images", *work_dir = "build/references";
     int first = 1;
     for (; first < argc && argv[first][0] == '-'; first++) {
         const char *a = argv[first];
@@ -390,6 +392,8 @@ int main(int argc, char **argv)
         else if (!strcmp(a, "--merge-only")) merge_only = true;
         else if (!strcmp(a, "--jobs") && first + 1 < argc) jobs = atoi(argv[++first]);
         else if (!strcmp(a, "--sbatch") && first + 1 < argc) sbatch_args = argv[++first];
+        else if (!strcmp(a, "--out") && first + 1 < argc) out_dir = argv[++first];
+        else if (!strcmp(a, "--work") && first + 1 < argc) work_dir = argv[++first];
         else return usage();
     }
     if (jobs < 1) jobs = 1;
@@ -414,8 +418,8 @@ int main(int argc, char **argv)
             rc->part = k + 1;
             rc->seed = REFERENCE_SEED + fnv_str(1469598103934665603ull, c->name) % 1000000ull;
             case_key(c, code, rc->key);
-            snprintf(rc->range_dir, sizeof rc->range_dir, "build/references/part%d/%s/%s", rc->part, c->name, rc->key);
-            snprintf(rc->out_base, sizeof rc->out_base, "reference_images/part%d/%s", rc->part, c->name);
+            snprintf(rc->range_dir, sizeof rc->range_dir, "%s/part%d/%s/%s", work_dir, rc->part, c->name, rc->key);
+            snprintf(rc->out_base, sizeof rc->out_base, "%s/part%d/%s", out_dir, rc->part, c->name);
             rc->num_ranges = (c->reference_samples + RANGE_SAMPLES - 1) / RANGE_SAMPLES;
             char have[17];
             recorded_key(rc, have);
@@ -427,7 +431,7 @@ int main(int argc, char **argv)
             }
             if (!force && !strcmp(have, rc->key)) continue;
             char mk[700];
-            snprintf(mk, sizeof mk, "mkdir -p %s reference_images/part%d", rc->range_dir, rc->part);
+            snprintf(mk, sizeof mk, "mkdir -p '%s' '%s/part%d'", rc->range_dir, out_dir, rc->part);
             if (system(mk) != 0) return 1;
             n++;
         }
@@ -436,7 +440,7 @@ int main(int argc, char **argv)
         printf("references: every reference is up to date (--force renders them again)\n");
         return 0;
     }
-    if (slurm) return submit_slurm(cases, n, sbatch_args);
+    if (slurm) return submit_slurm(cases, n, sbatch_args, out_dir, work_dir);
 
     int code_exit = 0;
     if (!merge_only) {
