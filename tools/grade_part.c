@@ -1,6 +1,7 @@
 /* Grader machinery: not part of any assignment. One part: its tree, its suite, its image cases. */
 #include "grade.h"
 #include "grade_image.h"
+#include "grade_inspect.h"
 #include <dirent.h>
 #include <libxml/parser.h>
 #include <libxml/tree.h>
@@ -144,7 +145,9 @@ static void run_suite(const grade_env *env, const char *tree, const grade_part_s
     snprintf(dir, sizeof dir, "%s/part%d/suite", env->work, p->part);
     char *rm[] = {"rm", "-rf", dir, NULL}, *mk[] = {"mkdir", "-p", dir, NULL};
     run_quiet(rm, NULL);
-    run_quiet(mk, NULL);
+    /* Made by the suite's own user, so the suite can write its results there (and nothing else). */
+    grade_run_opts mo = {BUILD_SECONDS, NULL, NULL, 0, NULL, env->submission != NULL};
+    grade_run(mk, &mo);
     snprintf(pattern, sizeof pattern, "%s/%%g.xml", dir);
     snprintf(xml_env, sizeof xml_env, "CMOCKA_XML_FILE=%s", pattern);
     snprintf(log, sizeof log, "%s/part%d/suite.log", env->work, p->part);
@@ -203,6 +206,17 @@ void grade_part(const grade_env *env, const grade_spec *spec, const grade_part_s
         if (!r->suite_reason[0]) snprintf(r->suite_reason, sizeof r->suite_reason, "the part does not build");
         for (int i = 0; i < r->num_cases; i++) snprintf(r->cases[i].reason, sizeof r->cases[i].reason, "%s", r->suite_reason);
         return;
+    }
+    /* A submission's part keeps to the allow-list before any of it runs. */
+    char folder[256], why[sizeof r->suite_reason];
+    if (env->submission && part_folder(env->root, p->part, folder, sizeof folder)) {
+        char scratch[4200];
+        snprintf(scratch, sizeof scratch, "%s/build", tree);
+        if (!grade_inspect_part(tree, folder, scratch, true, why, sizeof why)) {
+            snprintf(r->suite_reason, sizeof r->suite_reason, "%s", why);
+            for (int i = 0; i < r->num_cases; i++) snprintf(r->cases[i].reason, sizeof r->cases[i].reason, "%s", why);
+            return;
+        }
     }
     run_suite(env, tree, p, r);
     for (int i = 0; i < r->num_cases; i++) grade_image_case(env, spec, tree, p->part, &r->cases[i]);
