@@ -1,6 +1,7 @@
 /* The command line: CS184's short flags (some take two values) and pathlab's long options.
  * Parsed by hand because getopt cannot take the two-value flags -r W H and -a B T. */
 #include "cli.h"
+#include "dae.h"
 #include <errno.h>
 #include <limits.h>
 #include <stdlib.h>
@@ -22,6 +23,7 @@ options options_default(void)
     o.adaptive_batch = 32;
     o.adaptive_tol = 0.05f;
     o.max_leaf_size = 4;
+    o.max_primitives = dae_limits_default().max_primitives;
     return o;
 }
 
@@ -51,6 +53,7 @@ void cli_print_usage(FILE *f, const char *prog)
             "  --no-bvh          intersect by linear scan even when part 2 is implemented\n"
             "  --no-rr           no Russian roulette: every path runs to -m bounces (part 4)\n"
             "  --leaf-size N     BVH max primitives per leaf (4)\n"
+            "  --max-primitives N  refuse scenes with more triangles + spheres (2000000; guards memory)\n"
             "  --heatmap FILE    write a PNG of BVH nodes visited per pixel\n",
             prog);
 }
@@ -161,6 +164,11 @@ pl_status cli_parse(int argc, char **argv, options *out, cli_action *action, pl_
         else if (!strcmp(a, "--no-bvh")) o.linear_scan = true;
         else if (!strcmp(a, "--no-rr")) o.no_roulette = true;
         else if (!strcmp(a, "--leaf-size")) s = parse_int(a, VALUE(1), 1, 255, &o.max_leaf_size, d), i++;
+        else if (!strcmp(a, "--max-primitives")) {
+            int v = 0;
+            s = parse_int(a, VALUE(1), 1, 1 << 30, &v, d), i++;
+            o.max_primitives = v;
+        }
         else if (!strcmp(a, "--heatmap")) { if (!VALUE(1)) s = pl_fail(d, PL_ERR_INVALID, "--heatmap: expected a .png file name"); o.heatmap = VALUE(1); i++; }
         else return pl_fail(d, PL_ERR_INVALID, "unknown option '%s'", a);
     }

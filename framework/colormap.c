@@ -19,13 +19,14 @@ void colormap_rate(float t, uint8_t out[3])
     out[2] = (uint8_t)(b * 255.0f + 0.5f);
 }
 
-pl_status rate_map_write(const char *path, const int *samples, int width, int height, int spp, pl_diag *diag)
+pl_status rate_map_encode(FILE *f, const void *user, pl_diag *diag)
 {
-    size_t n = (size_t)width * (size_t)height;
+    const rate_map *m = user;
+    size_t n = (size_t)m->width * (size_t)m->height;
     uint8_t *bytes = malloc(n * 3);
-    if (!bytes) return pl_fail(diag, PL_ERR_NOMEM, "%s: out of memory", path);
-    for (size_t i = 0; i < n; i++) colormap_rate((float)samples[i] / (float)spp, bytes + 3 * i);
-    pl_status s = image_write_png_rgb8(bytes, width, height, path, diag);
+    if (!bytes) return pl_fail(diag, PL_ERR_NOMEM, "out of memory for a %dx%d rate map", m->width, m->height);
+    for (size_t i = 0; i < n; i++) colormap_rate((float)m->samples[i] / (float)m->spp, bytes + 3 * i);
+    pl_status s = image_encode_png_rgb8(f, bytes, m->width, m->height, diag);
     free(bytes);
     return s;
 }

@@ -3,12 +3,19 @@
 #define PL_COLORMAP_H
 
 #include <stdint.h>
+#include <stdio.h>
 #include "status.h"
 
 /* CS184's rate colours: t = 0 blue, 0.5 green, 1 red, linear blends between; t is clamped. */
 void colormap_rate(float t, uint8_t out[3]);
 
-/* Writes the sample-rate PNG: each pixel coloured by samples[i] / spp (top row first). */
-pl_status rate_map_write(const char *path, const int *samples, int width, int height, int spp, pl_diag *diag);
+/* The sample-rate PNG: each pixel coloured by samples[i] / spp (top row first). */
+typedef struct {
+    const int *samples;  /* per pixel, top row first; not owned */
+    int width, height, spp;
+} rate_map;
+
+/* Encodes a rate_map (user) as PNG to f (an output_encode_fn). */
+pl_status rate_map_encode(FILE *f, const void *user, pl_diag *diag);
 
 #endif

@@ -2,6 +2,7 @@
 #include "file.h"
 #include <errno.h>
 #include <fcntl.h>
+#include <signal.h>
 #include <stdbool.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -69,26 +70,140 @@ pl_status file_read_all(const char *path, const char *what, size_t max_bytes, ch
 
 /* ---- writing --------------------------------------------------------------------------------- */
 
+/* Temporary files still to be removed if the process is told to stop. The table is fixed-size
+ * and plain chars so the signal handler may walk it (async-signal-safe: no malloc, no stdio). */
+#define MAX_TEMPS 16
+static char temp_paths[MAX_TEMPS][4096];
+static volatile sig_atomic_t temp_used[MAX_TEMPS];
+static bool cleanup_installed;
+
+static void remove_temps_and_die(int sig)
+{
+    for (int i = 0; i < MAX_TEMPS; i++)
+        if (temp_used[i]) unlink(temp_paths[i]);
+    signal(sig, SIG_DFL);
+    raise(sig);
+}
+
+/* Register and forget with the stop signals blocked, so the handler never sees half an entry. */
+static int temp_register(const char *path)
+{
+    sigset_t block, old;
+    sigemptyset(&block);
+    sigaddset(&block, SIGINT);
+    sigaddset(&block, SIGTERM);
+    sigaddset(&block, SIGHUP);
+    sigprocmask(SIG_BLOCK, &block, &old);
+    if (!cleanup_installed) {
+        struct sigaction sa;
+        memset(&sa, 0, sizeof sa);
+        sa.sa_handler = remove_temps_and_die;
+        sigaction(SIGINT, &sa, NULL);
+        sigaction(SIGTERM, &sa, NULL);
+        sigaction(SIGHUP, &sa, NULL);
+        cleanup_installed = true;
+    }
+    int slot = -1;
+    for (int i = 0; i < MAX_TEMPS && slot < 0; i++)
+        if (!temp_used[i] && strlen(path) < sizeof temp_paths[i]) {
+            snprintf(temp_paths[i], sizeof temp_paths[i], "%s", path);
+            temp_used[i] = 1;
+            slot = i;
+        }
+    sigprocmask(SIG_SETMASK, &old, NULL);
+    return slot;
+}
+
+static void temp_forget(int slot)
+{
+    if (slot >= 0) temp_used[slot] = 0;
+}
+
+pl_status file_temp_create(const char *path, file_temp *t, pl_diag *diag)
+{
+    memset(t, 0, sizeof *t);
+    t->slot = -1;
+    /* In the target's folder (rename cannot cross filesystems), hidden, with a random suffix that
+     * mkstemp creates with O_CREAT | O_EXCL: a name planted in advance, even a symlink, makes it
+     * pick another name instead of following it. */
+    const char *slash = strrchr(path, '/');
+    size_t dir_len = slash ? (size_t)(slash - path) + 1 : 0;
+    size_t n = strlen(path) + 16;
+    t->tmp = malloc(n);
+    t->path = strdup(path);
+    if (!t->tmp || !t->path) {
+        file_temp_discard(t);
+        return pl_fail(diag, PL_ERR_NOMEM, "%s: out of memory", path);
+    }
+    snprintf(t->tmp, n, "%.*s.%s.XXXXXX", (int)dir_len, path, path + dir_len);
+    int fd = mkstemp(t->tmp);
+    if (fd < 0) {
+        pl_status st = pl_fail(diag, PL_ERR_IO, "%s: cannot write into its folder: %s", path, strerror(errno));
+        free(t->tmp);
+        t->tmp = NULL;
+        file_temp_discard(t);
+        return st;
+    }
+    /* mkstemp makes the file 0600; an output is an ordinary file: 0666 less the umask. */
+    mode_t mask = umask(0);
+    umask(mask);
+    if (fchmod(fd, 0666 & ~mask) != 0) { /* keep 0600: still correct, only less shared */ }
+    t->slot = temp_register(t->tmp);
+    t->f = fdopen(fd, "wb");
+    if (!t->f) {
+        close(fd);
+        pl_status st = pl_fail(diag, PL_ERR_IO, "%s: cannot write: %s", path, strerror(errno));
+        file_temp_discard(t);
+        return st;
+    }
+    return PL_OK;
+}
+
+pl_status file_temp_close(file_temp *t, pl_diag *diag)
+{
+    if (!t->f) return PL_OK;
+    bool ok = !ferror(t->f);
+    ok = fclose(t->f) == 0 && ok;  /* a full disk often shows only here */
+    t->f = NULL;
+    if (!ok) return pl_fail(diag, PL_ERR_IO, "%s: cannot write: %s", t->path, strerror(errno ? errno : EIO));
+    return PL_OK;
+}
+
+pl_status file_temp_commit(file_temp *t, pl_diag *diag)
+{
+    pl_status st = file_temp_close(t, diag);
+    if (st == PL_OK && rename(t->tmp, t->path) != 0)
+        st = pl_fail(diag, PL_ERR_IO, "%s: cannot write: %s", t->path, strerror(errno));
+    if (st == PL_OK) {
+        temp_forget(t->slot);
+        t->slot = -1;
+        free(t->tmp);
+        t->tmp = NULL;
+    }
+    file_temp_discard(t);
+    return st;
+}
+
+void file_temp_discard(file_temp *t)
+{
+    if (t->f) fclose(t->f);
+    if (t->tmp) unlink(t->tmp);
+    temp_forget(t->slot);
+    free(t->tmp);
+    free(t->path);
+    memset(t, 0, sizeof *t);
+    t->slot = -1;
+}
+
 pl_status file_write_atomic(const char *path, const void *data, size_t len, pl_diag *diag)
 {
-    size_t n = strlen(path) + 32;
-    char *tmp = malloc(n);
-    if (!tmp) return pl_fail(diag, PL_ERR_NOMEM, "%s: out of memory", path);
-    snprintf(tmp, n, "%s.tmp.%ld", path, (long)getpid());
-    FILE *f = fopen(tmp, "wb");
-    if (!f) {
-        pl_status s = pl_fail(diag, PL_ERR_IO, "%s: cannot write: %s", path, strerror(errno));
-        free(tmp);
-        return s;
+    file_temp t;
+    pl_status st = file_temp_create(path, &t, diag);
+    if (st) return st;
+    if (fwrite(data, 1, len, t.f) != len) {
+        st = pl_fail(diag, PL_ERR_IO, "%s: cannot write: %s", path, strerror(errno));
+        file_temp_discard(&t);
+        return st;
     }
-    bool ok = fwrite(data, 1, len, f) == len;
-    ok = (fclose(f) == 0) && ok;
-    if (!ok || rename(tmp, path) != 0) {
-        pl_status s = pl_fail(diag, PL_ERR_IO, "%s: cannot write: %s", path, strerror(errno));
-        remove(tmp);
-        free(tmp);
-        return s;
-    }
-    free(tmp);
-    return PL_OK;
+    return file_temp_commit(&t, diag);
 }

@@ -8,6 +8,7 @@
 #define PL_FILE_H
 
 #include <stddef.h>
+#include <stdio.h>
 #include "status.h"
 
 /* ---- reading --------------------------------------------------------------------------------- */
@@ -20,6 +21,24 @@ pl_status file_read_all(const char *path, const char *what, size_t max_bytes, ch
                         pl_diag *diag);
 
 /* ---- writing --------------------------------------------------------------------------------- */
+
+/* A temporary file beside its final path, open for writing. It is created exclusively (a name an
+ * attacker planted, even a symlink, is never opened), removed if the process gets SIGINT, SIGTERM
+ * or SIGHUP, and becomes path only at file_temp_commit. */
+typedef struct {
+    FILE *f;     /* write here */
+    char *tmp;   /* its name, ".<name>.XXXXXX" in path's folder */
+    char *path;  /* the final name */
+    int slot;    /* its entry in the cleanup table */
+} file_temp;
+
+pl_status file_temp_create(const char *path, file_temp *t, pl_diag *diag);
+/* Closes the file, reporting any write error (a full disk); the temporary stays until commit. */
+pl_status file_temp_close(file_temp *t, pl_diag *diag);
+/* Closes and renames into place; on failure the temporary is removed. Either way t is released. */
+pl_status file_temp_commit(file_temp *t, pl_diag *diag);
+/* Removes the temporary and releases t (safe on a released or zeroed t with slot -1). */
+void file_temp_discard(file_temp *t);
 
 /* Writes len bytes to path through a temporary file and rename: all or nothing. */
 pl_status file_write_atomic(const char *path, const void *data, size_t len, pl_diag *diag);

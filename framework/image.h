@@ -6,6 +6,7 @@
 
 #include <stddef.h>
 #include <stdint.h>
+#include <stdio.h>
 #include "vec.h"
 #include "status.h"
 #include "file.h"
@@ -22,6 +23,12 @@ static inline void image_set(image *img, int x, int y, rgb c) { img->pixels[(lon
 
 /* CS184's tone curve: clamp((v * sqrt(2))^(1/2.2), 0, 1) per channel, then 8 bits. */
 uint8_t tonemap_channel(float v);
+
+/* Encoders: the file's bytes to an open FILE (the output set's temporaries). img is an image *
+ * (void * so they fit output_encode_fn). */
+pl_status image_encode_png(FILE *f, const void *img, pl_diag *diag);   /* CS184's tone curve */
+pl_status image_encode_hdr(FILE *f, const void *img, pl_diag *diag);   /* linear */
+pl_status image_encode_png_rgb8(FILE *f, const uint8_t *rgb8, int width, int height, pl_diag *diag);
 
 /* PNG through CS184's tone curve. */
 pl_status image_write_png(const image *img, const char *path, pl_diag *diag);

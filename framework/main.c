@@ -1,5 +1,6 @@
 /* bin/pathtracer: load a scene, build the accelerator, render, write the image and its sidecar.
- * Exit status: 0 success, 2 bad input (flags, scene, camera file), 1 failure while rendering or writing. */
+ * Exit status: 0 success, 2 bad input (flags, scene, camera file, output names), 1 failure while
+ * rendering or writing. */
 #include "cli.h"
 #include "dae.h"
 #include "camera_file.h"
@@ -7,8 +8,8 @@
 #include "sidecar.h"
 #include "colormap.h"
 #include "heatmap.h"
+#include "output.h"
 #include <errno.h>
-#include <pthread.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -33,44 +34,40 @@ static void print_progress(void *user, int done, int total)
     fflush(stderr);
 }
 
-typedef struct {
-    const char *path;
-    const int *samples;
-    int width, height, spp;
-    pl_diag diag;
-    pl_status status;
-} rate_job;
-
-static void *write_rate_map(void *arg)
-{
-    rate_job *job = arg;
-    job->status = rate_map_write(job->path, job->samples, job->width, job->height, job->spp, &job->diag);
-    return NULL;
-}
-
 static int fail(const char *prog, pl_diag *d, int code)
 {
     fprintf(stderr, "%s: %s\n", prog, d->error);
     return code;
 }
 
-/* Everything after the options are parsed; owns no memory the caller must free. */
+/* Everything after the options are parsed; owns no memory the caller must free. The story of a
+ * render: plan the outputs, load, build, render, write them as one unit. */
 static int run(const options *o, const char *prog)
 {
     pl_diag diag = pl_diag_default();
+    output_set out;
+    if (output_plan(&out, o, &diag) != PL_OK) {
+        output_free(&out);
+        return fail(prog, &diag, 2);
+    }
     scene s;
     int code = 0;
     image img = {0};
     int *samples = NULL;
-    char *json = NULL, *rate = NULL;
     accel a;
     memset(&a, 0, sizeof a);
 
     double t0 = now_seconds();
-    if (dae_load(o->scene_path, &s, &diag) != PL_OK) return fail(prog, &diag, 2);
+    dae_limits limits = dae_limits_default();
+    limits.max_primitives = o->max_primitives;
+    if (dae_load_limited(o->scene_path, &limits, &s, &diag) != PL_OK) {
+        output_free(&out);
+        return fail(prog, &diag, 2);
+    }
     if (o->camera_file) {
         if (camera_file_load(o->camera_file, &s.camera, &diag) != PL_OK) {
             scene_free(&s);
+            output_free(&out);
             return fail(prog, &diag, 2);
         }
         s.has_camera = true;
@@ -82,7 +79,7 @@ static int run(const options *o, const char *prog)
     render_ctx_init(&ctx, &s, &a, o);
     if (!o->quiet && isatty(STDERR_FILENO)) ctx.on_progress = print_progress;
 
-    if (o->heatmap && render_heatmap(&ctx, o->heatmap, &diag) != PL_OK) { code = fail(prog, &diag, 1); goto done; }
+    if (o->heatmap && render_heatmap(&ctx, out.path[OUTPUT_HEATMAP], &diag) != PL_OK) { code = fail(prog, &diag, 1); goto done; }
 
     samples = calloc((size_t)o->width * (size_t)o->height, sizeof *samples);
     if (!samples || image_alloc(&img, o->width, o->height) != PL_OK) {
@@ -96,24 +93,16 @@ static int run(const options *o, const char *prog)
         fprintf(stderr, "%s: warning: %d pixels have NaN, infinite or negative radiance (first at x=%d y=%d, "
                         "counted from the bottom-left)\n", prog, stats.bad_pixels, stats.first_bad_x, stats.first_bad_y);
 
+    /* Image, rate map and sidecar: encoded in parallel, renamed into place together, or none. */
     double t1 = now_seconds();
+    rate_map rates = {samples, o->width, o->height, o->spp};
+    sidecar_info info = {&ctx, load_seconds, a.build_seconds, &stats, o->adaptive ? samples : NULL};
     if (o->output) {
-        json = path_with_suffix(o->output, "", ".json");
-        rate = path_with_suffix(o->output, "_rate", ".png");
-        if (!json || !rate) { fprintf(stderr, "%s: out of memory\n", prog); code = 1; goto done; }
-        /* PNG encoding is slow (stb's deflate): the rate map is encoded on a second thread. */
-        rate_job job = {rate, samples, o->width, o->height, o->spp, pl_diag_default(), PL_OK};
-        pthread_t writer;
-        bool threaded = pthread_create(&writer, NULL, write_rate_map, &job) == 0;
-        if (!threaded) write_rate_map(&job);
-        pl_status image_status = image_write(&img, o->output, &diag);
-        if (threaded) pthread_join(writer, NULL);
-        if (image_status != PL_OK || job.status != PL_OK) {
-            code = fail(prog, image_status != PL_OK ? &diag : &job.diag, 1);
-            goto done;
-        }
-        sidecar_info info = {load_seconds, a.build_seconds, now_seconds() - t1, &stats, o->adaptive ? samples : NULL};
-        if (sidecar_write(json, &ctx, &info, &diag) != PL_OK) { code = fail(prog, &diag, 1); goto done; }
+        bool hdr = strlen(o->output) > 4 && !strcasecmp(o->output + strlen(o->output) - 4, ".hdr");
+        output_bind(&out, OUTPUT_IMAGE, hdr ? image_encode_hdr : image_encode_png, &img);
+        output_bind(&out, OUTPUT_RATE_MAP, rate_map_encode, &rates);
+        output_bind(&out, OUTPUT_SIDECAR, sidecar_encode, &info);
+        if (output_write(&out, OUTPUT_IMAGE, OUTPUT_SIDECAR, &diag) != PL_OK) { code = fail(prog, &diag, 1); goto done; }
     }
     if (!o->quiet) {
         double secs = stats.seconds > 0 ? stats.seconds : 1e-9;
@@ -131,15 +120,16 @@ static int run(const options *o, const char *prog)
         printf("[pathlab] rendered %dx%d in %.4f s on %d threads: %llu rays, %.3f million rays/s, %.2f samples/pixel\n",
                o->width, o->height, stats.seconds, o->threads, (unsigned long long)stats.rays, stats.rays / secs * 1e-6,
                (double)stats.samples / ((double)o->width * o->height));
-        if (o->output) printf("[pathlab] wrote %s, %s, %s\n", o->output, rate, json);
+        if (o->output)
+            printf("[pathlab] wrote %s, %s, %s in %.4f s\n", out.path[OUTPUT_IMAGE], out.path[OUTPUT_RATE_MAP],
+                   out.path[OUTPUT_SIDECAR], now_seconds() - t1);
     }
 done:
-    free(json);
-    free(rate);
     free(samples);
     image_free(&img);
     accel_free(&a);
     scene_free(&s);
+    output_free(&out);
     return code;
 }
 
@@ -156,24 +146,6 @@ int main(int argc, char **argv)
     if (action == CLI_HELP) {
         cli_print_usage(stdout, prog);
         return 0;
-    }
-    if (o.output) {
-        /* Check the name before a long render, not after. */
-        size_t n = strlen(o.output);
-        if (!(n > 4 && (!strcasecmp(o.output + n - 4, ".png") || !strcasecmp(o.output + n - 4, ".hdr")))) {
-            fprintf(stderr, "%s: -f %s: expected a file name ending in .png or .hdr\nTry '%s -h' for help.\n", prog, o.output, prog);
-            cli_free(&o);
-            return 2;
-        }
-        /* ... and that its folder takes files, so a long render is not lost at the end. */
-        const char *slash = strrchr(o.output, '/');
-        char folder[4096];
-        snprintf(folder, sizeof folder, "%.*s", slash ? (int)(slash - o.output) + 1 : 1, slash ? o.output : ".");
-        if (access(folder, W_OK) != 0) {
-            fprintf(stderr, "%s: -f %s: cannot write into '%s': %s\n", prog, o.output, folder, strerror(errno));
-            cli_free(&o);
-            return 2;
-        }
     }
     int code = run(&o, prog);
     cli_free(&o);

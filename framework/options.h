@@ -28,6 +28,7 @@ typedef struct {
     bool cs184_framing;       /* --cs184-camera: CS184's orbit framing instead of the file's camera */
     bool linear_scan;         /* --no-bvh: skip part 2, intersect by linear scan */
     int max_leaf_size;        /* --leaf-size: BVH max primitives per leaf (4) */
+    long max_primitives;      /* --max-primitives: the most triangles + spheres a scene may hold (2,000,000) */
     const char *heatmap;      /* --heatmap FILE.png: BVH nodes visited per pixel */
     bool verbose;             /* -v: print build and traversal statistics */
     bool quiet;               /* -q: no progress bar or summary */

@@ -1,105 +1,81 @@
-/* The JSON sidecar. Written by hand (it is flat and small); strings are escaped per RFC 8259. */
+/* The JSON sidecar, built with jansson (Debian's libjansson): it escapes strings, validates UTF-8
+ * and writes numbers exactly, so the file always parses. */
 #include "sidecar.h"
 #include "version.h"
-#include <stdarg.h>
-#include <stdio.h>
+#include <jansson.h>
 #include <stdlib.h>
 #include <string.h>
 
-typedef struct { char *data; size_t len, cap; bool failed; } text;
-
-static void text_printf(text *t, const char *fmt, ...) __attribute__((format(printf, 2, 3)));
-static void text_printf(text *t, const char *fmt, ...)
+/* A JSON string from bytes that may not be UTF-8 (a path is any bytes on Linux): valid sequences
+ * are kept, each invalid byte becomes U+FFFD, so the sidecar stays valid JSON and still readable. */
+static json_t *string_lossy(const char *s)
 {
-    if (t->failed) return;
-    for (;;) {
-        va_list ap;
-        va_start(ap, fmt);
-        int n = vsnprintf(t->data ? t->data + t->len : NULL, t->data ? t->cap - t->len : 0, fmt, ap);
-        va_end(ap);
-        if (n < 0) { t->failed = true; return; }
-        if (t->data && t->len + (size_t)n < t->cap) { t->len += (size_t)n; return; }
-        size_t cap = t->cap ? t->cap * 2 : 4096;
-        while (cap < t->len + (size_t)n + 1) cap *= 2;
-        char *grown = realloc(t->data, cap);
-        if (!grown) { t->failed = true; return; }
-        t->data = grown;
-        t->cap = cap;
+    if (!s) return json_null();
+    size_t n = strlen(s), out = 0;
+    char *clean = malloc(3 * n + 1);
+    if (!clean) return NULL;
+    for (size_t i = 0; i < n;) {
+        unsigned char c = (unsigned char)s[i];
+        size_t len = c < 0x80 ? 1 : (c & 0xE0) == 0xC0 ? 2 : (c & 0xF0) == 0xE0 ? 3 : (c & 0xF8) == 0xF0 ? 4 : 0;
+        bool ok = len > 0 && i + len <= n;
+        for (size_t k = 1; ok && k < len; k++) ok = ((unsigned char)s[i + k] & 0xC0) == 0x80;
+        /* Overlong forms, surrogates and values past U+10FFFF: json_stringn decides (below). */
+        if (ok && json_stringn(s + i, len) == NULL) ok = false;
+        if (ok) {
+            memcpy(clean + out, s + i, len);
+            out += len;
+            i += len;
+        } else {
+            memcpy(clean + out, "\xEF\xBF\xBD", 3);
+            out += 3;
+            i++;
+        }
     }
+    json_t *j = json_stringn(clean, out);
+    free(clean);
+    return j;
 }
 
-static void text_json_string(text *t, const char *s)
+pl_status sidecar_encode(FILE *f, const void *user, pl_diag *diag)
 {
-    text_printf(t, "\"");
-    for (; s && *s; s++) {
-        unsigned char c = (unsigned char)*s;
-        if (c == '"' || c == '\\') text_printf(t, "\\%c", c);
-        else if (c < 0x20) text_printf(t, "\\u%04x", c);
-        else text_printf(t, "%c", c);
-    }
-    text_printf(t, "\"");
-}
-
-char *path_with_suffix(const char *path, const char *suffix, const char *extension)
-{
-    const char *slash = strrchr(path, '/');
-    const char *dot = strrchr(path, '.');
-    size_t stem = (dot && (!slash || dot > slash)) ? (size_t)(dot - path) : strlen(path);
-    size_t n = stem + strlen(suffix) + strlen(extension) + 1;
-    char *out = malloc(n);
-    if (out) snprintf(out, n, "%.*s%s%s", (int)stem, path, suffix, extension);
-    return out;
-}
-
-pl_status sidecar_write(const char *path, const render_ctx *ctx, const sidecar_info *info, pl_diag *diag)
-{
+    const sidecar_info *info = user;
+    const render_ctx *ctx = info->ctx;
     const options *o = ctx->opts;
     const render_stats *r = info->render;
-    text t = {0};
-    text_printf(&t, "{\n  \"program\": \"pathlab\",\n  \"version\": ");
-    text_json_string(&t, PL_VERSION);
-    text_printf(&t, ",\n  \"command_line\": ");
-    text_json_string(&t, o->command_line);
-    text_printf(&t, ",\n  \"scene\": ");
-    text_json_string(&t, o->scene_path);
-    text_printf(&t, ",\n  \"seed\": %llu,\n  \"width\": %d,\n  \"height\": %d,\n", (unsigned long long)o->seed,
-                ctx->width, ctx->height);
-    text_printf(&t, "  \"options\": {\"spp\": %d, \"light_samples\": %d, \"max_depth\": %d, \"accumulate\": %s, "
-                    "\"hemisphere\": %s, \"adaptive\": %s, \"adaptive_batch\": %d, \"adaptive_tolerance\": %g, "
-                    "\"russian_roulette\": %s, \"normals\": %s, \"threads\": %d},\n",
-                o->spp, o->light_samples, o->max_depth, o->accumulate ? "true" : "false",
-                o->hemisphere ? "true" : "false", o->adaptive ? "true" : "false", o->adaptive_batch,
-                o->adaptive_tol, o->no_roulette ? "false" : "true", o->normals ? "true" : "false", o->threads);
     const scene *s = ctx->scene;
-    text_printf(&t, "  \"scene_stats\": {\"triangles\": %d, \"spheres\": %d, \"lights\": %d, \"materials\": %d},\n",
-                s->num_triangles, s->num_spheres, s->num_lights, s->num_materials);
-    const accel *a = ctx->accel;
-    accel_shape shape = accel_bvh_shape(a);
-    text_printf(&t, "  \"accel\": {\"kind\": \"%s\", \"nodes\": %d, \"leaves\": %d, \"depth\": %d},\n",
-                a->use_bvh ? "bvh" : "linear", shape.nodes, shape.leaves, shape.depth);
-    text_printf(&t, "  \"timings_seconds\": {\"load\": %.6f, \"build\": %.6f, \"render\": %.6f, \"write\": %.6f},\n",
-                info->load_seconds, info->build_seconds, r->seconds, info->write_seconds);
+    accel_shape shape = accel_bvh_shape(ctx->accel);
     double mrays = r->seconds > 0 ? r->rays / r->seconds * 1e-6 : 0.0;
-    text_printf(&t, "  \"rays_traced\": %llu,\n  \"million_rays_per_second\": %.3f,\n", (unsigned long long)r->rays, mrays);
-    text_printf(&t, "  \"camera_samples\": %llu,\n  \"mean_samples_per_pixel\": %.4f,\n",
-                (unsigned long long)r->samples, (double)r->samples / ((double)ctx->width * ctx->height));
-    text_printf(&t, "  \"bad_pixels\": %d", r->bad_pixels);
-    if (info->samples_per_pixel) {
-        text_printf(&t, ",\n  \"samples_per_pixel\": [\n");
-        for (int y = 0; y < ctx->height; y++) {
-            text_printf(&t, "    [");
-            for (int x = 0; x < ctx->width; x++)
-                text_printf(&t, x ? ",%d" : "%d", info->samples_per_pixel[y * ctx->width + x]);
-            text_printf(&t, y + 1 < ctx->height ? "],\n" : "]\n");
+    json_t *root = json_pack(
+        "{s:s, s:o, s:o, s:o, s:I, s:i, s:i,"
+        " s:{s:i, s:i, s:i, s:b, s:b, s:b, s:i, s:f, s:b, s:b, s:i},"
+        " s:{s:i, s:i, s:i, s:i}, s:{s:s, s:i, s:i, s:i}, s:{s:f, s:f, s:f},"
+        " s:I, s:f, s:I, s:f, s:i}",
+        "program", "pathlab", "version", string_lossy(PL_VERSION), "command_line", string_lossy(o->command_line),
+        "scene", string_lossy(o->scene_path), "seed", (json_int_t)o->seed, "width", ctx->width, "height", ctx->height,
+        "options", "spp", o->spp, "light_samples", o->light_samples, "max_depth", o->max_depth, "accumulate",
+        o->accumulate, "hemisphere", o->hemisphere, "adaptive", o->adaptive, "adaptive_batch", o->adaptive_batch,
+        "adaptive_tolerance", (double)o->adaptive_tol, "russian_roulette", !o->no_roulette, "normals", o->normals,
+        "threads", o->threads,
+        "scene_stats", "triangles", s->num_triangles, "spheres", s->num_spheres, "lights", s->num_lights,
+        "materials", s->num_materials,
+        "accel", "kind", ctx->accel->use_bvh ? "bvh" : "linear", "nodes", shape.nodes, "leaves", shape.leaves,
+        "depth", shape.depth,
+        "timings_seconds", "load", info->load_seconds, "build", info->build_seconds, "render", r->seconds,
+        "rays_traced", (json_int_t)r->rays, "million_rays_per_second", mrays, "camera_samples", (json_int_t)r->samples,
+        "mean_samples_per_pixel", (double)r->samples / ((double)ctx->width * ctx->height), "bad_pixels", r->bad_pixels);
+    if (root && info->samples_per_pixel) {
+        json_t *rows = json_array();
+        for (int y = 0; y < ctx->height && rows; y++) {
+            json_t *row = json_array();
+            for (int x = 0; x < ctx->width && row; x++)
+                json_array_append_new(row, json_integer(info->samples_per_pixel[y * ctx->width + x]));
+            json_array_append_new(rows, row);
         }
-        text_printf(&t, "  ]");
+        json_object_set_new(root, "samples_per_pixel", rows);
     }
-    text_printf(&t, "\n}\n");
-    if (t.failed) {
-        free(t.data);
-        return pl_fail(diag, PL_ERR_NOMEM, "%s: out of memory", path);
-    }
-    pl_status st = file_write_atomic(path, t.data, t.len, diag);
-    free(t.data);
-    return st;
+    /* JSON_COMPACT would be smaller; one field per line reads better and costs little. */
+    int failed = root ? json_dumpf(root, f, JSON_INDENT(2) | JSON_PRESERVE_ORDER) : -1;
+    json_decref(root);
+    if (failed || fputc('\n', f) == EOF) return pl_fail(diag, PL_ERR_IO, "could not encode or write the sidecar");
+    return PL_OK;
 }

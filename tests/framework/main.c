@@ -11,6 +11,7 @@ int scenes_tests(void);
  * tests out. */
 int strip_tests(void) __attribute__((weak));
 int file_tests(void);     /* whole-file reads and their refusals */
+int output_tests(void);   /* a render's outputs as one unit */
 int lights_tests(void);
 int sampler_tests(void);
 int stats_tests(void);    /* the tests' own statistics (tests/common/stats.c) */
@@ -28,6 +29,7 @@ int main(void)
     failed += scenes_tests();
     if (strip_tests) failed += strip_tests();
     failed += file_tests();
+    failed += output_tests();
     failed += lights_tests();
     failed += sampler_tests();
     failed += stats_tests();

@@ -1,0 +1,182 @@
+/* The outputs of one render: planned and checked before loading, written as one unit after. */
+#include "output.h"
+#include "file.h"
+#include <errno.h>
+#include <limits.h>
+#include <pthread.h>
+#include <stdlib.h>
+#include <string.h>
+#include <strings.h>
+#include <sys/stat.h>
+#include <unistd.h>
+
+static const char *const flag_of[OUTPUT_KINDS] = {"-f", "-f (its rate map)", "-f (its sidecar)", "--heatmap"};
+
+/* "out.png" -> "out.json", "out.png" + "_rate" -> "out_rate.png": swaps or inserts before the extension. */
+static char *with_suffix(const char *path, const char *suffix, const char *extension)
+{
+    const char *slash = strrchr(path, '/');
+    const char *dot = strrchr(path, '.');
+    size_t stem = (dot && (!slash || dot > slash)) ? (size_t)(dot - path) : strlen(path);
+    size_t n = stem + strlen(suffix) + strlen(extension) + 1;
+    char *out = malloc(n);
+    if (out) snprintf(out, n, "%.*s%s%s", (int)stem, path, suffix, extension);
+    return out;
+}
+
+static bool has_extension(const char *path, const char *ext)
+{
+    size_t n = strlen(path), e = strlen(ext);
+    return n > e && strcasecmp(path + n - e, ext) == 0;
+}
+
+/* Where a path leads: its folder resolved (symlinks, "..") plus its own name, so two spellings of
+ * one file compare equal even before it exists. Empty when the folder does not exist. */
+static void canonical(const char *path, char *out, size_t size)
+{
+    const char *slash = strrchr(path, '/');
+    char folder[PATH_MAX], resolved[PATH_MAX];
+    snprintf(folder, sizeof folder, "%.*s", slash ? (int)(slash - path) + 1 : 1, slash ? path : ".");
+    out[0] = '\0';
+    if (!realpath(folder, resolved)) return;
+    const char *name = slash ? slash + 1 : path;
+    /* An existing symlink is followed too: writing through it would replace its target. */
+    char full[PATH_MAX * 2], target[PATH_MAX];
+    snprintf(full, sizeof full, "%s/%s", resolved, name);
+    if (realpath(full, target)) snprintf(out, size, "%s", target);
+    else snprintf(out, size, "%s", full);
+}
+
+/* The folder holding path must exist and take new files. */
+static pl_status check_folder(const char *flag, const char *path, pl_diag *diag)
+{
+    const char *slash = strrchr(path, '/');
+    char folder[PATH_MAX];
+    snprintf(folder, sizeof folder, "%.*s", slash ? (int)(slash - path) + 1 : 1, slash ? path : ".");
+    if (access(folder, W_OK | X_OK) != 0)
+        return pl_fail(diag, PL_ERR_INVALID, "%s %s: cannot write into '%s': %s", flag, path, folder, strerror(errno));
+    struct stat st;
+    if (stat(path, &st) == 0 && S_ISDIR(st.st_mode))
+        return pl_fail(diag, PL_ERR_INVALID, "%s %s: is a directory; expected a file name", flag, path);
+    return PL_OK;
+}
+
+/* stb's PNG writer indexes with int: a row of w*3+1 bytes times h rows must fit. */
+static bool png_size_ok(int w, int h) { return ((long long)w * 3 + 1) * (long long)h < INT_MAX; }
+
+/* What a render holds per pixel while it runs (image, samples taken, encoders' copies), against
+ * the machine's memory: a size that cannot fit is refused before loading, not after rendering. */
+#define BYTES_PER_PIXEL 64
+
+pl_status output_plan(output_set *set, const options *o, pl_diag *diag)
+{
+    memset(set, 0, sizeof *set);
+    long long pixels = (long long)o->width * o->height;
+    long long memory = (long long)sysconf(_SC_PHYS_PAGES) * sysconf(_SC_PAGE_SIZE);
+    if (memory > 0 && pixels * BYTES_PER_PIXEL > memory / 2)
+        return pl_fail(diag, PL_ERR_INVALID, "-r %d %d: %lld pixels need about %lld MB, more than half of this "
+                       "machine's memory", o->width, o->height, pixels, pixels * BYTES_PER_PIXEL >> 20);
+    if (o->output) {
+        if (!has_extension(o->output, ".png") && !has_extension(o->output, ".hdr"))
+            return pl_fail(diag, PL_ERR_INVALID, "-f %s: expected a file name ending in .png or .hdr", o->output);
+        set->path[OUTPUT_IMAGE] = strdup(o->output);
+        set->path[OUTPUT_RATE_MAP] = with_suffix(o->output, "_rate", ".png");
+        set->path[OUTPUT_SIDECAR] = with_suffix(o->output, "", ".json");
+    }
+    if (o->heatmap) {
+        if (!has_extension(o->heatmap, ".png"))
+            return pl_fail(diag, PL_ERR_INVALID, "--heatmap %s: expected a file name ending in .png", o->heatmap);
+        set->path[OUTPUT_HEATMAP] = strdup(o->heatmap);
+    }
+    bool png = o->output && has_extension(o->output, ".png");
+    if ((o->output || o->heatmap) && !png_size_ok(o->width, o->height + 64))
+        return pl_fail(diag, PL_ERR_INVALID, "-r %d %d: too large for a PNG file (the encoder's limit is about "
+                       "715 million pixels)%s", o->width, o->height, png ? "" : "; the rate map is a PNG");
+
+    /* Every output: a folder that takes it, not a directory, and no other output's or input's file. */
+    const char *inputs[2] = {o->scene_path, o->camera_file};
+    const char *input_flag[2] = {"the scene", "the camera file (-c)"};
+    char here[OUTPUT_KINDS][PATH_MAX * 2];
+    for (int k = 0; k < OUTPUT_KINDS; k++) {
+        if (!set->path[k]) continue;
+        pl_status st = check_folder(flag_of[k], set->path[k], diag);
+        if (st) return st;
+        canonical(set->path[k], here[k], sizeof here[k]);
+        for (int j = 0; j < k; j++)
+            if (set->path[j] && !strcmp(here[j], here[k]))
+                return pl_fail(diag, PL_ERR_INVALID, "%s %s and %s %s name the same file", flag_of[j], set->path[j],
+                               flag_of[k], set->path[k]);
+        for (int i = 0; i < 2; i++) {
+            char in[PATH_MAX * 2];
+            if (!inputs[i]) continue;
+            canonical(inputs[i], in, sizeof in);
+            if (!strcmp(in, here[k]))
+                return pl_fail(diag, PL_ERR_INVALID, "%s %s would overwrite %s (%s): choose another output name",
+                               flag_of[k], set->path[k], input_flag[i], inputs[i]);
+        }
+    }
+    for (int k = 0; k < OUTPUT_KINDS; k++)
+        if (set->path[k] == NULL && ((k != OUTPUT_HEATMAP && o->output) || (k == OUTPUT_HEATMAP && o->heatmap)))
+            return pl_fail(diag, PL_ERR_NOMEM, "out of memory");
+    return PL_OK;
+}
+
+void output_bind(output_set *set, output_kind k, output_encode_fn encode, const void *user)
+{
+    set->encode[k] = encode;
+    set->user[k] = user;
+}
+
+/* Encoding is the slow part (PNG deflate): each file is encoded on a thread of its own. */
+typedef struct {
+    output_set *set;
+    output_kind kind;
+    file_temp temp;
+    pl_diag diag;
+    pl_status status;
+} encode_job;
+
+static void *encode_one(void *arg)
+{
+    encode_job *j = arg;
+    j->status = file_temp_create(j->set->path[j->kind], &j->temp, &j->diag);
+    if (!j->status) j->status = j->set->encode[j->kind](j->temp.f, j->set->user[j->kind], &j->diag);
+    if (!j->status) j->status = file_temp_close(&j->temp, &j->diag);
+    return NULL;
+}
+
+pl_status output_write(output_set *set, output_kind first, output_kind last, pl_diag *diag)
+{
+    encode_job jobs[OUTPUT_KINDS];
+    pthread_t threads[OUTPUT_KINDS];
+    bool threaded[OUTPUT_KINDS] = {false};
+    for (int k = first; k <= (int)last; k++) {
+        jobs[k] = (encode_job){set, (output_kind)k, {NULL, NULL, NULL, -1}, pl_diag_default(), PL_OK};
+        if (!set->path[k] || !set->encode[k]) continue;
+        threaded[k] = pthread_create(&threads[k], NULL, encode_one, &jobs[k]) == 0;
+        if (!threaded[k]) encode_one(&jobs[k]);
+    }
+    pl_status st = PL_OK;
+    for (int k = first; k <= (int)last; k++) {
+        if (threaded[k]) pthread_join(threads[k], NULL);
+        if (set->path[k] && set->encode[k] && jobs[k].status && !st) {
+            st = jobs[k].status;
+            pl_fail(diag, st, "%s", jobs[k].diag.error);
+        }
+    }
+    /* All or nothing: rename only when every file is complete; the sidecar, last in the kinds, last. */
+    for (int k = first; k <= (int)last; k++) {
+        if (!set->path[k] || !set->encode[k]) continue;
+        if (st) file_temp_discard(&jobs[k].temp);
+        else if ((st = file_temp_commit(&jobs[k].temp, diag)))
+            for (int j = k + 1; j <= (int)last; j++)
+                if (set->path[j] && set->encode[j]) file_temp_discard(&jobs[j].temp);
+    }
+    return st;
+}
+
+void output_free(output_set *set)
+{
+    for (int k = 0; k < OUTPUT_KINDS; k++) free(set->path[k]);
+    memset(set, 0, sizeof *set);
+}

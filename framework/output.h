@@ -1,0 +1,39 @@
+/* The outputs of one render, as one unit (DESIGN.md section 6).
+ *
+ * Before anything is loaded, output_plan derives every file the render will write from the
+ * options (image, rate map, sidecar; the heat map) and checks them all: a supported extension, not
+ * a directory, no two the same file, none the same file as an input (`-f sc.png` derives sc.json,
+ * which may be the scene), a writable folder, and a size the encoders and memory can take. A bad
+ * name costs a second, not a render.
+ *
+ * After the render, output_write encodes each file into its own exclusive temporary beside it,
+ * and only when every one succeeded renames them into place, the sidecar last (so a sidecar always
+ * describes images that exist). On any failure (a full disk, an encoder error) every temporary is
+ * removed and no final name changes. */
+#ifndef PL_OUTPUT_H
+#define PL_OUTPUT_H
+
+#include <stdio.h>
+#include "options.h"
+#include "status.h"
+
+/* Writes one file's bytes to f; user is what output_bind was given. */
+typedef pl_status (*output_encode_fn)(FILE *f, const void *user, pl_diag *diag);
+
+typedef enum { OUTPUT_IMAGE, OUTPUT_RATE_MAP, OUTPUT_SIDECAR, OUTPUT_HEATMAP, OUTPUT_KINDS } output_kind;
+
+typedef struct {
+    char *path[OUTPUT_KINDS];              /* NULL: not written by this render (owned) */
+    output_encode_fn encode[OUTPUT_KINDS];
+    const void *user[OUTPUT_KINDS];
+} output_set;
+
+/* Derives and checks every output path of o (see above). Exit-2 errors name the flag and path. */
+pl_status output_plan(output_set *set, const options *o, pl_diag *diag);
+/* Says how output kind k is encoded (before output_write). */
+void output_bind(output_set *set, output_kind k, output_encode_fn encode, const void *user);
+/* Writes the kinds in [first, last] as one unit: all renamed into place, sidecar last, or none. */
+pl_status output_write(output_set *set, output_kind first, output_kind last, pl_diag *diag);
+void output_free(output_set *set);
+
+#endif

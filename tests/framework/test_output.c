@@ -1,0 +1,279 @@
+/* Test machinery: not part of any assignment.
+ * The outputs of a render as one unit (framework/output.c, file.c): names checked before loading,
+ * temporaries exclusive and cleaned up, all files renamed together or none, valid JSON. Most tests
+ * run bin/pathtracer in a scratch folder, as a user would. */
+#include "../common/test.h"
+#include "../../framework/output.h"
+#include "../../framework/file.h"
+#include <dirent.h>
+#include <jansson.h>
+#include <signal.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <sys/mount.h>
+#include <sys/stat.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#define SCENE "scenes/cornell_spheres.dae"
+
+static char dir[64];
+
+static int make_dir(void **state)
+{
+    (void)state;
+    snprintf(dir, sizeof dir, "/tmp/pathlab-output-XXXXXX");
+    return mkdtemp(dir) ? 0 : -1;
+}
+
+static int remove_dir(void **state)
+{
+    (void)state;
+    char cmd[128];
+    snprintf(cmd, sizeof cmd, "rm -rf '%s'", dir);
+    return system(cmd) == 0 ? 0 : -1;
+}
+
+/* Runs bin/pathtracer with args (a format with %s for the scratch folder); returns its exit code. */
+static int render(const char *args_fmt)
+{
+    char args[1024], cmd[1200];
+    snprintf(args, sizeof args, args_fmt, dir, dir, dir);
+    snprintf(cmd, sizeof cmd, "bin/pathtracer -q %s >/dev/null 2>%s/stderr.txt", args, dir);
+    int status = system(cmd);
+    return WIFEXITED(status) ? WEXITSTATUS(status) : 128 + WTERMSIG(status);
+}
+
+/* The names in the scratch folder, sorted, space-separated (stderr.txt left out). */
+static void listing(char *out, size_t size)
+{
+    char *names[64];
+    int n = 0;
+    DIR *d = opendir(dir);
+    for (struct dirent *e; d && (e = readdir(d)) && n < 64;)
+        if (e->d_name[0] != '.' || strlen(e->d_name) > 2)
+            if (strcmp(e->d_name, ".") && strcmp(e->d_name, "..") && strcmp(e->d_name, "stderr.txt"))
+                names[n++] = strdup(e->d_name);
+    if (d) closedir(d);
+    for (int i = 0; i < n; i++)
+        for (int j = i + 1; j < n; j++)
+            if (strcmp(names[j], names[i]) < 0) { char *t = names[i]; names[i] = names[j]; names[j] = t; }
+    out[0] = '\0';
+    for (int i = 0; i < n; i++) {
+        strncat(out, names[i], size - strlen(out) - 2);
+        if (i + 1 < n) strncat(out, " ", size - strlen(out) - 1);
+        free(names[i]);
+    }
+}
+
+static void expect_files(const char *want)
+{
+    char got[2048];
+    listing(got, sizeof got);
+    if (strcmp(got, want)) fail_msg("the folder holds '%s', expected '%s'", got, want);
+}
+
+static void expect_refused(const char *args_fmt, const char *message)
+{
+    int code = render(args_fmt);
+    char path[128], err[2048] = "";
+    snprintf(path, sizeof path, "%s/stderr.txt", dir);
+    FILE *f = fopen(path, "r");
+    if (f) {
+        size_t n = fread(err, 1, sizeof err - 1, f);
+        err[n] = '\0';
+        fclose(f);
+    }
+    if (code != 2 || !strstr(err, message))
+        fail_msg("'%s': exit %d, stderr '%s'; expected exit 2 and '%s'", args_fmt, code, err, message);
+}
+
+/* Every bad name is refused before the scene loads: the scene here does not even exist, and the
+ * message is still about the output. */
+static void test_output__bad_names_refused_before_loading(void **state)
+{
+    (void)state;
+    char sub[128];
+    snprintf(sub, sizeof sub, "%s/a_folder.png", dir);
+    assert_int_equal(0, mkdir(sub, 0755));
+    expect_refused("-f %s/a_folder.png /no/such/scene.dae", "is a directory");
+    expect_refused("-f %s/x.png --heatmap %s/x.png /no/such/scene.dae", "name the same file");
+    expect_refused("-f %s/x.png --heatmap %s/x_rate.png /no/such/scene.dae", "name the same file");
+    expect_refused("--heatmap %s/heat.jpg /no/such/scene.dae", "expected a file name ending in .png");
+    expect_refused("-f %s/x.tiff /no/such/scene.dae", "expected a file name ending in");
+    expect_refused("-r 32768 32768 -f %s/x.png /no/such/scene.dae", "-r 32768 32768");
+    rmdir(sub);
+    expect_files("");
+}
+
+/* `-f sc.png` derives sc.json: when the scene is sc.json, the render must not replace it. */
+static void test_output__derived_name_never_overwrites_an_input(void **state)
+{
+    (void)state;
+    char cmd[256];
+    snprintf(cmd, sizeof cmd, "cp " SCENE " %s/sc.json", dir);
+    assert_int_equal(0, system(cmd));
+    expect_refused("-r 8 8 -f %s/sc.png %s/sc.json", "would overwrite the scene");
+    expect_files("sc.json");
+}
+
+/* An output name that is a symlink is replaced, never written through: its target is untouched. */
+static void test_output__symlinked_name_is_replaced_not_followed(void **state)
+{
+    (void)state;
+    char victim[128], link[128];
+    snprintf(victim, sizeof victim, "%s/victim.txt", dir);
+    snprintf(link, sizeof link, "%s/x.png", dir);
+    FILE *f = fopen(victim, "w");
+    assert_non_null(f);
+    fputs("precious", f);
+    fclose(f);
+    assert_int_equal(0, symlink(victim, link));
+    assert_int_equal(0, render("--normals -r 16 12 -f %s/x.png " SCENE));
+    char buf[16] = "";
+    f = fopen(victim, "r");
+    assert_non_null(f);
+    assert_non_null(fgets(buf, sizeof buf, f));
+    fclose(f);
+    assert_string_equal("precious", buf);
+    struct stat st;
+    assert_int_equal(0, lstat(link, &st));
+    assert_true(S_ISREG(st.st_mode));
+    expect_files("victim.txt x.json x.png x_rate.png");
+}
+
+/* Temporary names are not predictable and are created exclusively: two at once differ, and
+ * neither is a name anyone could have planted. */
+static void test_output__temporaries_are_exclusive_and_hidden(void **state)
+{
+    (void)state;
+    char path[128];
+    snprintf(path, sizeof path, "%s/x.png", dir);
+    file_temp a, b;
+    assert_int_equal(PL_OK, file_temp_create(path, &a, NULL));
+    assert_int_equal(PL_OK, file_temp_create(path, &b, NULL));
+    assert_string_not_equal(a.tmp, b.tmp);
+    assert_non_null(strstr(a.tmp, "/.x.png."));
+    file_temp_discard(&a);
+    file_temp_discard(&b);
+    expect_files("");
+}
+
+static pl_status encode_text(FILE *f, const void *user, pl_diag *diag)
+{
+    (void)diag;
+    return fputs(user, f) >= 0 ? PL_OK : PL_ERR_IO;
+}
+
+static pl_status encode_failing(FILE *f, const void *user, pl_diag *diag)
+{
+    (void)f, (void)user;
+    return pl_fail(diag, PL_ERR_IO, "the encoder failed on purpose");
+}
+
+/* One failing file: none of the set appears, the old files stay as they were, no temporary is left. */
+static void test_output__one_failure_writes_none(void **state)
+{
+    (void)state;
+    char img[128], old[128];
+    snprintf(img, sizeof img, "%s/x.png", dir);
+    snprintf(old, sizeof old, "%s/x.json", dir);
+    FILE *f = fopen(old, "w");
+    assert_non_null(f);
+    fputs("old sidecar", f);
+    fclose(f);
+    options o = options_default();
+    o.output = img;
+    o.scene_path = SCENE;
+    output_set set;
+    pl_diag d = pl_diag_default();
+    assert_int_equal(PL_OK, output_plan(&set, &o, &d));
+    output_bind(&set, OUTPUT_IMAGE, encode_text, "image");
+    output_bind(&set, OUTPUT_RATE_MAP, encode_failing, NULL);
+    output_bind(&set, OUTPUT_SIDECAR, encode_text, "new sidecar");
+    assert_int_equal(PL_ERR_IO, output_write(&set, OUTPUT_IMAGE, OUTPUT_SIDECAR, &d));
+    assert_non_null(strstr(d.error, "failed on purpose"));
+    expect_files("x.json");
+    output_bind(&set, OUTPUT_RATE_MAP, encode_text, "rate");
+    assert_int_equal(PL_OK, output_write(&set, OUTPUT_IMAGE, OUTPUT_SIDECAR, &d));
+    expect_files("x.json x.png x_rate.png");
+    output_free(&set);
+}
+
+/* SIGTERM while a temporary exists removes it (a forked child plays the killed render). */
+static void test_output__signal_removes_temporaries(void **state)
+{
+    (void)state;
+    pid_t pid = fork();
+    assert_true(pid >= 0);
+    if (pid == 0) {
+        char path[128];
+        snprintf(path, sizeof path, "%s/x.png", dir);
+        file_temp t;
+        if (file_temp_create(path, &t, NULL) != PL_OK) _exit(3);
+        fputs("half an image", t.f);
+        fflush(t.f);
+        raise(SIGTERM);
+        _exit(4);  /* not reached */
+    }
+    int status;
+    assert_int_equal(pid, waitpid(pid, &status, 0));
+    assert_true(WIFSIGNALED(status) && WTERMSIG(status) == SIGTERM);
+    expect_files("");
+}
+
+/* A full disk (a 64 KB tmpfs, mounted when the tests run as root): a clear error and no file. */
+static void test_output__full_disk_leaves_nothing(void **state)
+{
+    (void)state;
+    char mnt[128];
+    snprintf(mnt, sizeof mnt, "%s/small", dir);
+    assert_int_equal(0, mkdir(mnt, 0755));
+    if (geteuid() != 0 || mount("tmpfs", mnt, "tmpfs", 0, "size=64k") != 0) {
+        print_message("skipped: mounting a small tmpfs needs root (run the tests as root to check full disks)\n");
+        rmdir(mnt);
+        skip();
+    }
+    char fmt[256];
+    snprintf(fmt, sizeof fmt, "-t 2 -s 2 -r 400 300 -f %%s/small/x.png " SCENE);
+    int code = render(fmt);
+    char names[1024] = "";
+    DIR *d = opendir(mnt);
+    for (struct dirent *e; d && (e = readdir(d));)
+        if (strcmp(e->d_name, ".") && strcmp(e->d_name, "..")) strncat(names, e->d_name, sizeof names - strlen(names) - 2);
+    if (d) closedir(d);
+    umount(mnt);
+    rmdir(mnt);
+    assert_int_equal(1, code);
+    if (names[0]) fail_msg("the full filesystem holds '%s', expected nothing", names);
+}
+
+/* A path that is not UTF-8 still gives a sidecar that parses. */
+static void test_output__non_utf8_path_gives_valid_json(void **state)
+{
+    (void)state;
+    assert_int_equal(0, render("--normals -r 8 6 -f %s/caf\xe9.png " SCENE));
+    char path[128];
+    snprintf(path, sizeof path, "%s/caf\xe9.json", dir);
+    json_error_t err;
+    json_t *j = json_load_file(path, 0, &err);
+    if (!j) fail_msg("%s: invalid JSON at line %d: %s", path, err.line, err.text);
+    assert_non_null(strstr(json_string_value(json_object_get(j, "command_line")), "caf\xef\xbf\xbd.png"));
+    json_decref(j);
+}
+
+int output_tests(void)
+{
+    const struct CMUnitTest tests[] = {
+        cmocka_unit_test_setup_teardown(test_output__bad_names_refused_before_loading, make_dir, remove_dir),
+        cmocka_unit_test_setup_teardown(test_output__derived_name_never_overwrites_an_input, make_dir, remove_dir),
+        cmocka_unit_test_setup_teardown(test_output__symlinked_name_is_replaced_not_followed, make_dir, remove_dir),
+        cmocka_unit_test_setup_teardown(test_output__temporaries_are_exclusive_and_hidden, make_dir, remove_dir),
+        cmocka_unit_test_setup_teardown(test_output__one_failure_writes_none, make_dir, remove_dir),
+        cmocka_unit_test_setup_teardown(test_output__signal_removes_temporaries, make_dir, remove_dir),
+        cmocka_unit_test_setup_teardown(test_output__full_disk_leaves_nothing, make_dir, remove_dir),
+        cmocka_unit_test_setup_teardown(test_output__non_utf8_path_gives_valid_json, make_dir, remove_dir),
+    };
+    return cmocka_run_group_tests_name("outputs", tests, NULL, NULL);
+}
