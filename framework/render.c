@@ -1,6 +1,6 @@
 /* The render: estimator dispatch and the tiled, multi-threaded pixel loop. */
 #include "render.h"
-#include "../parts/part1_raygen/part1.h"
+#include "../parts/part1_raygen/part1.h"  /* call sites: framework/parts.h */
 #include "../parts/part3_direct/part3.h"
 #include "../parts/part4_global/part4.h"
 #include "../parts/part5_adaptive/part5.h"

@@ -307,9 +307,9 @@ static void check_given_tree(oracle_checks checks)
     for (int i = 0; i < 2; i++) {
         bvh b;
         fixture_build_median(&b, scenes[i], 4);
-        char why[256];
-        bvh_shape shape;
-        if (!fixture_check_bvh(&b, scenes[i], 4, &shape, why, sizeof why)) fail_msg("test machinery: the given tree is invalid: %s", why);
+        pl_diag why = pl_diag_default();
+        if (bvh_validate(&b, scenes[i], 4, true, NULL, &why) != PL_OK)
+            fail_msg("test machinery: the given tree is invalid: %s", why.error);
         check_tree_against_oracle(scenes[i], &b, names[i], checks);
         bvh_free(&b);
     }
