@@ -7,6 +7,7 @@ int render_tests(void);
 int camera_file_tests(void);
 int dae_tests(void);
 int scenes_tests(void);
+int bvh_tests(void);    /* the BVH validator (framework/bvh.c) */
 int strip_tests(void);  /* the release stripper (tools/strip.c) */
 
 int main(void)
@@ -20,6 +21,7 @@ int main(void)
     failed += camera_file_tests();
     failed += dae_tests();
     failed += scenes_tests();
+    failed += bvh_tests();
     failed += strip_tests();
     return failed ? 1 : 0;
 }
