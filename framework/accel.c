@@ -45,7 +45,12 @@ pl_status accel_build(accel *out, const scene *s, bool want_bvh, int max_leaf_si
         return pl_fail(diag, st, "bvh_build made a malformed tree: %s", check.error);
     }
     bvh_free(&out->bvh);
-    if (st == PL_ERR_TODO) return PL_OK;  /* part 2 not done yet: the linear scan still renders */
+    if (st == PL_ERR_TODO) {
+        /* Part 2 not done yet: the linear scan still renders, so a stubbed bvh_build is not
+         * missing work for the caller (part 1's tests render before part 2 is written). */
+        pl_todo_handled();
+        return PL_OK;
+    }
     return pl_fail(diag, st, "bvh_build failed: %s", pl_status_name(st));
 }
 
