@@ -39,7 +39,8 @@
 #define GRAZE_ULPS 64.0
 #define GRAZE_AREA_TOL 1e-5f   /* |e1 x e2| / longest edge^2 below this: a degenerate triangle */
 #define GRAZE_COS_TOL 1e-3f    /* |cos| between ray and sphere normal below this: tangent */
-#define GRAZE_MAX 8          /* grazed primitives one ray may skip */
+#define GRAZE_MAX 64         /* grazed primitives one ray may skip (a ray along a mesh pole meets dozens of
+                                degenerate triangles, each a "hit" at t ~ 0 by rounding) */
 #define ORACLE_THREADS 2     /* the linear scan is the slow half: share it between the cores */
 
 /* ---- the rays: six kinds, interleaved ----------------------------------------------------- */
@@ -152,7 +153,7 @@ static exact_check exact_triangle_check(const triangle *tri, const ray *r)
     const vec3 p[3] = {tri->p0, tri->p1, tri->p2};
     double e[3][3], n[3], to_p0[3], d[3] = {r->d.x, r->d.y, r->d.z};
     for (int i = 0; i < 3; i++) sub3(p[(i + 2) % 3], p[(i + 1) % 3], e[i]);  /* e[i]: the edge opposite vertex i */
-    cross3(e[2], e[1], n);  /* (p1 - p0) x (p0 - p2) up to sign: the plane's normal, |n| = 2 * area */
+    cross3(e[1], e[2], n);  /* (p0 - p2) x (p1 - p0) = (p1 - p0) x (p2 - p0): the normal, |n| = 2 * area */
     sub3(tri->p0, r->o, to_p0);
     exact_check c = {-INFINITY, 0.0, 0.0};
     for (int i = 0; i < 3; i++) c.size = fmax(c.size, sqrt(dot3(e[i], e[i])));
@@ -251,7 +252,10 @@ static void judge_closest(const scene *s, const bvh *b, ray r, verdict *v)
 static void judge_any(const scene *s, const bvh *b, ray r, verdict *v)
 {
     bool occ_b = bvh_occluded(b, s, &r), occ_l = v->linear_found;
-    if (!(v->bvh_found = v->bvh_found || occ_b)) v->bvh.prim = -1;  /* bvh_occluded names no primitive */
+    if (occ_b && !v->bvh_found) {
+        v->bvh_found = true;
+        v->bvh.prim = -1;  /* bvh_occluded names no primitive */
+    }
     if (occ_b && !occ_l && !v->why) v->why = "bvh_occluded finds a hit, the linear scan does not";
     if (!occ_b && occ_l && !v->why) {
         int skip[GRAZE_MAX], n = 0;
