@@ -16,7 +16,8 @@ CPPFLAGS += -D_GNU_SOURCE -MMD -MP $(shell pkg-config --cflags $(PKGS))
 CFLAGS   += -std=c11 $(OPT) -g $(WARN) -pthread
 LDLIBS   += $(shell pkg-config --libs $(PKGS)) -lm -pthread
 ifeq ($(WERROR),1)
-  CFLAGS += -Werror
+  CFLAGS  += -Werror
+  LDFLAGS += -Werror  # with LTO, some warnings appear only at link time
 endif
 ifeq ($(SAN),1)
   OPT      := -O1

@@ -16,6 +16,7 @@
 #include <string.h>
 #include <time.h>
 #include "../framework/accel.h"
+#include "../parts/part2_bvh/part2.h"
 #include "../framework/dae.h"
 #include "../framework/frame.h"
 #include "../framework/heatmap.h"

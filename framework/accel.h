@@ -7,17 +7,20 @@
 #include <stdint.h>
 #include "scene.h"
 #include "status.h"
-#include "../parts/part2_bvh/part2.h"
+#include "bvh.h"
 
 typedef struct {
     const scene *scene;   /* not owned */
     bvh bvh;              /* valid when use_bvh */
     bool use_bvh;         /* false: linear scan (part 2 not implemented, or --no-bvh) */
+    bvh_shape shape;      /* from bvh_validate; zeros for the linear scan */
     double build_seconds; /* time bvh_build took */
 } accel;
 
-/* Builds the BVH with part 2's bvh_build; a stub (PL_ERR_TODO) or want_bvh = false falls back to
- * the linear scan and still returns PL_OK. Other failures are returned. */
+/* Builds the BVH with part 2's bvh_build and checks it with bvh_validate before anything walks it;
+ * a stub (PL_ERR_TODO) or want_bvh = false falls back to the linear scan and still returns PL_OK.
+ * Other failures, and a malformed tree (PL_ERR_INVALID, "bvh_build made a malformed tree: node 12:
+ * child 9000 >= num_nodes 4001"), are returned. */
 pl_status accel_build(accel *out, const scene *s, bool want_bvh, int max_leaf_size, pl_diag *diag);
 void accel_free(accel *a);  /* NULL-safe */
 
@@ -30,14 +33,9 @@ bool accel_occluded(const accel *a, const ray *r);
 bool linear_intersect(const scene *s, ray *r, hit *h);
 bool linear_occluded(const scene *s, const ray *r);
 
-/* The shape of the BVH in use, for -v, the JSON sidecar and the benchmark; zeros for the linear
- * scan. Walks the tree defensively (a student's tree may be malformed): nodes reached from the root
- * through valid child indices, each counted once. */
-typedef struct {
-    int nodes;   /* nodes reached from the root */
-    int leaves;
-    int depth;   /* longest root-to-leaf path, in edges */
-} accel_shape;
+/* The shape of the BVH in use, for -v, the JSON sidecar and the benchmark (bvh_validate measured
+ * it); zeros for the linear scan. */
+typedef bvh_shape accel_shape;
 accel_shape accel_bvh_shape(const accel *a);
 
 /* Rays traced by accel_intersect / accel_occluded on the calling thread since its last call. */

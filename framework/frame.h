@@ -5,6 +5,7 @@
 #define PL_FRAME_H
 
 #include "vec.h"
+#include "ray.h"
 
 typedef struct { vec3 s, t, n; } frame;  /* tangent, bitangent, normal: a right-handed basis */
 
@@ -31,5 +32,19 @@ static inline vec3 frame_to_world(const frame *f, vec3 w)
 }
 static inline float cos_theta(vec3 w_local) { return w_local.z; }
 static inline float abs_cos_theta(vec3 w_local) { return fabsf(w_local.z); }
+
+/* ---- Shading at a hit (parts 3 and 4 use both) ------------------------------------------------ */
+
+/* The world-space hit point of r at h. */
+static inline vec3 hit_point(const ray *r, const hit *h) { return ray_at(r, h->t); }
+
+/* The shading frame at h, its normal turned to face the ray's origin, so that
+ * wo = frame_to_local(&f, -r->d) always has wo.z >= 0: diffuse reflection is two-sided. */
+static inline frame shading_frame(const ray *r, const hit *h)
+{
+    vec3 n = h->n;
+    if (vec3_dot(n, r->d) > 0.0f) n = vec3_neg(n);
+    return frame_from_normal(n);
+}
 
 #endif

@@ -4,23 +4,11 @@
 #include "heatmap.h"
 #include "render.h"
 #include "colormap.h"
-#include "../parts/part1_raygen/part1.h"
+#include "../parts/part1_raygen/part1.h"  /* call sites: framework/parts.h */
+#include "../parts/part2_bvh/part2.h"
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
-
-/* Per-thread visit counter: bvh_intersect / bvh_occluded add to it once per query, so the hot
- * path pays one thread-local add per ray and no atomics. */
-static _Thread_local uint64_t node_visits;
-
-void bvh_count_visits(int nodes) { node_visits += (uint64_t)nodes; }
-
-uint64_t bvh_take_visits(void)
-{
-    uint64_t n = node_visits;
-    node_visits = 0;
-    return n;
-}
 
 /* ---- The legend: a colour bar and three numbers, drawn with a 3x5 digit font ---------------- */
 
@@ -114,7 +102,7 @@ pl_status render_heatmap(const struct render_ctx *ctx, const char *path, pl_diag
         free(visits);
         free(rgb8);
         return pl_fail(diag, PL_ERR_INVALID,
-                       "%s: bvh_intersect reported no node visits: it must call bvh_count_visits (part2.h)", path);
+                       "%s: bvh_intersect visited no nodes: it must read the nodes it tests through bvh_visit (bvh.h)", path);
     }
 
     unsigned scale = nice_ceiling(most);

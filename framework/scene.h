@@ -7,6 +7,7 @@
 #define PL_SCENE_H
 
 #include <stdbool.h>
+#include <stdint.h>
 #include "vec.h"
 #include "mat4.h"
 #include "aabb.h"
@@ -92,8 +93,13 @@ vec3 scene_prim_centroid(const scene *s, int prim);
 aabb scene_bounds(const scene *s);
 
 /* Intersects one primitive through part 1's triangle_intersect / sphere_intersect, setting
- * h->prim and h->material on a hit. Shrinks r->max_t on a hit, like them. */
+ * h->prim and h->material on a hit. Shrinks r->max_t on a hit, like them. Every call counts as one
+ * primitive test on the calling thread: the framework's count, which a traversal cannot report
+ * for itself (the complexity test and the benchmark read it). */
 bool scene_prim_intersect(const scene *s, int prim, ray *r, hit *h);
+
+/* Primitive tests made by scene_prim_intersect on the calling thread since the last call; resets. */
+uint64_t scene_take_prim_tests(void);
 
 /* Appending, for loaders and tests. Each returns the new element's index, or -1 without memory. */
 int scene_add_material(scene *s, material m);

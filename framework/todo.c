@@ -39,6 +39,14 @@ void pl_todo_reset(void)
     pthread_mutex_unlock(&lock);
 }
 
+void pl_todo_handled(void)
+{
+    pthread_mutex_lock(&lock);
+    if (atomic_load(&calls) > 0) atomic_fetch_sub(&calls, 1);
+    last[0] = '\0';
+    pthread_mutex_unlock(&lock);
+}
+
 const char *pl_todo_last(void) { return last[0] ? last : NULL; }
 
 void pl_todo_set_quiet(bool q) { atomic_store(&quiet, q); }

@@ -330,9 +330,8 @@ static bool bvh_traverse(const bvh *b, const scene *s, ray *r, hit *h, bool stop
      * pending sibling per level, so depth + 1 entries suffice. */
     struct { int node; float t_enter; } todo[BVH_MAX_DEPTH + 1];
     int num_todo = 0;
-    int visits = 1;  /* boxes tested: the root, then both children of every interior node entered */
     float t_root;
-    if (node_hit(&b->nodes[0], &sr, r->min_t, r->max_t, &t_root)) {
+    if (node_hit(bvh_visit(b, 0), &sr, r->min_t, r->max_t, &t_root)) {
         todo[0].node = 0;
         todo[0].t_enter = t_root;
         num_todo = 1;
@@ -343,6 +342,7 @@ static bool bvh_traverse(const bvh *b, const scene *s, ray *r, hit *h, bool stop
         num_todo--;
         /* Early exit: a hit found since this node was pushed may now lie before its box. */
         if (todo[num_todo].t_enter > r->max_t) continue;
+        /* Its box was tested when it was pushed; reading its fields is not a new visit. */
         const bvh_node *node = &b->nodes[todo[num_todo].node];
 
         if (node->count > 0) {
@@ -354,9 +354,8 @@ static bool bvh_traverse(const bvh *b, const scene *s, ray *r, hit *h, bool stop
         /* Visit the nearer child first: its hits shrink max_t, which may rule out the other. */
         int near = node->first, far = node->first + 1;
         float t_near, t_far;
-        bool hit_near = node_hit(&b->nodes[near], &sr, r->min_t, r->max_t, &t_near);
-        bool hit_far = node_hit(&b->nodes[far], &sr, r->min_t, r->max_t, &t_far);
-        visits += 2;
+        bool hit_near = node_hit(bvh_visit(b, near), &sr, r->min_t, r->max_t, &t_near);
+        bool hit_far = node_hit(bvh_visit(b, far), &sr, r->min_t, r->max_t, &t_far);
         if (hit_near && hit_far && t_far < t_near) {
             int swap_node = near; near = far; far = swap_node;
             float swap_t = t_near; t_near = t_far; t_far = swap_t;
@@ -371,7 +370,6 @@ static bool bvh_traverse(const bvh *b, const scene *s, ray *r, hit *h, bool stop
             todo[num_todo++].t_enter = t_near;
         }
     }
-    bvh_count_visits(visits);
     return found;
 }
 /* END SOLUTION */
@@ -381,7 +379,8 @@ static bool bvh_traverse(const bvh *b, const scene *s, ray *r, hit *h, bool stop
  * In:  b (built by bvh_build over s), s, r.   Out: *h, r->max_t (only on a hit).
  * Must: the same hit as linear_intersect (same t and primitive; either one on an exact tie);
  *       visit the nearer child first and skip boxes entered beyond r->max_t; test primitives only
- *       through scene_prim_intersect; report the boxes tested with bvh_count_visits once per call.
+ *       through scene_prim_intersect; read each node whose box you test through bvh_visit (the
+ *       framework counts visits there for the heat map and the complexity test).
  * Test: make test-part2
  * =================================================================================== */
 bool bvh_intersect(const bvh *b, const scene *s, ray *r, hit *h)
@@ -396,7 +395,7 @@ bool bvh_intersect(const bvh *b, const scene *s, ray *r, hit *h)
  * Any hit through the BVH, for shadow rays (handout/part2.md, 2.4).
  * In:  b (built by bvh_build over s), s, r (read-only).   Out: true when anything is hit.
  * Must: the same answer as linear_occluded; return at the first hit found; leave *r unchanged;
- *       report the boxes tested with bvh_count_visits once per call.
+ *       nodes through bvh_visit and primitives through scene_prim_intersect, as in 2.3.
  * Test: make test-part2
  * =================================================================================== */
 bool bvh_occluded(const bvh *b, const scene *s, const ray *r)

@@ -1,39 +1,20 @@
 /* Part 2: a bounding volume hierarchy built with the surface area heuristic.
  * Handout: handout/part2.md. Test: make test-part2.
  *
- * Conventions (the tests rely on them):
+ * The tree's types (bvh, bvh_node, BVH_MAX_DEPTH, bvh_free, bvh_visit) are the framework's:
+ * framework/bvh.h, with the conventions the tests rely on.
+ *
  * - A ray "hits" a box when some t in [r->min_t, r->max_t] puts o + t d inside the closed box
- *   (faces, edges and corners count as inside).
- * - The BVH is one flat array of nodes; nodes[0] is the root and the two children of an interior
- *   node are stored side by side. Primitives are the scene's (scene.h: triangles, then spheres) and
- *   are tested only through scene_prim_intersect, so a hit found through the BVH is exactly the hit
- *   the linear scan (framework/accel.h) finds.
- * - No tree is deeper than BVH_MAX_DEPTH, so a traversal can keep its to-do list in a fixed array. */
+ *   (faces, edges and corners count as inside). */
 #ifndef PL_PART2_H
 #define PL_PART2_H
 
 #include <stdbool.h>
 #include "../../framework/scene.h"
 #include "../../framework/aabb.h"
+#include "../../framework/bvh.h"
 #include "../../framework/ray.h"
 #include "../../framework/status.h"
-
-/* Longest root-to-leaf path, in edges (the root alone has depth 0). */
-#define BVH_MAX_DEPTH 64
-
-/* One node of the flat node array. Interior nodes have count == 0 and two children stored next
- * to each other at nodes[first] and nodes[first + 1]; leaves have count > 0 and hold primitives
- * prim_index[first .. first + count - 1]. nodes[0] is the root. */
-typedef struct {
-    aabb box;   /* tight bounds of everything below this node: the union of its primitives' bounds */
-    int first;  /* interior: index of the left child; leaf: first slot in prim_index */
-    int count;  /* primitives in a leaf (1 .. max_leaf_size); 0 for an interior node */
-} bvh_node;
-
-typedef struct {
-    bvh_node *nodes; int num_nodes;    /* owned; num_nodes == 0 for a scene without primitives */
-    int *prim_index; int num_prims;    /* owned: scene primitive indices, grouped by leaf */
-} bvh;
 
 /* TASK 2.1: slab test. True when the ray hits box *b within [r->min_t, r->max_t]; then
  * [*t_enter, *t_exit] is the part of [r->min_t, r->max_t] the ray spends inside the box (so a ray
@@ -49,15 +30,9 @@ pl_status bvh_build(bvh *out, const scene *s, int max_leaf_size);
  * changes nothing on a miss. */
 bool bvh_intersect(const bvh *b, const scene *s, ray *r, hit *h);
 
-/* TASK 2.4: any hit in [r->min_t, r->max_t] (shadow rays), as linear_occluded would answer. */
+/* TASK 2.4: any hit in [r->min_t, r->max_t] (shadow rays), as linear_occluded would answer.
+ * Both traversals read each node whose box they test through bvh_visit (framework/bvh.h), and
+ * test primitives only through scene_prim_intersect: the framework counts both. */
 bool bvh_occluded(const bvh *b, const scene *s, const ray *r);
-
-/* Framework: releases the arrays and zeroes b. NULL-safe. */
-void bvh_free(bvh *b);
-
-/* Framework (framework/heatmap.c): adds `nodes` to the calling thread's count of BVH nodes visited,
- * i.e. of node boxes tested against a ray. bvh_intersect and bvh_occluded call it once per query;
- * the heat map (--heatmap) and the complexity test read the count (bvh_take_visits, heatmap.h). */
-void bvh_count_visits(int nodes);
 
 #endif

@@ -6,19 +6,6 @@
 #include "../../framework/sampler.h"
 #include "../../framework/todo.h"
 
-vec3 hit_point(const ray *r, const hit *h)
-{
-    return ray_at(r, h->t);
-}
-
-frame shading_frame(const ray *r, const hit *h)
-{
-    vec3 n = h->n;
-    if (vec3_dot(n, r->d) > 0.0f)
-        n = vec3_neg(n);
-    return frame_from_normal(n);
-}
-
 /* === PART 3 | TASK 3.1 | bsdf_f =====================================================
  * The Lambertian BSDF: reflectance spread evenly over the hemisphere (handout/part3.md, 3.1).
  * In:  m (albedo in [0,1] per channel), wo, wi in the local shading frame.

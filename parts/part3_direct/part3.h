@@ -5,7 +5,7 @@
  *   AWAY from the surface: wo towards the viewer, wi towards the light.
  * - Every material shades as Lambertian diffuse with reflectance m->albedo; emission m->Le is
  *   one-sided: a surface emits towards the side its normal h->n points to (like the area lights).
- * - Diffuse reflection is two-sided: shading_frame turns the normal towards the viewer.
+ * - Diffuse reflection is two-sided: shading_frame (frame.h) turns the normal towards the viewer.
  * - Secondary rays (hemisphere and shadow rays) start at the hit point with min_t = EPS_F.
  * - A radiance estimate is never NaN, Inf or negative: the tests fail naming the sample if it is. */
 #ifndef PL_PART3_H
@@ -17,12 +17,6 @@
 #include "../../framework/rng.h"
 
 struct render_ctx;
-
-/* Given (complete): the world-space hit point of r at h. */
-vec3 hit_point(const ray *r, const hit *h);
-/* Given (complete): the shading frame at h, its normal turned to face the ray's origin, so that
- * wo = frame_to_local(&f, -r->d) always has wo.z >= 0. */
-frame shading_frame(const ray *r, const hit *h);
 
 /* TASK 3.1: the diffuse BSDF value f(wo, wi) (1/sr); zero unless wo and wi are above the surface. */
 rgb bsdf_f(const material *m, vec3 wo, vec3 wi);

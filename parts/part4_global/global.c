@@ -2,6 +2,7 @@
  * Handout: handout/part4.md. */
 #include "part4.h"
 #include "../part3_direct/part3.h"
+#include "../../framework/frame.h"
 #include "../../framework/render.h"
 #include "../../framework/todo.h"
 

@@ -11,6 +11,7 @@ int scenes_tests(void);
  * tests out. */
 int strip_tests(void) __attribute__((weak));
 int file_tests(void);     /* whole-file reads and their refusals */
+int bvh_tests(void);      /* the BVH validator (framework/bvh.c) */
 int output_tests(void);   /* a render's outputs as one unit */
 int lights_tests(void);
 int sampler_tests(void);
@@ -33,5 +34,6 @@ int main(void)
     failed += lights_tests();
     failed += sampler_tests();
     failed += stats_tests();
+    failed += bvh_tests();
     return failed ? 1 : 0;
 }

@@ -1,5 +1,6 @@
 /* Test machinery: not part of any assignment.
- * What part 2's tests share: the shipped scenes, random triangle soups, the BVH invariant checker. */
+ * What part 2's tests share: the shipped scenes, random triangle soups, a reference tree. The BVH's
+ * invariants are checked by the framework's one validator, bvh_validate (framework/bvh.h). */
 #ifndef PL_PART2_FIXTURES_H
 #define PL_PART2_FIXTURES_H
 
@@ -23,16 +24,5 @@ void fixture_random_soup(scene *s, int n, uint64_t seed);
  * bvh_build, so the traversal tasks can be tested on a valid tree whatever state task 2.2 is in.
  * Release with bvh_free. Fails the current test without memory. */
 void fixture_build_median(bvh *out, const scene *s, int max_leaf_size);
-
-typedef struct {
-    int depth;   /* longest root-to-leaf path, in edges */
-    int leaves;
-} bvh_shape;
-
-/* Checks every invariant of part2.h: each primitive in exactly one leaf and each prim_index slot in
- * exactly one leaf; leaves hold 1 .. max_leaf_size; every node reached once from the root; child
- * boxes inside their parent; every box exactly the union of its primitives' bounds; depth within
- * BVH_MAX_DEPTH. Returns false with the first violation described in why. */
-bool fixture_check_bvh(const bvh *b, const scene *s, int max_leaf_size, bvh_shape *shape, char *why, size_t why_len);
 
 #endif

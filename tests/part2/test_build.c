@@ -12,11 +12,10 @@ static void build_and_check(const scene *s, int max_leaf_size, const char *what)
     pl_status st = bvh_build(&b, s, max_leaf_size);
     assert_implemented();
     if (st != PL_OK) fail_msg("%s: bvh_build returned %s", what, pl_status_name(st));
-    char why[256];
-    bvh_shape shape;
-    bool ok = fixture_check_bvh(&b, s, max_leaf_size, &shape, why, sizeof why);
+    pl_diag why = pl_diag_default();
+    pl_status valid = bvh_validate(&b, s, max_leaf_size, true, NULL, &why);
     bvh_free(&b);
-    if (!ok) fail_msg("%s (max_leaf_size %d): %s", what, max_leaf_size, why);
+    if (valid != PL_OK) fail_msg("%s (max_leaf_size %d): %s", what, max_leaf_size, why.error);
 }
 
 static void check_invariants_of_scene(const scene *s, const char *path)

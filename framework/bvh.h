@@ -1,0 +1,77 @@
+/* The BVH's data: the flat node array part 2 builds and the framework stores, frees, checks and
+ * counts. Part 2's tasks (parts/part2_bvh/part2.h) fill and walk these structures; everything
+ * here is the framework's, so a change to a part cannot change a layout the renderer, the heat
+ * map and the tests read.
+ *
+ * Conventions (the tests rely on them):
+ * - nodes[0] is the root; the two children of an interior node are stored side by side.
+ * - Primitives are the scene's (scene.h: triangles, then spheres) and are tested only through
+ *   scene_prim_intersect, so a hit found through the BVH is exactly the hit the linear scan finds.
+ * - No tree is deeper than BVH_MAX_DEPTH, so a traversal can keep its to-do list in a fixed array.
+ * - A traversal reads every node it tests through bvh_visit: that is where the framework counts
+ *   node visits for the heat map and the complexity test (a traversal never reports its own). */
+#ifndef PL_BVH_H
+#define PL_BVH_H
+
+#include <stdbool.h>
+#include <stdint.h>
+#include "aabb.h"
+#include "scene.h"
+#include "status.h"
+
+/* Longest root-to-leaf path, in edges (the root alone has depth 0). */
+#define BVH_MAX_DEPTH 64
+
+/* One node of the flat node array. Interior nodes have count == 0 and two children stored next
+ * to each other at nodes[first] and nodes[first + 1]; leaves have count > 0 and hold primitives
+ * prim_index[first .. first + count - 1]. nodes[0] is the root. */
+typedef struct {
+    aabb box;   /* tight bounds of everything below this node: the union of its primitives' bounds */
+    int first;  /* interior: index of the left child; leaf: first slot in prim_index */
+    int count;  /* primitives in a leaf (1 .. max_leaf_size); 0 for an interior node */
+} bvh_node;
+
+typedef struct {
+    bvh_node *nodes; int num_nodes;    /* owned; num_nodes == 0 for a scene without primitives */
+    int *prim_index; int num_prims;    /* owned: scene primitive indices, grouped by leaf */
+} bvh;
+
+/* Releases the arrays and zeroes b. NULL-safe. */
+void bvh_free(bvh *b);
+
+/* ---- Counted access ------------------------------------------------------------------------ */
+
+/* Node `index` of b, counted as one node visit (one box about to be tested) on the calling
+ * thread. index must be valid: bvh_validate has checked every index a traversal can reach. */
+static inline const bvh_node *bvh_visit(const bvh *b, int index)
+{
+    extern _Thread_local uint64_t bvh_node_visits;
+    bvh_node_visits++;
+    return &b->nodes[index];
+}
+
+/* Nodes handed out by bvh_visit on the calling thread since the last call; resets the count. */
+uint64_t bvh_take_visits(void);
+
+/* ---- The one validator ----------------------------------------------------------------------- */
+
+/* The shape of a valid tree, for -v, the JSON sidecar, the benchmark and the tests. */
+typedef struct {
+    int nodes;   /* nodes reached from the root (all of them, in a valid tree) */
+    int leaves;
+    int depth;   /* longest root-to-leaf path, in edges */
+} bvh_shape;
+
+/* Checks a tree part 2 built over the primitives of s before anything walks it: the arrays and
+ * counts agree with the scene, child and primitive indices are in range, no node is reached twice
+ * (cycles, shared children) and none is unreachable, every primitive and prim_index slot is in
+ * exactly one leaf, leaves hold 1 .. max_leaf_size primitives, every box encloses its children and
+ * primitives (exactly their union when tight), depth <= BVH_MAX_DEPTH. The renderer runs it with
+ * tight = false (a conservative box is correct), the part 2 tests with tight = true (task 2.2 asks
+ * for tight boxes). On success fills *shape (may be NULL) and returns PL_OK; otherwise
+ * PL_ERR_INVALID with the first fault in diag, e.g. "node 12: child 9000 >= num_nodes 4001";
+ * PL_ERR_NOMEM without memory for the walk. */
+pl_status bvh_validate(const bvh *b, const scene *s, int max_leaf_size, bool tight, bvh_shape *shape,
+                       pl_diag *diag);
+
+#endif
