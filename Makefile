@@ -44,7 +44,8 @@ endif
 FRAMEWORK_SRC := $(filter-out framework/main.c,$(wildcard framework/*.c))
 PARTS_SRC     := $(wildcard parts/*/*.c)
 COMMON_SRC    := $(wildcard tests/common/*.c)
-LIB_OBJ       := $(patsubst %.c,$(BUILD)/%.o,$(FRAMEWORK_SRC) $(PARTS_SRC))
+THIRD_SRC     := third_party/lodepng/lodepng.c
+LIB_OBJ       := $(patsubst %.c,$(BUILD)/%.o,$(FRAMEWORK_SRC) $(PARTS_SRC) $(THIRD_SRC))
 COMMON_OBJ    := $(patsubst %.c,$(BUILD)/%.o,$(COMMON_SRC))
 suite_obj      = $(patsubst %.c,$(BUILD)/%.o,$(wildcard tests/$(1)/*.c))
 

@@ -10,6 +10,7 @@
 #include <strings.h>
 #include <unistd.h>
 #include <stb_image.h>
+#include "../third_party/lodepng/lodepng.h"
 #pragma GCC diagnostic push
 #pragma GCC diagnostic ignored "-Wunused-function"
 #include <zlib.h>
@@ -224,12 +225,15 @@ pl_status image_read(const char *path, image *out, pl_diag *diag)
         stbi_image_free(data);
         return s == PL_OK ? PL_OK : pl_fail(diag, s, "%s: out of memory", path);
     }
-    unsigned char *data = stbi_load(path, &w, &h, &channels, 3);
-    if (!data) return pl_fail(diag, PL_ERR_IO, "%s: cannot read image: %s", path, stbi_failure_reason());
-    pl_status s = image_alloc(out, w, h);
+    /* PNG through LodePNG (third_party/lodepng): 8-bit RGB, whatever the file's own format. */
+    unsigned char *data = NULL;
+    unsigned uw, uh;
+    unsigned err = lodepng_decode24_file(&data, &uw, &uh, path);
+    if (err) return pl_fail(diag, PL_ERR_IO, "%s: cannot read image: %s", path, lodepng_error_text(err));
+    pl_status s = uw > 0 && uh > 0 && uw <= 1u << 15 && uh <= 1u << 15 ? image_alloc(out, (int)uw, (int)uh) : PL_ERR_INVALID;
     if (s == PL_OK)
-        for (size_t i = 0; i < (size_t)w * h; i++)
+        for (size_t i = 0; i < (size_t)uw * uh; i++)
             out->pixels[i] = rgb_make(data[3 * i] / 255.0f, data[3 * i + 1] / 255.0f, data[3 * i + 2] / 255.0f);
-    stbi_image_free(data);
-    return s == PL_OK ? PL_OK : pl_fail(diag, s, "%s: out of memory", path);
+    free(data);
+    return s == PL_OK ? PL_OK : pl_fail(diag, s, "%s: %s", path, s == PL_ERR_NOMEM ? "out of memory" : "image too large");
 }

@@ -6,7 +6,7 @@ FUZZ_CC      ?= clang
 FUZZ_SECONDS ?= 60
 FUZZ_BUILD   := build/fuzz
 FUZZ_FLAGS   := -fsanitize=fuzzer-no-link,address,undefined -fno-sanitize-recover=undefined -O1 -g
-FUZZ_SRC     := $(FRAMEWORK_SRC) $(PARTS_SRC) fuzz/fuzz_scene.c
+FUZZ_SRC     := $(FRAMEWORK_SRC) $(PARTS_SRC) $(THIRD_SRC) fuzz/fuzz_scene.c
 FUZZ_OBJ     := $(patsubst %.c,$(FUZZ_BUILD)/%.o,$(FUZZ_SRC))
 
 .PHONY: fuzz fuzz-regress

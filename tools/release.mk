@@ -6,7 +6,8 @@
 
 # The stripper's core is a library so tests/framework/test_strip.c can test its rules directly.
 STRIP_OBJ     := $(BUILD)/tools/strip.o
-TOOL_LIB_OBJ  := $(BUILD)/framework/image.o $(BUILD)/framework/file.o $(BUILD)/framework/status.o
+TOOL_LIB_OBJ  := $(BUILD)/framework/image.o $(BUILD)/framework/file.o $(BUILD)/framework/status.o \
+                 $(BUILD)/third_party/lodepng/lodepng.o
 
 $(BIN)/strip_solutions: $(BUILD)/tools/strip_solutions.o $(STRIP_OBJ) $(TOOL_LIB_OBJ)
 	$(say) LD $@
