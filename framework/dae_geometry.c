@@ -287,7 +287,7 @@ static pl_status read_polygons(dae_ctx *c, const xmlNode *prim, const inputs *in
 static pl_status read_primitive(dae_ctx *c, const xmlNode *prim, const instance *inst)
 {
     int count, mat;
-    inputs in;
+    inputs in = {0};  /* freed below on every path, even before read_inputs fills it */
     pl_status st = dae_attr_int(c, prim, "count", true, 0, 0, &count);
     if (!st) st = read_inputs(c, prim, &in);
     if (!st) st = dae_bound_material(c, prim, inst->bindings, inst->num_bindings, dae_attr(prim, "material"), &mat);
