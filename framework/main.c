@@ -7,6 +7,7 @@
 #include "sidecar.h"
 #include "colormap.h"
 #include "heatmap.h"
+#include "range.h"
 #include <errno.h>
 #include <pthread.h>
 #include <stdio.h>
@@ -61,6 +62,7 @@ static int run(const options *o, const char *prog)
     scene s;
     int code = 0;
     image img = {0};
+    film fm = {0};
     int *samples = NULL;
     char *json = NULL, *rate = NULL;
     accel a;
@@ -85,13 +87,16 @@ static int run(const options *o, const char *prog)
     if (o->heatmap && render_heatmap(&ctx, o->heatmap, &diag) != PL_OK) { code = fail(prog, &diag, 1); goto done; }
 
     samples = calloc((size_t)o->width * (size_t)o->height, sizeof *samples);
-    if (!samples || image_alloc(&img, o->width, o->height) != PL_OK) {
+    if (!samples || image_alloc(&img, o->width, o->height) != PL_OK || film_alloc(&fm, o->width, o->height) != PL_OK) {
         fprintf(stderr, "%s: out of memory for a %dx%d image\n", prog, o->width, o->height);
         code = 1;
         goto done;
     }
     render_stats stats;
-    if (render_image(&ctx, &img, samples, &stats, &diag) != PL_OK) { code = fail(prog, &diag, 1); goto done; }
+    if (render_film(&ctx, &fm, &stats, &diag) != PL_OK || film_to_image(&fm, &img, samples, &diag) != PL_OK) {
+        code = fail(prog, &diag, 1);
+        goto done;
+    }
     if (stats.bad_pixels)
         fprintf(stderr, "%s: warning: %d pixels have NaN, infinite or negative radiance (first at x=%d y=%d, "
                         "counted from the bottom-left)\n", prog, stats.bad_pixels, stats.first_bad_x, stats.first_bad_y);
@@ -106,7 +111,12 @@ static int run(const options *o, const char *prog)
         pthread_t writer;
         bool threaded = pthread_create(&writer, NULL, write_rate_map, &job) == 0;
         if (!threaded) write_rate_map(&job);
-        pl_status image_status = image_write(&img, o->output, &diag);
+        size_t len = strlen(o->output);
+        exr_info provenance;
+        exr_image exr = {&fm, &provenance};
+        pl_status image_status = len > 4 && !strcasecmp(o->output + len - 4, ".exr")
+                                     ? range_info(o, &provenance, &diag) == PL_OK ? exr_write(o->output, &exr, &diag) : PL_ERR_IO
+                                     : image_write(&img, o->output, &diag);
         if (threaded) pthread_join(writer, NULL);
         if (image_status != PL_OK || job.status != PL_OK) {
             code = fail(prog, image_status != PL_OK ? &diag : &job.diag, 1);
@@ -138,6 +148,7 @@ done:
     free(rate);
     free(samples);
     image_free(&img);
+    film_free(&fm);
     accel_free(&a);
     scene_free(&s);
     return code;
@@ -146,6 +157,7 @@ done:
 int main(int argc, char **argv)
 {
     const char *prog = "pathtracer";
+    if (argc > 1 && !strcmp(argv[1], "--merge")) return range_merge_main(argc, argv, prog);
     options o;
     cli_action action;
     pl_diag diag = pl_diag_default();
@@ -160,8 +172,9 @@ int main(int argc, char **argv)
     if (o.output) {
         /* Check the name before a long render, not after. */
         size_t n = strlen(o.output);
-        if (!(n > 4 && (!strcasecmp(o.output + n - 4, ".png") || !strcasecmp(o.output + n - 4, ".hdr")))) {
-            fprintf(stderr, "%s: -f %s: expected a file name ending in .png or .hdr\nTry '%s -h' for help.\n", prog, o.output, prog);
+        if (!(n > 4 && (!strcasecmp(o.output + n - 4, ".png") || !strcasecmp(o.output + n - 4, ".hdr") ||
+                      !strcasecmp(o.output + n - 4, ".exr")))) {
+            fprintf(stderr, "%s: -f %s: expected a file name ending in .png, .hdr or .exr\nTry '%s -h' for help.\n", prog, o.output, prog);
             cli_free(&o);
             return 2;
         }

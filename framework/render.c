@@ -38,8 +38,8 @@ void render_ctx_init(render_ctx *ctx, const scene *s, const accel *a, const opti
         camera_set_aspect(&ctx->camera, (float)o->width / (float)o->height);
     ctx->camera.lens_radius = o->lens_radius;
     ctx->camera.focal_distance = o->focal_distance;
-    ctx->sample_begin = 0;
-    ctx->sample_end = o->spp;
+    ctx->sample_begin = o->sample_end ? o->sample_begin : 0;  /* --samples A:B, else all of -s */
+    ctx->sample_end = o->sample_end ? o->sample_end : o->spp;
 }
 
 rng render_rng(const render_ctx *ctx, int x, int y, int sample)
