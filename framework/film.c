@@ -22,8 +22,9 @@ bool film_quantise(float v, uint64_t *q)
 {
     /* The tests reject NaN too: every comparison with NaN is false. */
     if (!(v >= 0.0f && (double)v < FILM_MAX_VALUE)) return false;
-    /* v * 2^32 is exact in double (float has 24 bits); only the rounding to an integer loses. */
-    *q = (uint64_t)llround(ldexp((double)v, FILM_FRAC_BITS));
+    /* v * 2^32 is exact in double (float has 24 bits), and so is adding 0.5 to it when it has a
+     * fraction (it is then below 2^52); the cast truncates: round half up, as llround for v >= 0. */
+    *q = (uint64_t)((double)v * 4294967296.0 + 0.5);
     return true;
 }
 
