@@ -12,7 +12,7 @@
 typedef enum { CH_MEAN, CH_VAR, CH_N, CH_BAD, CH_SUM, CH_SQ } channel_kind;
 
 typedef struct {
-    char name[16];
+    char name[32];
     channel_kind kind;
     int c;     /* film channel: 0..2 rgb, 3 luminance */
     int word;  /* CH_SUM, CH_SQ: which 32-bit word of the 128-bit sum, 0 = least significant */

@@ -81,7 +81,10 @@ void render_pixel(const render_ctx *ctx, int x, int y, film_pixel *p)
         rng g = render_rng(ctx, x, y, s);
         vec2 u = o->spp == 1 ? vec2_make(0.5f, 0.5f) : rng_uniform2(&g);  /* one sample: the centre */
         ray r = pixel_sample_ray(&ctx->camera, x, y, ctx->width, ctx->height, u);
-        film_pixel_add(p, radiance_estimate(ctx, &r, &g));
+        /* A ray spanning no distance is no camera ray: task 1.1 or 1.4 is still a stub (or broken).
+         * Show magenta, as every missing part does, rather than a black picture. */
+        rgb L = r.max_t > r.min_t ? radiance_estimate(ctx, &r, &g) : rgb_magenta();
+        film_pixel_add(p, L);
         if (o->adaptive && p->n % (uint32_t)batch == 0 &&
             adaptive_converged((int)p->n, film_sum_value(p->sum[3]), film_sum_value(p->sum_sq[3]), o->adaptive_tol))
             break;
