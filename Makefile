@@ -6,7 +6,7 @@ OPT     ?= -O2
 SAN     ?= 0   # 1: AddressSanitizer + UndefinedBehaviorSanitizer build, in build/san and bin/san
 WERROR  ?= 0   # 1: warnings are errors (CI sets it)
 V       ?= 0   # 1: print whole commands instead of "CC file.c"
-PKGS    := libxml-2.0 stb jansson zlib
+PKGS    := libxml-2.0 stb jansson zlib OpenEXR
 TPKGS   := cmocka
 SUITES  := framework grader part1 part2 part3 part4 part5
 

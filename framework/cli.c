@@ -39,7 +39,7 @@ void cli_print_usage(FILE *f, const char *prog)
             "  -e FILE     environment map (not supported yet)\n"
             "  -b R        lens radius (0)\n"
             "  -d D        focal distance (4.7)\n"
-            "  -f FILE     write the render: .png (tone-mapped) or .hdr (linear), plus FILE.json\n"
+            "  -f FILE     write the render: .png (tone-mapped), .hdr or .exr (linear), plus FILE.json\n"
             "  -r W H      image size in pixels (800 600)\n"
             "  -c FILE     CS184 camera settings file\n"
             "  -a B T      adaptive sampling: check every B samples, tolerance T (32 0.05)\n"
@@ -54,7 +54,9 @@ void cli_print_usage(FILE *f, const char *prog)
             "  --no-rr           no Russian roulette: every path runs to -m bounces (part 4)\n"
             "  --leaf-size N     BVH max primitives per leaf (4)\n"
             "  --max-primitives N  refuse scenes with more triangles + spheres (2000000; guards memory)\n"
-            "  --heatmap FILE    write a PNG of BVH nodes visited per pixel\n",
+            "  --heatmap FILE    write a PNG of BVH nodes visited per pixel\n"
+            "  --samples A:B     render only samples A..B-1 of -s N (fixed rate; -f x.exr keeps what --merge needs)\n"
+            "  --merge -f OUT.(exr|png|hdr) IN.exr...  merge --samples ranges that tile 0..N into OUT\n",
             prog);
 }
 
@@ -169,12 +171,24 @@ pl_status cli_parse(int argc, char **argv, options *out, cli_action *action, pl_
             s = parse_int(a, VALUE(1), 1, 1 << 30, &v, d), i++;
             o.max_primitives = v;
         }
+        else if (!strcmp(a, "--samples")) {
+            char extra;
+            if (!VALUE(1) || sscanf(VALUE(1), "%d:%d%c", &o.sample_begin, &o.sample_end, &extra) != 2 ||
+                o.sample_begin < 0 || o.sample_begin >= o.sample_end)
+                s = pl_fail(d, PL_ERR_INVALID, "--samples: expected A:B with 0 <= A < B, got '%s'", VALUE(1) ? VALUE(1) : "nothing");
+            i++;
+        }
         else if (!strcmp(a, "--heatmap")) { if (!VALUE(1)) s = pl_fail(d, PL_ERR_INVALID, "--heatmap: expected a .png file name"); o.heatmap = VALUE(1); i++; }
         else return pl_fail(d, PL_ERR_INVALID, "unknown option '%s'", a);
     }
 #undef VALUE
     if (s != PL_OK) return s;
     if (!o.scene_path) return pl_fail(d, PL_ERR_INVALID, "expected a scene file (.dae)");
+    if (o.sample_end && o.adaptive)
+        return pl_fail(d, PL_ERR_INVALID, "--samples %d:%d: sample ranges are for fixed-rate renders; -a decides per pixel "
+                       "how many samples to take, so its renders cannot be split", o.sample_begin, o.sample_end);
+    if (o.sample_end > o.spp)
+        return pl_fail(d, PL_ERR_INVALID, "--samples %d:%d: B must be at most -s %d", o.sample_begin, o.sample_end, o.spp);
     if (o.envmap) return pl_fail(d, PL_ERR_INVALID, "-e %s: environment maps are not supported yet", o.envmap);
     o.command_line = join_args(argc, argv);
     if (!o.command_line) return pl_fail(d, PL_ERR_NOMEM, "out of memory");

@@ -9,6 +9,7 @@
 #include "colormap.h"
 #include "heatmap.h"
 #include "output.h"
+#include "range.h"
 #include <errno.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -53,6 +54,7 @@ static int run(const options *o, const char *prog)
     scene s;
     int code = 0;
     image img = {0};
+    film fm = {0};
     int *samples = NULL;
     accel a;
     memset(&a, 0, sizeof a);
@@ -82,13 +84,16 @@ static int run(const options *o, const char *prog)
     if (o->heatmap && render_heatmap(&ctx, out.path[OUTPUT_HEATMAP], &diag) != PL_OK) { code = fail(prog, &diag, 1); goto done; }
 
     samples = calloc((size_t)o->width * (size_t)o->height, sizeof *samples);
-    if (!samples || image_alloc(&img, o->width, o->height) != PL_OK) {
+    if (!samples || image_alloc(&img, o->width, o->height) != PL_OK || film_alloc(&fm, o->width, o->height) != PL_OK) {
         fprintf(stderr, "%s: out of memory for a %dx%d image\n", prog, o->width, o->height);
         code = 1;
         goto done;
     }
     render_stats stats;
-    if (render_image(&ctx, &img, samples, &stats, &diag) != PL_OK) { code = fail(prog, &diag, 1); goto done; }
+    if (render_film(&ctx, &fm, &stats, &diag) != PL_OK || film_to_image(&fm, &img, samples, &diag) != PL_OK) {
+        code = fail(prog, &diag, 1);
+        goto done;
+    }
     if (stats.bad_pixels)
         fprintf(stderr, "%s: warning: %d pixels have NaN, infinite or negative radiance (first at x=%d y=%d, "
                         "counted from the bottom-left)\n", prog, stats.bad_pixels, stats.first_bad_x, stats.first_bad_y);
@@ -97,9 +102,15 @@ static int run(const options *o, const char *prog)
     double t1 = now_seconds();
     rate_map rates = {samples, o->width, o->height, o->spp};
     sidecar_info info = {&ctx, load_seconds, a.build_seconds, &stats, o->adaptive ? samples : NULL};
+    exr_info provenance;
+    exr_image exr_out = {&fm, &provenance};
     if (o->output) {
-        bool hdr = strlen(o->output) > 4 && !strcasecmp(o->output + strlen(o->output) - 4, ".hdr");
-        output_bind(&out, OUTPUT_IMAGE, hdr ? image_encode_hdr : image_encode_png, &img);
+        size_t len = strlen(o->output);
+        bool hdr = len > 4 && !strcasecmp(o->output + len - 4, ".hdr");
+        bool exr = len > 4 && !strcasecmp(o->output + len - 4, ".exr");
+        if (exr && range_info(o, &provenance, &diag) != PL_OK) { code = fail(prog, &diag, 1); goto done; }
+        output_bind(&out, OUTPUT_IMAGE, exr ? exr_encode : hdr ? image_encode_hdr : image_encode_png,
+                    exr ? (const void *)&exr_out : (const void *)&img);
         output_bind(&out, OUTPUT_RATE_MAP, rate_map_encode, &rates);
         output_bind(&out, OUTPUT_SIDECAR, sidecar_encode, &info);
         if (output_write(&out, OUTPUT_IMAGE, OUTPUT_SIDECAR, &diag) != PL_OK) { code = fail(prog, &diag, 1); goto done; }
@@ -127,6 +138,7 @@ static int run(const options *o, const char *prog)
 done:
     free(samples);
     image_free(&img);
+    film_free(&fm);
     accel_free(&a);
     scene_free(&s);
     output_free(&out);
@@ -136,6 +148,7 @@ done:
 int main(int argc, char **argv)
 {
     const char *prog = "pathtracer";
+    if (argc > 1 && !strcmp(argv[1], "--merge")) return range_merge_main(argc, argv, prog);
     options o;
     cli_action action;
     pl_diag diag = pl_diag_default();

@@ -15,7 +15,7 @@ typedef struct {
     const char *envmap;       /* -e: environment map (not supported yet: rejected) */
     float lens_radius;        /* -b: aperture radius (0) */
     float focal_distance;     /* -d: focal distance (4.7) */
-    const char *output;       /* -f: output .png or .hdr; NULL = no file (print stats only) */
+    const char *output;       /* -f: output .png, .hdr or .exr; NULL = no file (print stats only) */
     int width, height;        /* -r W H: frame size (800 600) */
     const char *camera_file;  /* -c: CS184 camera settings file */
     bool adaptive;            /* -a given: use part 5's adaptive estimate */
@@ -24,6 +24,8 @@ typedef struct {
     bool hemisphere;          /* -H: direct light by uniform hemisphere sampling */
     bool no_roulette;         /* --no-rr: part 4 follows every path to -m, no Russian roulette (false) */
     uint64_t seed;            /* --seed: base of every per-sample RNG stream (0) */
+    int sample_begin;         /* --samples A:B: render samples A..B-1 of -s N (0 0 = all) */
+    int sample_end;
     bool normals;             /* --normals: shade by surface normal (parts 1 and 2) */
     bool cs184_framing;       /* --cs184-camera: CS184's orbit framing instead of the file's camera */
     bool linear_scan;         /* --no-bvh: skip part 2, intersect by linear scan */

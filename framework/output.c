@@ -77,8 +77,8 @@ pl_status output_plan(output_set *set, const options *o, pl_diag *diag)
         return pl_fail(diag, PL_ERR_INVALID, "-r %d %d: %lld pixels need about %lld MB, more than half of this "
                        "machine's memory", o->width, o->height, pixels, pixels * BYTES_PER_PIXEL >> 20);
     if (o->output) {
-        if (!has_extension(o->output, ".png") && !has_extension(o->output, ".hdr"))
-            return pl_fail(diag, PL_ERR_INVALID, "-f %s: expected a file name ending in .png or .hdr", o->output);
+        if (!has_extension(o->output, ".png") && !has_extension(o->output, ".hdr") && !has_extension(o->output, ".exr"))
+            return pl_fail(diag, PL_ERR_INVALID, "-f %s: expected a file name ending in .png, .hdr or .exr", o->output);
         set->path[OUTPUT_IMAGE] = strdup(o->output);
         set->path[OUTPUT_RATE_MAP] = with_suffix(o->output, "_rate", ".png");
         set->path[OUTPUT_SIDECAR] = with_suffix(o->output, "", ".json");

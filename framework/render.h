@@ -13,6 +13,7 @@
 #include "accel.h"
 #include "image.h"
 #include "rng.h"
+#include "film.h"
 
 typedef struct render_ctx {
     const scene *scene;    /* not owned */
@@ -20,6 +21,9 @@ typedef struct render_ctx {
     const options *opts;   /* not owned */
     camera camera;         /* the scene's camera with aspect and framing applied */
     int width, height;     /* pixels */
+    /* The camera samples to take of every pixel: sample_begin .. sample_end - 1 (--samples A:B;
+     * 0 .. opts->spp by default). Sample s is the same whatever range it is rendered in. */
+    int sample_begin, sample_end;
     /* Progress reports while render_image runs (from the calling thread); NULL for none. */
     void (*on_progress)(void *user, int tiles_done, int tiles_total);
     void *progress_user;
@@ -49,16 +53,24 @@ typedef struct {
     double seconds;         /* wall time of the pixel loop */
     uint64_t rays;          /* rays traced (camera, bounce, shadow) */
     uint64_t samples;       /* camera samples taken, all pixels */
-    int bad_pixels;         /* pixels whose estimate was NaN, Inf or negative */
+    int bad_pixels;         /* pixels with a NaN, Inf, negative or huge sample (film.h) */
     int first_bad_x, first_bad_y;
 } render_stats;
 
-/* Renders every pixel into out (allocated by the caller at ctx->width x ctx->height) with
- * opts->threads threads. samples_per_pixel (may be NULL) receives the camera samples each pixel
- * took, indexed like the image (top row first). Bit-identical for any thread count. */
-pl_status render_image(const render_ctx *ctx, image *out, int *samples_per_pixel, render_stats *stats, pl_diag *diag);
+/* The per-pixel sample loop, the one place that takes camera samples. For each sample s of the
+ * ctx's range: g = render_rng(ctx, x, y, s); u = the pixel centre (0.5, 0.5) when opts->spp == 1,
+ * else rng_uniform2(&g); the ray from part 1's pixel_sample_ray; L = radiance_estimate; added to
+ * p. With -a B T it asks part 5's adaptive_converged after every B samples (counted from 0) and
+ * stops when it says so; it never goes past sample_end, so the last batch may be shorter. */
+void render_pixel(const render_ctx *ctx, int x, int y, film_pixel *p);
 
-/* The pixel estimate the options select: part 5's adaptive one with -a, else part 1's fixed rate. */
-rgb render_pixel(const render_ctx *ctx, int x, int y, int *samples_taken);
+/* Renders every pixel's samples into out (film_alloc'ed by the caller at ctx->width x
+ * ctx->height, zeroed) with opts->threads threads. The same bytes for any thread count. */
+pl_status render_film(const render_ctx *ctx, film *out, render_stats *stats, pl_diag *diag);
+
+/* render_film, then the image of the means into out (allocated by the caller at ctx->width x
+ * ctx->height). samples_per_pixel (may be NULL) receives the camera samples each pixel took,
+ * indexed like the image (top row first). */
+pl_status render_image(const render_ctx *ctx, image *out, int *samples_per_pixel, render_stats *stats, pl_diag *diag);
 
 #endif

@@ -14,8 +14,6 @@
 #include "../../framework/scene.h"
 #include "../../framework/ray.h"
 
-struct render_ctx;
-
 /* TASK 1.1: the camera ray through film point (x, y); unit direction; [min_t, max_t] = [znear, zfar]. */
 ray camera_generate_ray(const camera *c, float x, float y);
 
@@ -26,8 +24,9 @@ bool triangle_intersect(const triangle *tri, ray *r, hit *h);
 /* TASK 1.3: the nearest root of |o + t d - c|^2 = R^2 inside [min_t, max_t]; h->n points outwards. */
 bool sphere_intersect(const sphere *s, ray *r, hit *h);
 
-/* TASK 1.4: the fixed-rate pixel estimate: the mean radiance of opts->spp camera samples. */
-rgb pixel_estimate_fixed(const struct render_ctx *ctx, int x, int y, int *samples_taken);
+/* TASK 1.4: the camera ray of one sample of pixel (x, y): through film point
+ * ((x + u.x) / width, (y + u.y) / height), u in [0,1)^2 drawn by the framework's pixel loop. */
+ray pixel_sample_ray(const camera *c, int x, int y, int width, int height, vec2 u);
 
 /* Worked example (complete): a colour for the surface normal, n * 0.5 + 0.5 per channel. */
 rgb normal_shade(const hit *h);

@@ -1,36 +1,23 @@
-/* Part 1, task 1.4 (the fixed-rate pixel estimate) and the worked example (normal shading). */
+/* Part 1, task 1.4 (the camera ray of one pixel sample) and the worked example (normal shading). */
 #include "part1.h"
-#include "../../framework/render.h"
 #include "../../framework/todo.h"
 
-/* === PART 1 | TASK 1.4 | pixel_estimate_fixed =========================================
- * The mean radiance through pixel (x, y) over ctx->opts->spp camera samples (handout/part1.md,
- * section 1.4).
- * In:  ctx (camera, width, height, opts->spp); pixel (x, y), (0,0) = bottom-left.
- * Out: the mean of radiance_estimate over the samples; *samples_taken = opts->spp.
- * Must: sample s uses the generator render_rng(ctx, x, y, s) for everything it draws, so renders
- *       do not depend on thread count; with spp == 1 the ray passes through the pixel centre; with
- *       spp > 1 each sample is uniform over the pixel's square.
+/* === PART 1 | TASK 1.4 | pixel_sample_ray =============================================
+ * The camera ray of one sample of pixel (x, y) (handout/part1.md, section 1.4). The framework's
+ * pixel loop calls it once per sample, with u drawn for that sample.
+ * In:  camera c; pixel (x, y), (0,0) = bottom-left; the film's width and height in pixels;
+ *      u in [0,1)^2, where in the pixel the sample lies ((0.5, 0.5) is the centre).
+ * Out: camera_generate_ray through film point ((x + u.x) / width, (y + u.y) / height).
+ * Must: pixel (x, y) covers film [x/W, (x+1)/W] x [y/H, (y+1)/H], so u = (0, 0) is its
+ *       bottom-left corner and uniform u covers the pixel uniformly.
  * Test: make test-part1
  * ====================================================================================== */
-rgb pixel_estimate_fixed(const struct render_ctx *ctx, int x, int y, int *samples_taken)
+ray pixel_sample_ray(const camera *c, int x, int y, int width, int height, vec2 u)
 {
     /* BEGIN SOLUTION */
-    int n = ctx->opts->spp;
-    double sum_r = 0.0, sum_g = 0.0, sum_b = 0.0;  /* many samples: sum in double */
-    for (int s = 0; s < n; s++) {
-        rng g = render_rng(ctx, x, y, s);
-        vec2 jitter = n == 1 ? vec2_make(0.5f, 0.5f) : rng_uniform2(&g);
-        ray r = camera_generate_ray(&ctx->camera, (x + jitter.x) / ctx->width, (y + jitter.y) / ctx->height);
-        rgb L = radiance_estimate(ctx, &r, &g);
-        sum_r += L.r;
-        sum_g += L.g;
-        sum_b += L.b;
-    }
-    *samples_taken = n;
-    return rgb_make((float)(sum_r / n), (float)(sum_g / n), (float)(sum_b / n));
+    return camera_generate_ray(c, (x + u.x) / (float)width, (y + u.y) / (float)height);
     /* END SOLUTION */
-    /* STUB: *samples_taken = ctx->opts->spp; return PL_TODO_RGB("1.4", "pixel_estimate_fixed"); */
+    /* STUB: return PL_TODO_RAY("1.4", "pixel_sample_ray"); */
 }
 
 /* Worked example, complete: the pattern every task follows, finished. Maps each component of the

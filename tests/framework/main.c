@@ -4,6 +4,7 @@ int rng_tests(void);
 int image_tests(void);
 int cli_tests(void);
 int render_tests(void);
+int film_tests(void);    /* the film and the sample-range merge */
 int camera_file_tests(void);
 int dae_tests(void);
 int scenes_tests(void);
@@ -25,6 +26,7 @@ int main(void)
     failed += image_tests();
     failed += cli_tests();
     failed += render_tests();
+    failed += film_tests();
     failed += camera_file_tests();
     failed += dae_tests();
     failed += scenes_tests();

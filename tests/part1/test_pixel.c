@@ -1,5 +1,7 @@
-/* Test machinery: not part of any assignment. Task 1.4: the fixed-rate pixel estimate, and a whole
- * normal-shaded render checked against an independent oracle.
+/* Test machinery: not part of any assignment. Task 1.4: the camera ray of one pixel sample, checked
+ * exactly against camera_generate_ray at the film point it must use; then the framework's pixel
+ * loop with it (coverage of the pixel), and a whole normal-shaded render against an independent
+ * oracle.
  *
  * Statistics: the coverage tests are binomial proportions checked with a two-sided z-test at
  * ALPHA = 1e-4 each (three tests: Sidak over the suite gives 3e-4 < 1e-3). Seeds are fixed (SEED). */
@@ -46,10 +48,12 @@ static double covered_fraction(float x0, float y0, int spp, int *taken)
     o.seed = SEED;
     render_ctx ctx;
     render_ctx_init(&ctx, &s, &a, &o);
-    rgb c = pixel_estimate_fixed(&ctx, 0, 0, taken);
+    film_pixel p = {0};
+    render_pixel(&ctx, 0, 0, &p);
+    *taken = (int)p.n;
     accel_free(&a);
     scene_free(&s);
-    return c.b;
+    return film_pixel_mean(&p, 2);
 }
 
 static void expect_fraction(float x0, float y0, double expected, int spp)
@@ -57,14 +61,58 @@ static void expect_fraction(float x0, float y0, double expected, int spp)
     int taken = 0;
     double got = covered_fraction(x0, y0, spp, &taken);
     assert_implemented();
-    if (taken != spp) fail_msg("wrong: *samples_taken = %d, expected %d (the -s value)", taken, spp);
+    if (taken != spp) fail_msg("the pixel loop took %d samples, expected %d (the -s value)", taken, spp);
     double tolerance = Z_CRIT * sqrt(expected * (1 - expected) / spp);
     if (!(fabs(got - expected) <= tolerance))
         fail_msg("wrong: %d samples cover %.4f of the pixel, expected %.4f +- %.4f (alpha %g, seed %u): "
                  "are samples spread uniformly over the whole pixel?", spp, got, expected, tolerance, ALPHA, SEED);
 }
 
-static void test_pixel_estimate_fixed__one_sample_goes_through_the_centre(void **state)
+/* ---- pixel_sample_ray alone: exact ---------------------------------------------------------- */
+
+static camera tilted_camera(void)
+{
+    camera c;
+    memset(&c, 0, sizeof c);
+    c.camera_to_world = mat4_identity();
+    c.hfov = 70.0f;
+    c.vfov = 50.0f;
+    c.znear = 1e-3f;
+    c.zfar = 100.0f;
+    return c;
+}
+
+/* pixel_sample_ray(x, y, u) must be the camera ray through ((x + u.x) / W, (y + u.y) / H). */
+static void expect_ray_through(int x, int y, int w, int h, vec2 u)
+{
+    camera c = tilted_camera();
+    ray got = pixel_sample_ray(&c, x, y, w, h, u);
+    assert_implemented();
+    float fx = (x + u.x) / (float)w, fy = (y + u.y) / (float)h;
+    ray want = camera_generate_ray(&c, fx, fy);
+    vec3 dg = got.d, dw = want.d;
+    if (!(fabsf(dg.x - dw.x) <= 1e-5f && fabsf(dg.y - dw.y) <= 1e-5f && fabsf(dg.z - dw.z) <= 1e-5f))
+        fail_msg("wrong: pixel (%d, %d) of %dx%d with u = (%g, %g) gave direction (%g, %g, %g); expected the ray "
+                 "through film point (%g, %g) = ((x + u.x) / W, (y + u.y) / H): (%g, %g, %g)",
+                 x, y, w, h, u.x, u.y, dg.x, dg.y, dg.z, fx, fy, dw.x, dw.y, dw.z);
+}
+
+static void test_pixel_sample_ray__centre_of_the_pixel(void **state)
+{
+    expect_ray_through(0, 0, 4, 3, vec2_make(0.5f, 0.5f));
+    expect_ray_through(3, 1, 4, 3, vec2_make(0.5f, 0.5f));
+}
+
+static void test_pixel_sample_ray__u_spans_the_pixel(void **state)
+{
+    expect_ray_through(1, 2, 4, 3, vec2_make(0.0f, 0.0f));    /* bottom-left corner */
+    expect_ray_through(1, 2, 4, 3, vec2_make(0.25f, 0.75f));  /* x and y not swapped */
+    expect_ray_through(2, 0, 5, 7, vec2_make(0.9f, 0.1f));
+}
+
+/* ---- the framework's pixel loop with it ----------------------------------------------------- */
+
+static void test_pixel_loop__one_sample_goes_through_the_centre(void **state)
 {
     int taken = 0;
     double hit_left = covered_fraction(-0.2f, -10, 1, &taken);  /* the centre (x = 0) is covered */
@@ -75,17 +123,17 @@ static void test_pixel_estimate_fixed__one_sample_goes_through_the_centre(void *
     assert_float_near(0.0, miss, 1e-6);
 }
 
-static void test_pixel_estimate_fixed__samples_cover_the_pixel_uniformly_in_x(void **state)
+static void test_pixel_loop__samples_cover_the_pixel_uniformly_in_x(void **state)
 {
     expect_fraction(0.2f, -10, 0.4, 4096);  /* x in [0.2, 1] of [-1, 1] */
 }
 
-static void test_pixel_estimate_fixed__samples_cover_the_pixel_uniformly_in_y(void **state)
+static void test_pixel_loop__samples_cover_the_pixel_uniformly_in_y(void **state)
 {
     expect_fraction(-10, 0.5f, 0.25, 4096); /* y in [0.5, 1] of [-1, 1]: film y = 0 is the bottom */
 }
 
-static void test_pixel_estimate_fixed__corner_quarter(void **state)
+static void test_pixel_loop__corner_quarter(void **state)
 {
     expect_fraction(0.0f, 0.0f, 0.25, 4096);
 }
@@ -179,12 +227,14 @@ static void test_render__normal_image_matches_oracle(void **state)
 int pixel_tests(void)
 {
     const struct CMUnitTest tests[] = {
-        cmocka_unit_test_setup(test_pixel_estimate_fixed__one_sample_goes_through_the_centre, test_setup),
-        cmocka_unit_test_setup(test_pixel_estimate_fixed__samples_cover_the_pixel_uniformly_in_x, test_setup),
-        cmocka_unit_test_setup(test_pixel_estimate_fixed__samples_cover_the_pixel_uniformly_in_y, test_setup),
-        cmocka_unit_test_setup(test_pixel_estimate_fixed__corner_quarter, test_setup),
+        cmocka_unit_test_setup(test_pixel_sample_ray__centre_of_the_pixel, test_setup),
+        cmocka_unit_test_setup(test_pixel_sample_ray__u_spans_the_pixel, test_setup),
+        cmocka_unit_test_setup(test_pixel_loop__one_sample_goes_through_the_centre, test_setup),
+        cmocka_unit_test_setup(test_pixel_loop__samples_cover_the_pixel_uniformly_in_x, test_setup),
+        cmocka_unit_test_setup(test_pixel_loop__samples_cover_the_pixel_uniformly_in_y, test_setup),
+        cmocka_unit_test_setup(test_pixel_loop__corner_quarter, test_setup),
         cmocka_unit_test_setup(test_render__normal_image_matches_oracle, test_setup),
     };
     printf("part1 pixel tests: seed %u, alpha %g per statistical test\n", SEED, ALPHA);
-    return cmocka_run_group_tests_name("part1: pixel_estimate_fixed (task 1.4) and whole renders", tests, NULL, NULL);
+    return cmocka_run_group_tests_name("part1: pixel_sample_ray (task 1.4), the pixel loop and whole renders", tests, NULL, NULL);
 }

@@ -1,4 +1,6 @@
 /* Test machinery: not part of any assignment.
+ * Task 5.1, adaptive_converged, checked exactly on hand-computed cases (no randomness); then the
+ * framework's pixel loop asking it after every batch (render_pixel with -a B T).
  * Adaptive sampling on the stripes scene (tests/common/tiny_scenes.h), rendered with -m 0 so each
  * sample's radiance is exactly known: the left half of the image is flat grey, and in the right
  * half every sample is red (1, 0, 0) or green (0, 1, 0) with probability 1/2 each. So:
@@ -18,7 +20,7 @@
 #include "../common/mc_assert.h"
 #include "../common/tiny_scenes.h"
 #include "../../parts/part5_adaptive/part5.h"
-#include "../../parts/part1_raygen/part1.h"
+#include "../../framework/render.h"
 
 #define FAMILY_ALPHA 1e-3
 #define CHECKS 4
@@ -56,15 +58,15 @@ static adaptive_run *run_stripes(bool adaptive, float tol, int spp, uint64_t see
     assert_int_equal(PL_OK, tiny_world_finish(&run->w));
     for (int y = 0; y < H; y++)
         for (int x = 0; x < W; x++) {
-            int n = -1;
-            rgb L = adaptive ? pixel_estimate_adaptive(&run->w.ctx, x, y, &n)
-                             : pixel_estimate_fixed(&run->w.ctx, x, y, &n);
+            film_pixel p = {0};
+            render_pixel(&run->w.ctx, x, y, &p);
             assert_implemented();
+            rgb L = rgb_make((float)film_pixel_mean(&p, 0), (float)film_pixel_mean(&p, 1), (float)film_pixel_mean(&p, 2));
             char where[48];
             snprintf(where, sizeof where, "pixel (%d, %d)", x, y);
-            assert_radiance_valid(L, adaptive ? "pixel_estimate_adaptive" : "pixel_estimate_fixed", where);
+            assert_radiance_valid(L, "the pixel loop", where);
             run->pixels[y * W + x] = L;
-            run->counts[y * W + x] = n;
+            run->counts[y * W + x] = (int)p.n;
         }
     return run;
 }
@@ -120,6 +122,56 @@ static void count_distribution(double tol, double *mean, double *var)
     free(p);
     free(next);
 }
+
+/* ---- adaptive_converged alone: exact ---------------------------------------------------------- */
+
+static void expect_converged(int n, double s1, double s2, float tol, bool want, const char *why)
+{
+    bool got = adaptive_converged(n, s1, s2, tol);
+    assert_implemented();
+    if (got != want)
+        fail_msg("wrong: adaptive_converged(n = %d, s1 = %g, s2 = %g, tol = %g) = %s, expected %s: %s",
+                 n, s1, s2, tol, got ? "true" : "false", want ? "true" : "false", why);
+}
+
+static void test_adaptive_converged__one_sample_never_converges(void **state)
+{
+    (void)state;
+    expect_converged(1, 5.0, 25.0, 1e6f, false, "one sample gives no variance estimate (n - 1 = 0)");
+}
+
+static void test_adaptive_converged__constant_samples_converge(void **state)
+{
+    (void)state;
+    expect_converged(32, 32.0, 32.0, 0.05f, true, "32 samples of 1: variance 0, I = 0");
+    expect_converged(2, 4.0, 8.0, 0.0f, true, "two samples of 2: I = 0 <= 0");
+}
+
+/* n = 100, mean 1, sample variance 1: the standard error is 0.1 and I = 0.196; one sample's
+ * standard deviation would give I = 1.96. */
+static void test_adaptive_converged__uses_the_standard_error_of_the_mean(void **state)
+{
+    (void)state;
+    expect_converged(100, 100.0, 199.0, 0.25f, true, "I = 1.96 sqrt(var / n) = 0.196 <= 0.25 * mean 1");
+    expect_converged(100, 100.0, 199.0, 0.15f, false, "I = 0.196 > 0.15 (the 1.96 factor)");
+}
+
+/* n = 2, samples 1 and 3: mean 2, var = (10 - 16 / 2) / (2 - 1) = 2, I = 1.96 sqrt(2 / 2) = 1.96,
+ * I / mean = 0.98. Dividing by n instead of n - 1 would give I / mean = 0.69. */
+static void test_adaptive_converged__sample_variance_divides_by_n_minus_1(void **state)
+{
+    (void)state;
+    expect_converged(2, 4.0, 10.0, 1.0f, true, "I / mean = 0.98 <= 1");
+    expect_converged(2, 4.0, 10.0, 0.96f, false, "I / mean = 0.98 > 0.96 (var divides by n - 1)");
+}
+
+static void test_adaptive_converged__rounding_below_zero_is_zero_variance(void **state)
+{
+    (void)state;
+    expect_converged(3, 3.0, 3.0 - 1e-12, 0.0f, true, "s2 - s1^2 / n is -1e-12 by rounding: variance 0, I = 0");
+}
+
+/* ---- the framework's loop asking it after every batch ---------------------------------------- */
 
 static void test_adaptive__flat_pixels_stop_after_the_first_batch(void **state)
 {
@@ -206,10 +258,15 @@ static void test_adaptive__zero_tolerance_is_the_fixed_rate_estimate(void **stat
 int adaptive_tests(void)
 {
     const struct CMUnitTest tests[] = {
+        cmocka_unit_test_setup(test_adaptive_converged__one_sample_never_converges, test_setup),
+        cmocka_unit_test_setup(test_adaptive_converged__constant_samples_converge, test_setup),
+        cmocka_unit_test_setup(test_adaptive_converged__uses_the_standard_error_of_the_mean, test_setup),
+        cmocka_unit_test_setup(test_adaptive_converged__sample_variance_divides_by_n_minus_1, test_setup),
+        cmocka_unit_test_setup(test_adaptive_converged__rounding_below_zero_is_zero_variance, test_setup),
         cmocka_unit_test_setup(test_adaptive__flat_pixels_stop_after_the_first_batch, test_setup),
         cmocka_unit_test_setup(test_adaptive__sample_counts_are_whole_batches_up_to_spp, test_setup),
         cmocka_unit_test_setup(test_adaptive__noisy_pixels_stop_where_the_luminance_rule_says, test_setup),
         cmocka_unit_test_setup(test_adaptive__zero_tolerance_is_the_fixed_rate_estimate, test_setup),
     };
-    return cmocka_run_group_tests_name("part5: adaptive sampling", tests, NULL, NULL);
+    return cmocka_run_group_tests_name("part5: adaptive_converged (task 5.1) and adaptive sampling", tests, NULL, NULL);
 }

@@ -1,0 +1,93 @@
+/* The film: fixed-point per-pixel accumulators (see film.h for why fixed point). */
+#include "film.h"
+#include <math.h>
+#include <stdlib.h>
+
+pl_status film_alloc(film *f, int width, int height)
+{
+    f->width = width;
+    f->height = height;
+    f->pixels = calloc((size_t)width * (size_t)height, sizeof *f->pixels);
+    return f->pixels ? PL_OK : PL_ERR_NOMEM;
+}
+
+void film_free(film *f)
+{
+    if (!f) return;
+    free(f->pixels);
+    f->pixels = NULL;
+}
+
+bool film_quantise(float v, uint64_t *q)
+{
+    /* The tests reject NaN too: every comparison with NaN is false. */
+    if (!(v >= 0.0f && (double)v < FILM_MAX_VALUE)) return false;
+    /* v * 2^32 is exact in double (float has 24 bits), and so is adding 0.5 to it when it has a
+     * fraction (it is then below 2^52); the cast truncates: round half up, as llround for v >= 0. */
+    *q = (uint64_t)((double)v * 4294967296.0 + 0.5);
+    return true;
+}
+
+/* q^2 in units of 2^-32, rounded to nearest: exact integer arithmetic, so the same everywhere. */
+static film_sum square_of(uint64_t q)
+{
+    film_sum sq = (film_sum)q * q;
+    return (sq + ((film_sum)1 << (FILM_FRAC_BITS - 1))) >> FILM_FRAC_BITS;
+}
+
+bool film_pixel_add(film_pixel *p, rgb L)
+{
+    float v[4] = {L.r, L.g, L.b, rgb_luminance(L)};
+    uint64_t q[4];
+    p->n++;
+    for (int c = 0; c < 4; c++)
+        if (!film_quantise(v[c], &q[c])) {
+            p->bad++;  /* the whole sample counts as black */
+            return false;
+        }
+    for (int c = 0; c < 4; c++) {
+        p->sum[c] += q[c];
+        p->sum_sq[c] += square_of(q[c]);
+    }
+    return true;
+}
+
+void film_pixel_merge(film_pixel *into, const film_pixel *from)
+{
+    for (int c = 0; c < 4; c++) {
+        into->sum[c] += from->sum[c];
+        into->sum_sq[c] += from->sum_sq[c];
+    }
+    into->n += from->n;
+    into->bad += from->bad;
+}
+
+double film_sum_value(film_sum s) { return ldexp((double)s, -FILM_FRAC_BITS); }
+
+double film_pixel_mean(const film_pixel *p, int c)
+{
+    return p->n ? film_sum_value(p->sum[c]) / p->n : 0.0;
+}
+
+double film_pixel_variance_of_mean(const film_pixel *p, int c)
+{
+    if (p->n < 2) return 0.0;
+    double n = p->n, s1 = film_sum_value(p->sum[c]), s2 = film_sum_value(p->sum_sq[c]);
+    double var = fmax(0.0, (s2 - s1 * s1 / n) / (n - 1));  /* rounding can dip below 0 */
+    return var / n;
+}
+
+pl_status film_to_image(const film *f, image *out, int *samples, pl_diag *diag)
+{
+    if (out->width != f->width || out->height != f->height)
+        return pl_fail(diag, PL_ERR_INVALID, "film_to_image: image is %dx%d, the film %dx%d",
+                       out->width, out->height, f->width, f->height);
+    long count = (long)f->width * f->height;
+    for (long i = 0; i < count; i++) {
+        const film_pixel *p = &f->pixels[i];
+        out->pixels[i] = rgb_make((float)film_pixel_mean(p, 0), (float)film_pixel_mean(p, 1),
+                                  (float)film_pixel_mean(p, 2));
+        if (samples) samples[i] = (int)p->n;
+    }
+    return PL_OK;
+}

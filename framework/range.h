@@ -1,0 +1,24 @@
+/* Sample ranges: a render split into `--samples A:B` pieces (on several machines, or a Slurm
+ * array) and merged back with `pathtracer --merge` into the same bytes as the render of 0..N.
+ *
+ * What makes it exact: sample s of a pixel draws only from render_rng(seed, pixel, s), whatever
+ * range it is rendered in, and the film adds samples in fixed point (film.h), so the sums of the
+ * pieces add up to the sums of the whole, bit for bit. What the merge checks: every piece has the
+ * same render key (a hash of everything that changes the image: code version, scene and camera
+ * file contents, the flags, the resolution, the seed) and the ranges tile 0..N, with no gap and no
+ * overlap. */
+#ifndef PL_RANGE_H
+#define PL_RANGE_H
+
+#include "options.h"
+#include "exr.h"
+
+/* The EXR provenance of a render with options o: normalised command, render key, version, seed
+ * and the sample range. Reads the scene (and camera) file to hash them. */
+pl_status range_info(const options *o, exr_info *info, pl_diag *diag);
+
+/* `pathtracer --merge -f OUT IN1.exr IN2.exr ...`: argv[1] is "--merge". Returns the exit status
+ * (0 merged, 2 refused: bad arguments, unreadable, mismatched, overlapping or missing ranges). */
+int range_merge_main(int argc, char **argv, const char *prog);
+
+#endif
