@@ -103,15 +103,23 @@ pl_status grade_write_results_json(const grade_result *r, const char *path, pl_d
 
 /* ---- the HTML report: one page, a row per case with its three pictures ----------------------- */
 
+/* Escapes text for HTML; the Markdown bold of the shared verdict text (**...**) becomes <b>. */
 static void html_escape(FILE *f, const char *s)
 {
+    bool bold = false;
     for (; *s; s++) {
-        if (*s == '<') fputs("&lt;", f);
+        if (s[0] == '*' && s[1] == '*') {
+            fputs(bold ? "</b>" : "<b>", f);
+            bold = !bold;
+            s++;
+        }
+        else if (*s == '<') fputs("&lt;", f);
         else if (*s == '>') fputs("&gt;", f);
         else if (*s == '&') fputs("&amp;", f);
         else if (*s == '"') fputs("&quot;", f);
         else fputc(*s, f);
     }
+    if (bold) fputs("</b>", f);
 }
 
 pl_status grade_write_html(const grade_result *r, const char *folder, pl_diag *diag)

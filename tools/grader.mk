@@ -4,7 +4,7 @@ $(BIN)/test-grader: $(BUILD)/tools/verdict.o
 # bin/grade links the framework's file and image code, never a part (it must not run student code).
 GRADE_OBJ := $(patsubst %.c,$(BUILD)/%.o,$(wildcard tools/grade*.c)) $(BUILD)/tools/verdict.o \
              $(BUILD)/tests/common/stats.o $(BUILD)/framework/image.o $(BUILD)/framework/file.o \
-             $(BUILD)/third_party/lodepng/lodepng.o \
+             $(BUILD)/third_party/lodepng/lodepng.o $(BUILD)/framework/exr.o $(BUILD)/framework/film.o \
              $(BUILD)/framework/status.o
 $(BIN)/grade: $(GRADE_OBJ)
 	$(say) LD $@
