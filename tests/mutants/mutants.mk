@@ -3,3 +3,9 @@
 .PHONY: mutants
 mutants: all
 	@tests/mutants/run.sh
+
+# The grader against the same catalogue: each mutant loses points on its own part (slow: one graded
+# submission per mutant).
+.PHONY: grade-mutants
+grade-mutants: $(BIN)/grade $(BIN)/pathtracer
+	$(Q)sh tests/mutants/grade.sh
