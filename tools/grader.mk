@@ -25,9 +25,10 @@ $(BUILD)/tools/references.o: CPPFLAGS += $(shell pkg-config --cflags jansson)
 references: $(BIN)/references $(BIN)/pathtracer
 	$(Q)$(BIN)/references $(if $(FORCE),--force) $(if $(SLURM),--slurm $(if $(SBATCH),--sbatch "$(SBATCH)")) $(CASES)
 
-# A student's make grade: this tree as it is, public cases, the report under out/grade/.
+# A student's make grade: this tree as it is, public cases, the report under out/grade/
+# (PARTS=1,2 grades some parts; SEED=N repeats a grading run exactly).
 grade: $(BIN)/grade
-	$(Q)$(BIN)/grade --out out/grade $(if $(PARTS),--parts $(PARTS))
+	$(Q)$(BIN)/grade --out out/grade $(if $(PARTS),--parts $(PARTS)) $(if $(SEED),--seed $(SEED))
 
 # The Slurm test (issue 12): a real single-node cluster; skips with a reason when not root.
 .PHONY: test-slurm
