@@ -95,12 +95,15 @@ static int temp_register(const char *path)
     sigaddset(&block, SIGHUP);
     sigprocmask(SIG_BLOCK, &block, &old);
     if (!cleanup_installed) {
-        struct sigaction sa;
+        struct sigaction sa, old_action;
         memset(&sa, 0, sizeof sa);
         sa.sa_handler = remove_temps_and_die;
-        sigaction(SIGINT, &sa, NULL);
-        sigaction(SIGTERM, &sa, NULL);
-        sigaction(SIGHUP, &sa, NULL);
+        static const int stops[3] = {SIGINT, SIGTERM, SIGHUP};
+        for (int i = 0; i < 3; i++) {
+            /* A signal the user chose to ignore (nohup, a background job's SIGINT) stays ignored. */
+            if (sigaction(stops[i], NULL, &old_action) == 0 && old_action.sa_handler == SIG_IGN) continue;
+            sigaction(stops[i], &sa, NULL);
+        }
         cleanup_installed = true;
     }
     int slot = -1;
