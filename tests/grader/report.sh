@@ -19,6 +19,7 @@ if ! command -v chromium >/dev/null; then
 fi
 fail() { echo "test-report: FAILED: $*"; exit 1; }
 rm -rf "$out"
+mkdir -p out
 bin/grade --out "$out" --parts 1 --seed 7 >"$out.log" 2>&1 || true
 page="$out/report/index.html"
 [ -f "$page" ] || fail "no report at $page (see $out.log)"
