@@ -57,7 +57,8 @@ void grade_image_case(const grade_env *env, const grade_spec *spec, const char *
     snprintf(log, sizeof log, "%s/part%d/%s.log", env->work, part, k->name);
     snprintf(bin, sizeof bin, "%s/bin/pathtracer", tree);
     snprintf(scene, sizeof scene, "%s/%s", env->root, k->scene);
-    snprintf(ref, sizeof ref, "%s/reference_images/part%d/%s.exr", env->root, part, k->name);
+    snprintf(ref, sizeof ref, "%s/reference_images/%spart%d/%s.exr", env->root, k->hidden ? "hidden/" : "", part,
+             k->name);
     snprintf(seed, sizeof seed, "%llu", (unsigned long long)env->seed);
     snprintf(res_w, sizeof res_w, "%d", k->width);
     snprintf(res_h, sizeof res_h, "%d", k->height);

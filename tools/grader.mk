@@ -12,28 +12,11 @@ $(BIN)/grade: $(GRADE_OBJ)
 	$(Q)$(CC) $(LDFLAGS) -o $@ $^ $(LDLIBS) $(shell pkg-config --libs jansson)
 $(BUILD)/tools/grade%.o: CPPFLAGS += $(shell pkg-config --cflags jansson)
 
-# bin/references: the reference images (make references [FORCE=1] [CASES="part3 spot"] [SLURM=1]).
-REF_OBJ := $(BUILD)/tools/references.o $(BUILD)/tools/grade_cases.o $(BUILD)/tools/grade_run.o \
-           $(BUILD)/framework/file.o $(BUILD)/framework/status.o
-$(BIN)/references: $(REF_OBJ)
-	$(say) LD $@
-	@mkdir -p $(dir $@)
-	$(Q)$(CC) $(LDFLAGS) -o $@ $^ $(LDLIBS) $(shell pkg-config --libs jansson)
-$(BUILD)/tools/references.o: CPPFLAGS += $(shell pkg-config --cflags jansson)
-
-.PHONY: references grade
-references: $(BIN)/references $(BIN)/pathtracer
-	$(Q)$(BIN)/references $(if $(FORCE),--force) $(if $(SLURM),--slurm $(if $(SBATCH),--sbatch "$(SBATCH)")) $(CASES)
-
+.PHONY: grade
 # A student's make grade: this tree as it is, public cases, the report under out/grade/
 # (PARTS=1,2 grades some parts; SEED=N repeats a grading run exactly).
 grade: $(BIN)/grade
 	$(Q)$(BIN)/grade --out out/grade $(if $(PARTS),--parts $(PARTS)) $(if $(SEED),--seed $(SEED))
-
-# The Slurm test (issue 12): a real single-node cluster; skips with a reason when not root.
-.PHONY: test-slurm
-test-slurm:
-	$(Q)sh tests/slurm/run.sh
 
 # The HTML report in a real browser (issue 10): headless Chromium screenshots it.
 .PHONY: test-report

@@ -4,6 +4,7 @@
  *   reference_images/part<N>/<case>.exr   mean, variance of the mean, sample count, provenance
  *   reference_images/part<N>/<case>.png   a preview
  *   reference_images/part<N>/<case>.json  the provenance: the key it was made from, command, seed
+ * (hidden cases under reference_images/hidden/, which the student release leaves out)
  * A case is rendered again only when its key changed: the scene file, the case's flags, resolution
  * and samples, or the code (framework/ and parts/ sources). Ranges are files of their own
  * (build/references/part<N>/<case>/<A>-<B>.exr), each complete or absent, so an interrupted run
@@ -419,7 +420,8 @@ int main(int argc, char **argv)
             rc->seed = REFERENCE_SEED + fnv_str(1469598103934665603ull, c->name) % 1000000ull;
             case_key(c, code, rc->key);
             snprintf(rc->range_dir, sizeof rc->range_dir, "%s/part%d/%s/%s", work_dir, rc->part, c->name, rc->key);
-            snprintf(rc->out_base, sizeof rc->out_base, "%s/part%d/%s", out_dir, rc->part, c->name);
+            snprintf(rc->out_base, sizeof rc->out_base, "%s/%spart%d/%s", out_dir, c->hidden ? "hidden/" : "",
+                     rc->part, c->name);
             rc->num_ranges = (c->reference_samples + RANGE_SAMPLES - 1) / RANGE_SAMPLES;
             char have[17];
             recorded_key(rc, have);
@@ -431,7 +433,8 @@ int main(int argc, char **argv)
             }
             if (!force && !strcmp(have, rc->key)) continue;
             char mk[700];
-            snprintf(mk, sizeof mk, "mkdir -p '%s' '%s/part%d'", rc->range_dir, out_dir, rc->part);
+            snprintf(mk, sizeof mk, "mkdir -p '%s' '%s/%spart%d'", rc->range_dir, out_dir, c->hidden ? "hidden/" : "",
+                     rc->part);
             if (system(mk) != 0) return 1;
             n++;
         }

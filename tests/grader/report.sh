@@ -1,6 +1,6 @@
 #!/bin/sh
 # Test machinery: the grader's HTML report opened in a real browser (headless Chromium from Debian)
-# and screenshotted. Grades this tree's part 1 (public cases; needs its references: make references),
+# and screenshotted. Grades this tree's part 1 (public cases, against reference_images/),
 # then checks the page loads its pictures, shows a verdict per case, and renders to a non-blank
 # screenshot (out/report-test/screenshot.png, worth a look). Installs chromium when root and missing;
 # otherwise skips with the reason. Run it with `make test-report`.

@@ -29,7 +29,7 @@
 #include <string.h>
 
 /* Rays per scene: as many as MAX_SCAN_TESTS primitive tests of the linear scan allow, between
- * MIN_RAYS and MAX_RAYS. Every wrong traversal we know of (tests/mutants/part2-*) fails on
+ * MIN_RAYS and MAX_RAYS. Every wrong traversal we know of fails on
  * hundreds of rays of every scene, so a few thousand are as good as 100,000 and 20x faster. */
 #define MAX_RAYS 20000
 #define MIN_RAYS 4000
