@@ -84,10 +84,13 @@ pl_status film_to_image(const film *f, image *out, int *samples, pl_diag *diag)
                        out->width, out->height, f->width, f->height);
     long count = (long)f->width * f->height;
     for (long i = 0; i < count; i++) {
-        const film_pixel *p = &f->pixels[i];
-        out->pixels[i] = rgb_make((float)film_pixel_mean(p, 0), (float)film_pixel_mean(p, 1),
-                                  (float)film_pixel_mean(p, 2));
-        if (samples) samples[i] = (int)p->n;
+        out->pixels[i] = film_pixel_rgb(&f->pixels[i]);
+        if (samples) samples[i] = (int)f->pixels[i].n;
     }
     return PL_OK;
+}
+
+rgb film_pixel_rgb(const film_pixel *p)
+{
+    return rgb_make((float)film_pixel_mean(p, 0), (float)film_pixel_mean(p, 1), (float)film_pixel_mean(p, 2));
 }

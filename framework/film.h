@@ -65,6 +65,9 @@ double film_pixel_mean(const film_pixel *p, int c);
 /* The variance of that mean: the sample variance / n; 0 when n < 2. */
 double film_pixel_variance_of_mean(const film_pixel *p, int c);
 
+/* The pixel's colour in the image: the mean per channel, as float. */
+rgb film_pixel_rgb(const film_pixel *p);
+
 /* The image of the means (float) and, when samples is not NULL, each pixel's count. */
 pl_status film_to_image(const film *f, image *out, int *samples, pl_diag *diag);
 

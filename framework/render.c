@@ -97,7 +97,9 @@ void render_pixel(const render_ctx *ctx, int x, int y, film_pixel *p)
 
 typedef struct {
     const render_ctx *ctx;
-    film *out;
+    film *out;              /* every pixel's accumulators, or NULL: resolve each pixel at once into */
+    image *image;           /* ... its mean colour and ... */
+    int *samples;           /* ... its sample count (may be NULL) */
     int tiles_x, tiles_total;
     atomic_int next_tile;   /* tiles are handed out in order; any thread may take any tile */
     atomic_int tiles_done;
@@ -116,9 +118,14 @@ static void render_tile(render_job *job, int tile)
     for (int y = y0; y < y1; y++)
         for (int x = x0; x < x1; x++) {
             int index = (ctx->height - 1 - y) * ctx->width + x;  /* pixel y counts from the bottom */
-            film_pixel *p = &job->out->pixels[index];
+            film_pixel local = {0};
+            film_pixel *p = job->out ? &job->out->pixels[index] : &local;
             uint32_t before = p->n, bad_before = p->bad;
             render_pixel(ctx, x, y, p);
+            if (!job->out) {
+                job->image->pixels[index] = film_pixel_rgb(p);
+                if (job->samples) job->samples[index] = (int)p->n;
+            }
             if (p->bad > bad_before) {
                 atomic_fetch_add(&job->bad_pixels, 1);
                 int seen = atomic_load(&job->first_bad);
@@ -150,12 +157,10 @@ static double now_seconds(void)
     return ts.tv_sec + ts.tv_nsec * 1e-9;
 }
 
-pl_status render_film(const render_ctx *ctx, film *out, render_stats *stats, pl_diag *diag)
+/* The loop behind render_film and render_image: into a film, or straight into an image. */
+static pl_status render_run(render_job job, render_stats *stats, pl_diag *diag)
 {
-    if (out->width != ctx->width || out->height != ctx->height)
-        return pl_fail(diag, PL_ERR_INVALID, "render_film: film is %dx%d, the render %dx%d",
-                       out->width, out->height, ctx->width, ctx->height);
-    render_job job = {.ctx = ctx, .out = out};
+    const render_ctx *ctx = job.ctx;
     job.tiles_x = (ctx->width + TILE - 1) / TILE;
     job.tiles_total = job.tiles_x * ((ctx->height + TILE - 1) / TILE);
     atomic_init(&job.next_tile, 0);
@@ -167,7 +172,7 @@ pl_status render_film(const render_ctx *ctx, film *out, render_stats *stats, pl_
 
     int nthreads = ctx->opts->threads > 0 ? ctx->opts->threads : 1;
     pthread_t *threads = calloc((size_t)nthreads, sizeof *threads);
-    if (!threads) return pl_fail(diag, PL_ERR_NOMEM, "render_film: out of memory");
+    if (!threads) return pl_fail(diag, PL_ERR_NOMEM, "render: out of memory");
     double t0 = now_seconds();
     int started = 0;
     for (; started < nthreads; started++)
@@ -198,13 +203,23 @@ pl_status render_film(const render_ctx *ctx, film *out, render_stats *stats, pl_
     return PL_OK;
 }
 
+pl_status render_film(const render_ctx *ctx, film *out, render_stats *stats, pl_diag *diag)
+{
+    if (out->width != ctx->width || out->height != ctx->height)
+        return pl_fail(diag, PL_ERR_INVALID, "render_film: film is %dx%d, the render %dx%d",
+                       out->width, out->height, ctx->width, ctx->height);
+    render_job job = {.ctx = ctx, .out = out};
+    return render_run(job, stats, diag);
+}
+
+/* Without a film: 144 bytes a pixel of accumulators are 69 MB at 800x600, and faulting them in
+ * costs more than a normal-shaded render. A pixel's sums live on the stack while it renders, and
+ * its mean goes straight to the image: the same values film_to_image would give. */
 pl_status render_image(const render_ctx *ctx, image *out, int *samples_per_pixel, render_stats *stats, pl_diag *diag)
 {
-    film f;
-    if (film_alloc(&f, ctx->width, ctx->height) != PL_OK)
-        return pl_fail(diag, PL_ERR_NOMEM, "render_image: out of memory for a %dx%d film", ctx->width, ctx->height);
-    pl_status st = render_film(ctx, &f, stats, diag);
-    if (st == PL_OK) st = film_to_image(&f, out, samples_per_pixel, diag);
-    film_free(&f);
-    return st;
+    if (out->width != ctx->width || out->height != ctx->height)
+        return pl_fail(diag, PL_ERR_INVALID, "render_image: image is %dx%d, the render %dx%d",
+                       out->width, out->height, ctx->width, ctx->height);
+    render_job job = {.ctx = ctx, .image = out, .samples = samples_per_pixel};
+    return render_run(job, stats, diag);
 }
