@@ -28,6 +28,8 @@ typedef struct {
     char *flags[GRADE_MAX_FLAGS];       /* renderer flags, owned */
     int num_flags;
     int width, height, samples;         /* the candidate's render */
+    int block_side;                     /* verdict blocks of this many pixels square; 0: sized to hold
+                                           8192 candidate samples (verdict.h says why) */
     int reference_samples;              /* the reference: the solution's render at this many samples */
     char *reference_flags[GRADE_MAX_FLAGS];  /* its flags when they differ (adaptive cases), owned */
     int num_reference_flags;            /* 0: the reference uses flags */

@@ -45,12 +45,13 @@ static pl_status read_case(const char *path, int part, json_t *j, grade_case *c,
     c->reference_samples = (int)json_integer_value(json_object_get(j, "reference_samples"));
 
     c->points = json_number_value(json_object_get(j, "points"));
+    c->block_side = (int)json_integer_value(json_object_get(j, "block_side"));
     c->work_per_ray = json_is_true(json_object_get(j, "work_per_ray"));
 
     const char *shows = json_string_value(json_object_get(j, "shows"));
     snprintf(c->shows, sizeof c->shows, "%s", shows ? shows : "");
     if (c->width < 1 || c->height < 1 || c->width > 4096 || c->height > 4096 || c->samples < 1 || c->points < 0 ||
-        c->reference_samples < c->samples)
+        c->reference_samples < c->samples || c->block_side < 0)
         return pl_fail(diag, PL_ERR_PARSE,
                        "%s: case %s: expected a resolution in 1..4096, samples >= 1, points >= 0 and "
                        "reference_samples >= samples", path, c->name);

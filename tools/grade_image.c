@@ -98,6 +98,10 @@ void grade_image_case(const grade_env *env, const grade_spec *spec, const char *
     verdict_image vc = {cand.width, cand.height, (const float *)cand.pixels};
     verdict_image vr = {refimg.width, refimg.height, (const float *)refimg.pixels};
     verdict_params vp = verdict_params_default(k->samples);
+    if (k->block_side > 0) {
+        vp.min_block_pixels = k->block_side * k->block_side;
+        vp.min_block_samples = 0;
+    }
     vp.family_alpha = spec->family_alpha;
     if (verdict_compute(&vc, &vr, &vp, &c->v, &diag) != PL_OK) {
         snprintf(c->reason, sizeof c->reason, "%s", diag.error);

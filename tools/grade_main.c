@@ -49,6 +49,12 @@ static int calibrate(const grade_env *base, const grade_spec *spec, const char *
         char digit[2] = {(char)('1' + k), 0};
         if (!strstr(parts, digit)) continue;
         const grade_part_spec *p = &spec->parts[k];
+        char dir[4200];
+        snprintf(dir, sizeof dir, "%s/part%d", base->work, p->part);
+        if (mkdir(dir, 0755) != 0 && errno != EEXIST) {
+            fprintf(stderr, "grade: cannot create %s\n", dir);
+            return 1;
+        }
         for (int i = 0; i < p->num_cases; i++) {
             int failures = 0, decile[10] = {0};
             for (int run = 0; run < runs; run++) {
