@@ -224,14 +224,19 @@ static bool merge_case(const ref_case *rc)
     }
     command cmd;
     range_command(rc, 0, &cmd);
+    /* The render's command without its output file: the same text wherever the ranges were kept. */
     char line[4096] = "";
     for (char **a = cmd.argv; *a; a++) {
+        if (!strcmp(*a, "-f") && a[1]) {
+            a++;
+            continue;
+        }
         strncat(line, *a, sizeof line - strlen(line) - 2);
         strcat(line, " ");
     }
     json_t *j = json_pack("{s:s, s:s, s:i, s:i, s:I, s:s}", "key", rc->key, "case", rc->spec->name, "part", rc->part,
                           "samples", rc->spec->reference_samples, "seed", (json_int_t)rc->seed,
-                          "command_of_the_first_range", line);
+                          "command_of_the_first_range", line);  /* without -f */
     char *text = json_dumps(j, JSON_INDENT(2) | JSON_SORT_KEYS);
     json_decref(j);
     snprintf(out, sizeof out, "%s.json", rc->out_base);
