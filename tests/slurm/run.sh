@@ -3,7 +3,7 @@
 # (issue 12). Brings up a single-node cluster from Debian's packages (tests/slurm/cluster.sh),
 # submits the range array and its merge job for a few small cases, waits, compares with a local
 # run on 1 job and on 2, then checks that a range deleted after the fact is rendered again alone,
-# and stops the daemons it started. Needs root (it installs slurm-wlm and munge and runs the
+# that a truncated range file is refused at the merge, and stops the daemons it started. Needs root (it installs slurm-wlm and munge and runs the
 # daemons); otherwise it says so and skips. Run it with `make test-slurm`.
 set -eu
 cd "$(dirname "$0")/../.."
@@ -52,9 +52,20 @@ n=$(cd "$tmp/local1" && find . -name '*.exr' | wc -l)
 # A range lost (a task killed mid-way) is rendered again alone, and the result is the same.
 victim=$(find "$tmp/work1" -name '*.exr' | sort | head -n 1)
 rm "$victim" "$tmp"/local1/*/*.json
-bin/references --jobs 1 --out "$tmp/local1" --work "$tmp/work1" $CASES 2>&1 | grep -q "1 range(s)" ||
-    fail "after losing one range, expected exactly that range to be rendered again"
+bin/references --jobs 1 --out "$tmp/local1" --work "$tmp/work1" $CASES >"$tmp/rerun.txt" 2>&1 ||
+    fail "the run after losing one range failed: $(cat "$tmp/rerun.txt")"
+grep -q " 1 range(s)" "$tmp/rerun.txt" || fail "after losing one range, expected exactly that range to be rendered again"
 for f in $(cd "$tmp/local2" && find . -type f | sort); do
     cmp "$tmp/local1/$f" "$tmp/local2/$f" || fail "$f differs after the lost range was rendered again"
+done
+# A corrupted range file is refused before merging, and the reference it would change is untouched.
+victim=$(find "$tmp/work1" -name '*.exr' | sort | tail -n 1)
+head -c 300 "$victim" > "$victim.cut" && mv "$victim.cut" "$victim"
+rm "$tmp"/local1/*/*.json
+if bin/references --merge-only --out "$tmp/local1" --work "$tmp/work1" $CASES >"$tmp/corrupt.txt" 2>&1; then
+    fail "a truncated range file was merged"
+fi
+for f in $(cd "$tmp/local2" && find . -name '*.exr' | sort); do
+    cmp "$tmp/local1/$f" "$tmp/local2/$f" || fail "$f changed although its merge was refused"
 done
 echo "test-slurm: passed: $n references from the Slurm array equal the local ones (1 and 2 jobs) byte for byte"
