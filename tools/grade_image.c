@@ -12,7 +12,9 @@
 #define LOG_MAX (256 * 1024)
 #define Z_SCALE 5.0f  /* the z-map saturates at |t| = 5 */
 
-/* The mean image of an EXR the renderer wrote (R, G, B, top row first), read in this process. */
+/* The mean image of an EXR the renderer wrote (R, G, B, top row first), read in this process. The
+ * film adds a NaN, infinite or negative sample as black and counts it in `bad`: such a pixel is
+ * made NaN here, so the verdict fails the case naming it. */
 static pl_status read_mean(const char *path, image *out, pl_diag *diag)
 {
     film f = {0};
@@ -20,6 +22,8 @@ static pl_status read_mean(const char *path, image *out, pl_diag *diag)
     pl_status st = exr_read(path, &f, &info, diag);
     if (!st && image_alloc(out, f.width, f.height) != PL_OK) st = pl_fail(diag, PL_ERR_NOMEM, "%s: out of memory", path);
     if (!st) st = film_to_image(&f, out, NULL, diag);
+    for (long i = 0; !st && i < (long)f.width * f.height; i++)
+        if (f.pixels[i].bad) out->pixels[i] = rgb_make(NAN, NAN, NAN);
     film_free(&f);
     return st;
 }
