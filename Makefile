@@ -75,11 +75,15 @@ help:
 	@echo "  make test SAN=1       the same under AddressSanitizer + UBSan"
 	@echo "  make bench            speed figures, not a test (bench-bvh, bench-transport; see bench/RESULTS.md)"
 	@echo "  make figures          every figure the handout asks for (parts 1-5), into out/figures/"
+	@echo "  make grade            grade your parts on the public cases (PARTS=3: one part); report in out/grade/"
+	@echo "  make fuzz             fuzz the scene loader (FUZZ_SECONDS=60)"
 	@if [ -d tests/mutants ]; then \
 	   echo "instructors:"; \
 	   echo "  make release-check    cut release/student (solutions -> stubs) and prove it sound"; \
 	   echo "  make mutants          show each catalogued student bug is caught by its part's tests"; \
-	   echo "  make calibrate N=200  each suite's false-failure rate over N fresh seeds, beside its alpha"; fi
+	   echo "  make calibrate N=200  each suite's false-failure rate over N fresh seeds, beside its alpha"; \
+	   echo "  make references       render the grading references (SLURM=1: as a Slurm job array)"; \
+	   echo "  make grade-mutants    grade each catalogued bug: it must lose points on its own part"; fi
 	@echo "  make clean            remove build/, bin/ and release/"
 	@echo "settings: V=1 (full commands), WERROR=1, SAN=1, OPT=-O0"
 
