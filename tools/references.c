@@ -443,7 +443,17 @@ int main(int argc, char **argv)
             if (system(mk) != 0) return 1;
             n++;
         }
-    if (status) return 0;
+    if (status) {
+        /* On a cluster, what the scheduler still holds: pending or running range tasks and the merge.
+         * A range that is neither done nor queued has failed: --slurm submits it again. */
+        if (system("command -v squeue >/dev/null 2>&1") == 0) {
+            printf("queued on Slurm (job, task, state):\n");
+            fflush(stdout);
+            if (system("squeue -h -n pl-ref,pl-ref-merge -o '  %i %j %T' 2>/dev/null") != 0)
+                printf("  (squeue failed: no cluster reachable)\n");
+        }
+        return 0;
+    }
     if (n == 0) {
         printf("references: every reference is up to date (--force renders them again)\n");
         return 0;
