@@ -17,7 +17,7 @@ for patch in "$@"; do
     dir="$scratch/$name"
     rm -rf "$dir"
     mkdir -p "$dir"
-    (cd "$root" && cp -a Makefile framework parts tests scenes "$dir"/)
+    (cd "$root" && cp -a Makefile framework parts tests scenes third_party "$dir"/)
     # Reuse the release objects: make rebuilds only what the patch touches.
     [ -d "$root/build/release" ] && mkdir -p "$dir/build" && cp -a "$root/build/release" "$dir/build/"
     if ! patch -s -p1 -d "$dir" < "$patch"; then
