@@ -5,8 +5,6 @@
 #include <math.h>
 #include <string.h>
 
-static float degrees(float rad) { return rad * 180.0f / 3.14159265358979323846f; }
-static float radians(float deg) { return deg * 3.14159265358979323846f / 180.0f; }
 
 /* ---- lights ------------------------------------------------------------------------------ */
 
@@ -130,8 +128,8 @@ pl_status dae_instance_camera(dae_ctx *c, const xmlNode *inst, mat4 to_world)
     if (st) return st;
     /* One fov given: the other follows the aspect ratio, and the image's aspect may change it later. */
     cam->fov_is_vertical = !has_x;
-    if (!has_y) cam->vfov = degrees(2.0f * atanf(tanf(radians(cam->hfov) * 0.5f) / aspect));
-    if (!has_x) cam->hfov = degrees(2.0f * atanf(tanf(radians(cam->vfov) * 0.5f) * aspect));
+    if (!has_y) cam->vfov = rad_to_deg(2.0f * atanf(tanf(deg_to_rad(cam->hfov) * 0.5f) / aspect));
+    if (!has_x) cam->hfov = rad_to_deg(2.0f * atanf(tanf(deg_to_rad(cam->vfov) * 0.5f) * aspect));
     cam->camera_to_world = rigid(to_world);
     cam->position = mat4_point(to_world, vec3_make(0, 0, 0));
     cam->focal_distance = 4.7f;  /* CS184's -d default */

@@ -7,6 +7,7 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <strings.h>
 #include <sys/stat.h>
 #include <unistd.h>
 
@@ -66,6 +67,12 @@ pl_status file_read_all(const char *path, const char *what, size_t max_bytes, ch
     *data = buf;
     *len = got;
     return PL_OK;
+}
+
+bool file_has_extension(const char *path, const char *ext)
+{
+    size_t n = strlen(path), e = strlen(ext);
+    return n > e && strcasecmp(path + n - e, ext) == 0;
 }
 
 /* ---- writing --------------------------------------------------------------------------------- */

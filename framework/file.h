@@ -7,6 +7,7 @@
 #ifndef PL_FILE_H
 #define PL_FILE_H
 
+#include <stdbool.h>
 #include <stddef.h>
 #include <stdio.h>
 #include "status.h"
@@ -19,6 +20,9 @@
  * PL_ERR_IO and a message naming the path and the limit. */
 pl_status file_read_all(const char *path, const char *what, size_t max_bytes, char **data, size_t *len,
                         pl_diag *diag);
+
+/* True when path ends in ext (".png"), in any letter case. */
+bool file_has_extension(const char *path, const char *ext);
 
 /* ---- writing --------------------------------------------------------------------------------- */
 

@@ -200,16 +200,10 @@ pl_status image_write_hdr(const image *img, const char *path, pl_diag *diag)
     return write_one(path, image_encode_hdr, img, diag);
 }
 
-static bool has_extension(const char *path, const char *ext)
-{
-    size_t n = strlen(path), e = strlen(ext);
-    return n > e && strcasecmp(path + n - e, ext) == 0;
-}
-
 pl_status image_write(const image *img, const char *path, pl_diag *diag)
 {
-    if (has_extension(path, ".png")) return image_write_png(img, path, diag);
-    if (has_extension(path, ".hdr")) return image_write_hdr(img, path, diag);
+    if (file_has_extension(path, ".png")) return image_write_png(img, path, diag);
+    if (file_has_extension(path, ".hdr")) return image_write_hdr(img, path, diag);
     return pl_fail(diag, PL_ERR_INVALID, "%s: expected an output name ending in .png or .hdr", path);
 }
 
@@ -217,7 +211,7 @@ pl_status image_read(const char *path, image *out, pl_diag *diag)
 {
     int w, h, channels;
     memset(out, 0, sizeof *out);
-    if (has_extension(path, ".hdr")) {
+    if (file_has_extension(path, ".hdr")) {
         float *data = stbi_loadf(path, &w, &h, &channels, 3);
         if (!data) return pl_fail(diag, PL_ERR_IO, "%s: cannot read image: %s", path, stbi_failure_reason());
         pl_status s = image_alloc(out, w, h);

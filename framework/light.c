@@ -44,7 +44,7 @@ static bool sample_spot(const light *l, vec3 p, light_sample *out)
     if (!sample_point(l, p, out))
         return false;
     float cos_axis = -vec3_dot(out->wi, vec3_normalize(l->direction));
-    float cos_cone = cosf(l->falloff_deg * (PL_PI / 180.0f));
+    float cos_cone = cosf(deg_to_rad(l->falloff_deg));
     if (cos_axis <= cos_cone)
         return false;
     float profile = l->falloff_exp > 0.0f ? powf(cos_axis, l->falloff_exp) : 1.0f;

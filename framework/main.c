@@ -9,6 +9,7 @@
 #include "colormap.h"
 #include "heatmap.h"
 #include "output.h"
+#include "file.h"
 #include "range.h"
 #include <errno.h>
 #include <stdio.h>
@@ -85,8 +86,7 @@ static int run(const options *o, const char *prog)
 
     /* Every pixel's accumulators are kept only for an EXR, which stores them; other renders resolve
      * each pixel into the image as it finishes (render_image): same pixels, 144 bytes a pixel less. */
-    size_t len = o->output ? strlen(o->output) : 0;
-    bool exr = len > 4 && !strcasecmp(o->output + len - 4, ".exr");
+    bool exr = o->output && file_has_extension(o->output, ".exr");
     samples = calloc((size_t)o->width * (size_t)o->height, sizeof *samples);
     if (!samples || image_alloc(&img, o->width, o->height) != PL_OK || (exr && film_alloc(&fm, o->width, o->height) != PL_OK)) {
         fprintf(stderr, "%s: out of memory for a %dx%d image\n", prog, o->width, o->height);
@@ -110,7 +110,7 @@ static int run(const options *o, const char *prog)
     exr_info provenance;
     exr_image exr_out = {&fm, &provenance};
     if (o->output) {
-        bool hdr = len > 4 && !strcasecmp(o->output + len - 4, ".hdr");
+        bool hdr = file_has_extension(o->output, ".hdr");
         if (exr && range_info(o, &provenance, &diag) != PL_OK) { code = fail(prog, &diag, 1); goto done; }
         output_bind(&out, OUTPUT_IMAGE, exr ? exr_encode : hdr ? image_encode_hdr : image_encode_png,
                     exr ? (const void *)&exr_out : (const void *)&img);

@@ -42,7 +42,7 @@ mat4 mat4_scale(vec3 s)
 mat4 mat4_rotate(vec3 axis, float degrees)
 {
     vec3 a = vec3_normalize(axis);
-    float rad = degrees * 3.14159265358979323846f / 180.0f;
+    float rad = deg_to_rad(degrees);
     float c = cosf(rad), s = sinf(rad), k = 1.0f - c;
     mat4 r = mat4_identity();
     r.m[0][0] = a.x * a.x * k + c;

@@ -24,12 +24,6 @@ static char *with_suffix(const char *path, const char *suffix, const char *exten
     return out;
 }
 
-static bool has_extension(const char *path, const char *ext)
-{
-    size_t n = strlen(path), e = strlen(ext);
-    return n > e && strcasecmp(path + n - e, ext) == 0;
-}
-
 /* Where a path leads: its folder resolved (symlinks, "..") plus its own name, so two spellings of
  * one file compare equal even before it exists. Empty when the folder does not exist. */
 static void canonical(const char *path, char *out, size_t size)
@@ -77,18 +71,18 @@ pl_status output_plan(output_set *set, const options *o, pl_diag *diag)
         return pl_fail(diag, PL_ERR_INVALID, "-r %d %d: %lld pixels need about %lld MB, more than half of this "
                        "machine's memory", o->width, o->height, pixels, pixels * BYTES_PER_PIXEL >> 20);
     if (o->output) {
-        if (!has_extension(o->output, ".png") && !has_extension(o->output, ".hdr") && !has_extension(o->output, ".exr"))
+        if (!file_has_extension(o->output, ".png") && !file_has_extension(o->output, ".hdr") && !file_has_extension(o->output, ".exr"))
             return pl_fail(diag, PL_ERR_INVALID, "-f %s: expected a file name ending in .png, .hdr or .exr", o->output);
         set->path[OUTPUT_IMAGE] = strdup(o->output);
         set->path[OUTPUT_RATE_MAP] = with_suffix(o->output, "_rate", ".png");
         set->path[OUTPUT_SIDECAR] = with_suffix(o->output, "", ".json");
     }
     if (o->heatmap) {
-        if (!has_extension(o->heatmap, ".png"))
+        if (!file_has_extension(o->heatmap, ".png"))
             return pl_fail(diag, PL_ERR_INVALID, "--heatmap %s: expected a file name ending in .png", o->heatmap);
         set->path[OUTPUT_HEATMAP] = strdup(o->heatmap);
     }
-    bool png = o->output && has_extension(o->output, ".png");
+    bool png = o->output && file_has_extension(o->output, ".png");
     if ((o->output || o->heatmap) && !png_size_ok(o->width, o->height + 64))
         return pl_fail(diag, PL_ERR_INVALID, "-r %d %d: too large for a PNG file (the encoder's limit is about "
                        "715 million pixels)%s", o->width, o->height, png ? "" : "; the rate map is a PNG");

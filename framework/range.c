@@ -113,12 +113,6 @@ static pl_status check_ranges(const range_input *in, int count, pl_diag *diag)
     return PL_OK;
 }
 
-static bool ends_with(const char *s, const char *ext)
-{
-    size_t n = strlen(s), m = strlen(ext);
-    return n > m && !strcasecmp(s + n - m, ext);
-}
-
 /* Sums the checked inputs into in[0].film and writes it: EXR with the merged provenance, or the
  * image of the means through the same writer a single render uses. */
 static pl_status write_merged(const char *out, range_input *in, int count, pl_diag *diag)
@@ -127,7 +121,7 @@ static pl_status write_merged(const char *out, range_input *in, int count, pl_di
     long pixels = (long)total->width * total->height;
     for (int i = 1; i < count; i++)
         for (long p = 0; p < pixels; p++) film_pixel_merge(&total->pixels[p], &in[i].film.pixels[p]);
-    if (ends_with(out, ".exr")) {
+    if (file_has_extension(out, ".exr")) {
         exr_info info = in[0].info;
         info.sample_begin = 0;
         info.sample_end = info.sample_total;
@@ -149,7 +143,7 @@ int range_merge_main(int argc, char **argv, const char *prog)
     int first_input = 2;
     if (argc >= 4 && !strcmp(argv[2], "-f")) out = argv[3], first_input = 4;
     int count = argc - first_input;
-    if (!out || count < 1 || !(ends_with(out, ".exr") || ends_with(out, ".png") || ends_with(out, ".hdr"))) {
+    if (!out || count < 1 || !(file_has_extension(out, ".exr") || file_has_extension(out, ".png") || file_has_extension(out, ".hdr"))) {
         fprintf(stderr, "%s: --merge: expected --merge -f OUT.exr|OUT.png|OUT.hdr IN1.exr [IN2.exr ...]\n", prog);
         return 2;
     }

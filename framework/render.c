@@ -18,9 +18,8 @@ static void apply_cs184_framing(camera *c, const scene *s, int width, int height
 {
     camera_set_aspect(c, 800.0f / 600.0f);
     *c = camera_cs184_framing(c, scene_bounds(s));
-    float to_rad = 3.14159265358979323846f / 180.0f;
-    c->hfov = 2.0f * atanf(tanf(c->hfov * to_rad * 0.5f) * width / 800.0f) / to_rad;
-    c->vfov = 2.0f * atanf(tanf(c->vfov * to_rad * 0.5f) * height / 600.0f) / to_rad;
+    c->hfov = rad_to_deg(2.0f * atanf(tanf(deg_to_rad(c->hfov) * 0.5f) * width / 800.0f));
+    c->vfov = rad_to_deg(2.0f * atanf(tanf(deg_to_rad(c->vfov) * 0.5f) * height / 600.0f));
 }
 
 void render_ctx_init(render_ctx *ctx, const scene *s, const accel *a, const options *o)

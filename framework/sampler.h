@@ -6,9 +6,6 @@
 
 #include "vec.h"
 
-#ifndef PL_PI
-#define PL_PI 3.14159265358979323846f
-#endif
 #define PL_INV_PI 0.31830988618379067154f
 #define PL_INV_2PI 0.15915494309189533577f
 

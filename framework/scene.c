@@ -103,8 +103,6 @@ bool scene_prim_intersect(const scene *s, int prim, ray *r, hit *h)
     return found;
 }
 
-static float deg_to_rad(float d) { return d * 3.14159265358979323846f / 180.0f; }
-static float rad_to_deg(float r) { return r * 180.0f / 3.14159265358979323846f; }
 
 void camera_set_aspect(camera *c, float aspect)
 {

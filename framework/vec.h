@@ -8,6 +8,12 @@
 #include <math.h>
 #include <stdbool.h>
 
+/* pi, and angles: files and flags speak degrees (fields of view, cone angles, <rotate>), the maths
+ * radians. */
+#define PL_PI 3.14159265358979323846f
+static inline float deg_to_rad(float degrees) { return degrees * (PL_PI / 180.0f); }
+static inline float rad_to_deg(float radians) { return radians * (180.0f / PL_PI); }
+
 typedef struct { float x, y; } vec2;
 typedef struct { float x, y, z; } vec3;
 typedef struct { float r, g, b; } rgb;
