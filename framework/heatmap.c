@@ -13,6 +13,7 @@
 /* ---- The legend: a colour bar and three numbers, drawn with a 3x5 digit font ---------------- */
 
 #define LEGEND_HEIGHT 36   /* pixels below the image */
+#define HEATMAP_SCALE 200  /* node visits at full red, the same for every scene */
 #define FONT_SCALE 2       /* each font pixel drawn as a 2x2 block */
 
 /* Rows of the digits 0-9, 3 bits wide (bit 2 = left column), top row first. */
@@ -40,18 +41,6 @@ static void draw_number(uint8_t *rgb8, int width, int height, int x, int y, unsi
             for (int col = 0; col < 3 * FONT_SCALE; col++)
                 if (DIGIT_FONT[text[i] - '0'][row / FONT_SCALE] & (4 >> (col / FONT_SCALE)))
                     put_pixel(rgb8, width, height, left + i * glyph_w + col, y + row, white);
-}
-
-/* The smallest 1, 2 or 5 times a power of ten that is >= v: a scale the legend can label. */
-static unsigned nice_ceiling(unsigned v)
-{
-    unsigned step = 1;
-    for (;;) {
-        if (v <= step) return step;
-        if (v <= 2 * step) return 2 * step;
-        if (v <= 5 * step) return 5 * step;
-        step *= 10;
-    }
 }
 
 /* Colour bar from 0 (blue) to scale (red) across the strip under the image, labelled at both
@@ -105,7 +94,10 @@ pl_status render_heatmap(const struct render_ctx *ctx, const char *path, pl_diag
                        "%s: bvh_intersect visited no nodes: it must read the nodes it tests through bvh_visit (bvh.h)", path);
     }
 
-    unsigned scale = nice_ceiling(most);
+    /* One scale for every scene and every BVH, so two heat maps compare colour for colour (a
+     * per-scene scale made a poor tree on a small scene look as cool as a good one on the bunny).
+     * A good SAH tree stays well under it; more visits saturate red. */
+    unsigned scale = HEATMAP_SCALE;
     for (size_t i = 0; i < (size_t)w * h; i++) colormap_rate((float)visits[i] / (float)scale, rgb8 + 3 * i);
     draw_legend(rgb8, w, h + LEGEND_HEIGHT, h, scale);
     pl_status st = image_write_png_rgb8(rgb8, w, h + LEGEND_HEIGHT, path, diag);
