@@ -15,15 +15,19 @@
 /* The mean image of an EXR the renderer wrote (R, G, B, top row first), read in this process. The
  * film adds a NaN, infinite or negative sample as black and counts it in `bad`: such a pixel is
  * made NaN here, so the verdict fails the case naming it. */
-static pl_status read_mean(const char *path, image *out, pl_diag *diag)
+static pl_status read_mean(const char *path, image *out, long *bad, pl_diag *diag)
 {
     film f = {0};
     exr_info info;
+    *bad = 0;
     pl_status st = exr_read(path, &f, &info, diag);
     if (!st && image_alloc(out, f.width, f.height) != PL_OK) st = pl_fail(diag, PL_ERR_NOMEM, "%s: out of memory", path);
     if (!st) st = film_to_image(&f, out, NULL, diag);
     for (long i = 0; !st && i < (long)f.width * f.height; i++)
-        if (f.pixels[i].bad) out->pixels[i] = rgb_make(NAN, NAN, NAN);
+        if (f.pixels[i].bad) {
+            out->pixels[i] = rgb_make(NAN, NAN, NAN);
+            ++*bad;
+        }
     film_free(&f);
     return st;
 }
@@ -90,11 +94,15 @@ void grade_image_case(const grade_env *env, const grade_spec *spec, const char *
     /* The verdict, from the two files, in this process. */
     image cand = {0}, refimg = {0};
     pl_diag diag = pl_diag_default();
-    if (read_mean(ref, &refimg, &diag) != PL_OK) {
-        snprintf(c->reason, sizeof c->reason, "no reference: %s (run make references)", diag.error);
+    long bad;
+    if (read_mean(ref, &refimg, &bad, &diag) != PL_OK || bad) {
+        /* A broken reference is the course's fault, never the student's: say so, not "differs". */
+        if (bad) snprintf(c->reason, sizeof c->reason, "the reference %s has %ld bad pixels (run make references)", ref, bad);
+        else snprintf(c->reason, sizeof c->reason, "no reference: %s (run make references)", diag.error);
+        image_free(&refimg);
         return;
     }
-    if (read_mean(out, &cand, &diag) != PL_OK) {
+    if (read_mean(out, &cand, &bad, &diag) != PL_OK) {
         snprintf(c->reason, sizeof c->reason, "the render wrote no readable image: %s", diag.error);
         image_free(&refimg);
         return;

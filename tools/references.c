@@ -18,6 +18,7 @@
  *   --out DIR (reference_images) and --work DIR (build/references) move the results and the ranges.
  * CASE is a case name or part<N>; none means every case. */
 #include "grade.h"
+#include "../framework/exr.h"
 #include "../framework/file.h"
 #include <dirent.h>
 #include <errno.h>
@@ -198,6 +199,31 @@ static bool run_logged(char *const argv[], const char *log)
     return r.exited && r.status == 0;
 }
 
+/* A reference must hold no bad sample (NaN, infinite or negative radiance): the grader would read
+ * such a pixel as a failure of every candidate. A bad sample is the solution's bug, so the merged
+ * file is removed and the pixel named, for the instructor to fix the solution. */
+static bool reference_clean(const ref_case *rc, const char *path)
+{
+    film f = {0};
+    exr_info info;
+    pl_diag d = pl_diag_default();
+    if (exr_read(path, &f, &info, &d) != PL_OK) {
+        fprintf(stderr, "references: %s: %s\n", rc->spec->name, d.error);
+        remove(path);
+        return false;
+    }
+    long bad = 0, first = -1;
+    for (long i = 0; i < (long)f.width * f.height; i++)
+        if (f.pixels[i].bad && bad++ == 0) first = i;
+    if (bad)
+        fprintf(stderr, "references: %s: the solution gave %ld pixels bad samples (NaN, infinite or negative "
+                        "radiance; the first at x=%ld y=%ld, counted from the bottom-left): fix the solution\n",
+                rc->spec->name, bad, first % f.width, f.height - 1 - first / f.width);
+    film_free(&f);
+    if (bad) remove(path);
+    return bad == 0;
+}
+
 /* Merges the ranges into the EXR and the preview, then writes the provenance last. */
 static bool merge_case(const ref_case *rc)
 {
@@ -221,6 +247,7 @@ static bool merge_case(const ref_case *rc)
             fprintf(stderr, "references: %s: the merge failed; see %s\n", rc->spec->name, log);
             return false;
         }
+        if (k == 0 && !reference_clean(rc, out)) return false;
     }
     command cmd;
     range_command(rc, 0, &cmd);

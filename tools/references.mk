@@ -1,8 +1,7 @@
 # Instructor tooling: the reference images and their Slurm test (the student release leaves this out).
 
 # bin/references: the reference images (make references [FORCE=1] [CASES="part3 spot"] [SLURM=1]).
-REF_OBJ := $(BUILD)/tools/references.o $(BUILD)/tools/grade_cases.o $(BUILD)/tools/grade_run.o \
-           $(BUILD)/framework/file.o $(BUILD)/framework/status.o
+REF_OBJ := $(BUILD)/tools/references.o $(BUILD)/tools/grade_cases.o $(BUILD)/tools/grade_run.o $(LIB_OBJ)
 $(BIN)/references: $(REF_OBJ)
 	$(say) LD $@
 	@mkdir -p $(dir $@)
