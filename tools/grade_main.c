@@ -3,7 +3,7 @@
  * bin/grade --calibrate N [--parts ...]
  *   --submission DIR  grade DIR/parts/ part by part, each among the solution's other parts (autograder);
  *                     without it, grade this tree as it is, public cases only (a student's make grade)
- *   --out DIR         where results.json, the report (DIR/report/index.html) and scratch go (grade-out)
+ *   --out DIR         where results.json, the report (DIR/report/index.html) and scratch go (out/grade)
  *   --calibrate N     render every case of this tree N times with fresh seeds and print, per case, how
  *                     often it failed beside the alpha it claims, and the deciles of its p-values
  * Exit status: 0 when every graded part got full marks, 1 otherwise, 2 for bad arguments. */
@@ -82,14 +82,23 @@ static int calibrate(const grade_env *base, const grade_spec *spec, const char *
     return worst > 0;
 }
 
+/* mkdir -p: the default out/grade may be the first thing made under out/. */
 static bool make_dir(const char *path)
 {
-    return mkdir(path, 0755) == 0 || errno == EEXIST;
+    char buf[4096];
+    if (snprintf(buf, sizeof buf, "%s", path) >= (int)sizeof buf) return false;
+    for (char *p = buf + 1; *p; p++)
+        if (*p == '/') {
+            *p = '\0';
+            if (mkdir(buf, 0755) != 0 && errno != EEXIST) return false;
+            *p = '/';
+        }
+    return mkdir(buf, 0755) == 0 || errno == EEXIST;
 }
 
 int main(int argc, char **argv)
 {
-    const char *submission = NULL, *out = "grade-out", *parts = "1,2,3,4,5";
+    const char *submission = NULL, *out = "out/grade", *parts = "1,2,3,4,5";
     bool public_only = false, seed_given = false;
     uint64_t seed = 0;
     int threads = 2, calibrate_runs = 0;
