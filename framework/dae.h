@@ -1,5 +1,5 @@
 /* COLLADA 1.4 scene loading (libxml2), including CS184's <technique profile="CGL"> extensions.
- * See ../shared/CS184_FORMAT.md for the dialect. Z_UP files are turned into pathlab's Y-up world
+ * scenes/README.md describes the dialect. Z_UP files are turned into pathlab's Y-up world
  * by (x, y, z) -> (-x, z, y), applied before every node transform, as CS184 does.
  * A malformed file is rejected with "path:line: <element>: what was expected" in diag; features
  * that are valid but unsupported load with one warning per feature. */

@@ -1,4 +1,4 @@
-/* The outputs of one render, as one unit (DESIGN.md section 6).
+/* The outputs of one render, as one unit: all of them appear together, or none does.
  *
  * Before anything is loaded, output_plan derives every file the render will write from the
  * options (image, rate map, sidecar; the heat map) and checks them all: a supported extension, not

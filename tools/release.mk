@@ -4,6 +4,14 @@
 
 .PHONY: release release-check
 
+help::
+	@echo "instructors:"
+	@echo "  make release-check    cut release/student (solutions -> stubs) and prove it sound"
+	@echo "  make mutants          show each catalogued student bug is caught by its part's tests"
+	@echo "  make calibrate N=200  each suite's false-failure rate over N fresh seeds, beside its alpha"
+	@echo "  make references       render the grading references (SLURM=1: as a Slurm job array)"
+	@echo "  make grade-mutants    grade each catalogued bug: it must lose points on its own part"
+
 # The stripper's core is a library so tests/framework/test_strip.c can test its rules directly.
 STRIP_OBJ     := $(BUILD)/tools/strip.o
 TOOL_LIB_OBJ  := $(BUILD)/framework/image.o $(BUILD)/framework/file.o $(BUILD)/framework/status.o \

@@ -101,7 +101,7 @@ rgb direct_hemisphere(const struct render_ctx *ctx, const ray *r, const hit *h, 
         float pdf = sample_uniform_hemisphere_pdf(wi);
         ray shadow = ray_make(p, frame_to_world(&f, wi), EPS_F, INFINITY);
         shadow.depth = r->depth + 1;
-        hit lit;
+        hit lit = {0};  /* zeroed: with part 1 stubbed, link-time optimisation cannot see it set */
         if (pdf <= 0.0f || !render_intersect(ctx, &shadow, &lit))
             continue;
         rgb Le = zero_bounce_radiance(ctx, &shadow, &lit);

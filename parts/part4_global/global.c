@@ -79,7 +79,7 @@ rgb at_least_one_bounce_radiance(const struct render_ctx *ctx, const ray *r, con
 
         ray next = ray_make(hit_point(&cur, &at), frame_to_world(&f, wi), EPS_F, INFINITY);
         next.depth = depth;
-        hit next_hit;
+        hit next_hit = {0};  /* zeroed: with part 1 stubbed, link-time optimisation cannot see it set */
         if (!render_intersect(ctx, &next, &next_hit))
             break;
         cur = next;

@@ -4,7 +4,7 @@
  * one run makes) in one header; each check asks alpha_check() for its level, which is the Sidak
  * share 1 - (1 - family)^(1/budget) and counts the check. When the suite exits, the count is
  * compared with the budget: a suite that ran more checks than its budget fails loudly, because its
- * stated alpha would be a lie. `make calibrate` measures the real false-failure rate. */
+ * stated alpha would be a lie. The real false-failure rate is measured over fresh PL_TEST_SEED values. */
 #ifndef PL_ALPHA_H
 #define PL_ALPHA_H
 

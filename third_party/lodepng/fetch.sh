@@ -2,7 +2,7 @@
 # Re-fetches lodepng's C source from the npm package `lodepng` and checks it is the vendored copy.
 #   third_party/lodepng/fetch.sh          verify: fetch, check hashes, compare with the files here
 #   third_party/lodepng/fetch.sh --update replace the files here (after you change VERSION/hashes below)
-# Why vendored: Debian packages lodepng only as a C++ build; the grader is C (DESIGN.md, section 2).
+# Why vendored: Debian packages lodepng only as a C++ build; the grader is C.
 set -eu
 VERSION=2.3.0
 TGZ_SHA256=a89c5b358d7df778a72489479c9977fb58305caa905a1b3afe1d6481667a3680
