@@ -1,9 +1,8 @@
-/* The scene container: growable arrays, primitive numbering, and camera framing. */
+/* The scene container: growable arrays and primitive numbering. */
 #include "scene.h"
 #include "../parts/part1_raygen/part1.h"  /* call sites: framework/parts.h */
 #include <stdlib.h>
 #include <string.h>
-#include <math.h>
 
 void scene_free(scene *s)
 {
@@ -101,57 +100,4 @@ bool scene_prim_intersect(const scene *s, int prim, ray *r, hit *h)
         h->material = mat;
     }
     return found;
-}
-
-
-void camera_set_aspect(camera *c, float aspect)
-{
-    if (c->fov_is_vertical)
-        c->hfov = rad_to_deg(2.0f * atanf(tanf(deg_to_rad(c->vfov) * 0.5f) * aspect));
-    else
-        c->vfov = rad_to_deg(2.0f * atanf(tanf(deg_to_rad(c->hfov) * 0.5f) / aspect));
-}
-
-/* Places a camera at eye looking at target with world +Y up, keeping the lens settings of base. */
-static camera camera_looking(const camera *base, vec3 eye, vec3 target)
-{
-    camera c = *base;
-    vec3 up = vec3_make(0, 1, 0);
-    vec3 dir = vec3_normalize(vec3_sub(target, eye));
-    if (fabsf(vec3_dot(dir, up)) > 0.999f) up = vec3_make(0, 0, 1);  /* looking straight up or down */
-    c.camera_to_world = mat4_lookat(eye, target, up);
-    c.position = eye;
-    return c;
-}
-
-camera scene_default_camera(const scene *s)
-{
-    camera base;
-    memset(&base, 0, sizeof base);
-    base.hfov = 49.13434f;  /* CS184's Cornell box lens */
-    base.vfov = 37.8f;
-    base.znear = 1e-4f;
-    base.zfar = 1e30f;
-    base.focal_distance = 4.7f;
-    aabb b = scene_bounds(s);
-    if (aabb_is_empty(b)) {
-        b.min = vec3_make(-1, -1, -1);
-        b.max = vec3_make(1, 1, 1);
-    }
-    vec3 centre = aabb_centroid(b);
-    float diag = vec3_length(aabb_extent(b));
-    return camera_looking(&base, vec3_add(centre, vec3_make(0, 0, 1.5f * diag)), centre);
-}
-
-camera camera_cs184_framing(const camera *c, aabb bounds)
-{
-    /* CS184 keeps only the view direction (the camera applied to (0,0,-1)) and orbits the centre
-     * of the bounds at 1.5 x their diagonal. */
-    vec3 view = vec3_normalize(mat4_dir(c->camera_to_world, vec3_make(0, 0, -1)));
-    vec3 centre = aabb_centroid(bounds);
-    float dist = 1.5f * vec3_length(aabb_extent(bounds));
-    camera out = camera_looking(c, vec3_sub(centre, vec3_scale(view, dist)), centre);
-    out.znear = fminf(c->znear, dist * 1e-3f);
-    out.zfar = fmaxf(c->zfar, dist * 10.0f);
-    return out;
 }

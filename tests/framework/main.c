@@ -6,6 +6,7 @@ int cli_tests(void);
 int render_tests(void);
 int film_tests(void);    /* the film and the sample-range merge */
 int camera_file_tests(void);
+int camera_tests(void);      /* the camera module: fov rule, framing, lens */
 int dae_tests(void);
 int scenes_tests(void);
 /* The release stripper's tests: weak, because the student release leaves the stripper and its
@@ -28,6 +29,7 @@ int main(void)
     failed += render_tests();
     failed += film_tests();
     failed += camera_file_tests();
+    failed += camera_tests();
     failed += dae_tests();
     failed += scenes_tests();
     if (strip_tests) failed += strip_tests();
