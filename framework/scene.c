@@ -1,5 +1,6 @@
 /* The scene container: growable arrays and primitive numbering. */
 #include "scene.h"
+#include "buf.h"
 #include "../parts/part1_raygen/part1.h"  /* call sites: framework/parts.h */
 #include <stdlib.h>
 #include <string.h>
@@ -14,25 +15,23 @@ void scene_free(scene *s)
     memset(s, 0, sizeof *s);
 }
 
-/* Appends one element of size `size` to *array (count *n), doubling capacity at powers of two. */
-static int append(void **array, int *n, size_t size, const void *elem)
+/* Each array grows by the framework's one growable-array helper (buf.h). */
+int scene_add_material(scene *s, material m)
 {
-    int count = *n;
-    if (count == 0 || (count & (count - 1)) == 0) {  /* count is 0 or a power of two: grow */
-        size_t cap = count == 0 ? 4 : (size_t)count * 2;
-        void *grown = realloc(*array, cap * size);
-        if (!grown) return -1;
-        *array = grown;
-    }
-    memcpy((char *)*array + (size_t)count * size, elem, size);
-    *n = count + 1;
-    return count;
+    return buf_append(&s->materials, &s->num_materials, &s->capacity.materials, sizeof m, &m);
 }
-
-int scene_add_material(scene *s, material m) { return append((void **)&s->materials, &s->num_materials, sizeof m, &m); }
-int scene_add_triangle(scene *s, triangle t) { return append((void **)&s->triangles, &s->num_triangles, sizeof t, &t); }
-int scene_add_sphere(scene *s, sphere sp) { return append((void **)&s->spheres, &s->num_spheres, sizeof sp, &sp); }
-int scene_add_light(scene *s, light l) { return append((void **)&s->lights, &s->num_lights, sizeof l, &l); }
+int scene_add_triangle(scene *s, triangle t)
+{
+    return buf_append(&s->triangles, &s->num_triangles, &s->capacity.triangles, sizeof t, &t);
+}
+int scene_add_sphere(scene *s, sphere sp)
+{
+    return buf_append(&s->spheres, &s->num_spheres, &s->capacity.spheres, sizeof sp, &sp);
+}
+int scene_add_light(scene *s, light l)
+{
+    return buf_append(&s->lights, &s->num_lights, &s->capacity.lights, sizeof l, &l);
+}
 
 material material_make(rgb albedo, rgb Le)
 {

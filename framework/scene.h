@@ -69,6 +69,7 @@ typedef struct scene {
     sphere *spheres;     int num_spheres;
     material *materials; int num_materials;
     light *lights;       int num_lights;
+    struct { int triangles, spheres, materials, lights; } capacity;  /* room allocated (scene_add_*) */
     camera camera;       /* the file's (camera.h), or a -c settings file's */
     bool has_camera;     /* false: camera_default_framing frames the bounds */
     char path[512];      /* the file it came from ("" for code-built scenes) */

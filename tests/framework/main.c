@@ -12,6 +12,7 @@ int scenes_tests(void);
 /* The release stripper's tests: weak, because the student release leaves the stripper and its
  * tests out. */
 int strip_tests(void) __attribute__((weak));
+int buf_tests(void);      /* the growable-array helper */
 int file_tests(void);     /* whole-file reads and their refusals */
 int bvh_tests(void);      /* the BVH validator (framework/bvh.c) */
 int output_tests(void);   /* a render's outputs as one unit */
@@ -33,6 +34,7 @@ int main(void)
     failed += dae_tests();
     failed += scenes_tests();
     if (strip_tests) failed += strip_tests();
+    failed += buf_tests();
     failed += file_tests();
     failed += output_tests();
     failed += lights_tests();
