@@ -66,7 +66,7 @@ static int load_scene(const char *name, scene *s, camera *cam)
             fprintf(stderr, "bvh_bench: %s: expected proc:N with N >= 1 (and the memory for it)\n", name);
             return 1;
         }
-        *cam = scene_default_camera(s);
+        *cam = camera_default_framing(scene_bounds(s));
         cam->camera_to_world = mat4_lookat(vec3_make(0.0f, 0.8f, 2.6f), vec3_make(0, 0, 0), vec3_make(0, 1, 0));
         cam->position = vec3_make(0.0f, 0.8f, 2.6f);
     } else {
@@ -75,7 +75,7 @@ static int load_scene(const char *name, scene *s, camera *cam)
             fprintf(stderr, "bvh_bench: %s\n", diag.error);
             return 1;
         }
-        *cam = s->has_camera ? s->camera : scene_default_camera(s);
+        *cam = s->has_camera ? s->camera : camera_default_framing(scene_bounds(s));
     }
     cam->fov_is_vertical = false;
     camera_set_aspect(cam, (float)WIDTH / HEIGHT);

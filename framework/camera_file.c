@@ -108,22 +108,6 @@ pl_status camera_file_load(const char *path, camera *out, pl_diag *d)
         s = pl_fail(d, PL_ERR_INVALID, "%s:6: expected a lens radius >= 0, got %g", path, focus[1]);
     if (s != PL_OK) return s;
 
-    camera c;
-    memset(&c, 0, sizeof c);
-    c.camera_to_world = mat4_identity();
-    for (int row = 0; row < 3; row++)
-        for (int col = 0; col < 3; col++) c.camera_to_world.m[row][col] = rot[3 * row + col];
-    c.camera_to_world.m[0][3] = pose[0];
-    c.camera_to_world.m[1][3] = pose[1];
-    c.camera_to_world.m[2][3] = pose[2];
-    c.position = vec3_make(pose[0], pose[1], pose[2]);
-    c.hfov = lens[0];
-    c.vfov = lens[1];
-    c.fov_is_vertical = true;  /* CS184 keeps vfov and derives hfov from the window's aspect */
-    c.znear = lens[3];
-    c.zfar = lens[4];
-    c.focal_distance = focus[0];
-    c.lens_radius = focus[1];
-    *out = c;
+    *out = camera_from_cs184_settings(lens, pose, rot, focus);
     return PL_OK;
 }

@@ -1,8 +1,9 @@
-/* CS184 camera settings files (-c): the camera a course saved from the original viewer. */
+/* CS184 camera settings files (-c): the camera a course saved from the original viewer. This file
+ * reads and checks the numbers; camera.c turns them into a camera. */
 #ifndef PL_CAMERA_FILE_H
 #define PL_CAMERA_FILE_H
 
-#include "scene.h"
+#include "camera.h"
 #include "status.h"
 
 /* Reads the six lines (hfov vfov aspect near far / pos.xyz target.xyz / phi theta r min_r max_r /

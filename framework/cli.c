@@ -2,6 +2,7 @@
  * Parsed by hand because getopt cannot take the two-value flags -r W H and -a B T. */
 #include "cli.h"
 #include "dae.h"
+#include "camera.h"
 #include <errno.h>
 #include <limits.h>
 #include <stdlib.h>
@@ -17,7 +18,8 @@ options options_default(void)
     o.threads = 1;
     o.max_depth = 1;
     o.accumulate = true;
-    o.focal_distance = 4.7f;
+    o.lens_radius = CAMERA_DEFAULT_LENS_RADIUS;
+    o.focal_distance = CAMERA_DEFAULT_FOCAL_DISTANCE;
     o.width = 800;
     o.height = 600;
     o.adaptive_batch = 32;
@@ -37,8 +39,8 @@ void cli_print_usage(FILE *f, const char *prog)
             "  -m N        max ray depth: 0 emission only, 1 direct light, ... (1)\n"
             "  -o 0|1      1: add up all bounces; 0: only the bounce at depth -m (1)\n"
             "  -e FILE     environment map (not supported yet)\n"
-            "  -b R        lens radius (0)\n"
-            "  -d D        focal distance (4.7)\n"
+            "  -b R        lens radius (0, or the -c file's)\n"
+            "  -d D        focal distance (4.7, or the -c file's)\n"
             "  -f FILE     write the render: .png (tone-mapped), .hdr or .exr (linear), plus FILE.json\n"
             "  -r W H      image size in pixels (800 600)\n"
             "  -c FILE     CS184 camera settings file\n"
@@ -142,8 +144,14 @@ pl_status cli_parse(int argc, char **argv, options *out, cli_action *action, pl_
             o.accumulate = v == 1;
         }
         else if (!strcmp(a, "-e")) { if (!VALUE(1)) s = pl_fail(d, PL_ERR_INVALID, "-e: expected a file name"); o.envmap = VALUE(1); i++; }
-        else if (!strcmp(a, "-b")) s = parse_float(a, VALUE(1), 0.0f, &o.lens_radius, d), i++;
-        else if (!strcmp(a, "-d")) s = parse_float(a, VALUE(1), 0.0f, &o.focal_distance, d), i++;
+        else if (!strcmp(a, "-b")) {  /* only a given lens replaces the camera's (camera.h) */
+            s = parse_float(a, VALUE(1), 0.0f, &o.lens_radius, d), i++;
+            o.lens_radius_given = true;
+        }
+        else if (!strcmp(a, "-d")) {
+            s = parse_float(a, VALUE(1), 0.0f, &o.focal_distance, d), i++;
+            o.focal_distance_given = true;
+        }
         else if (!strcmp(a, "-f")) { if (!VALUE(1)) s = pl_fail(d, PL_ERR_INVALID, "-f: expected an output file name"); o.output = VALUE(1); i++; }
         else if (!strcmp(a, "-c")) { if (!VALUE(1)) s = pl_fail(d, PL_ERR_INVALID, "-c: expected a camera settings file"); o.camera_file = VALUE(1); i++; }
         else if (!strcmp(a, "-r")) {

@@ -2,7 +2,6 @@
  * <light> wins over technique_common, as in CS184. */
 #include "dae_internal.h"
 
-#include <math.h>
 #include <string.h>
 
 
@@ -81,16 +80,6 @@ static pl_status check_fov(dae_ctx *c, const xmlNode *perspective, const char *n
     return dae_error(c, perspective, PL_ERR_INVALID, "expected %s in (0, 180) degrees, found %g", name, fov);
 }
 
-/* The camera's pose without the node's scale: camera_to_world is rigid by contract. */
-static mat4 rigid(mat4 m)
-{
-    vec3 z = vec3_normalize(mat4_dir(m, vec3_make(0, 0, 1)));
-    vec3 y = mat4_dir(m, vec3_make(0, 1, 0));
-    vec3 x = vec3_normalize(vec3_cross(y, z));
-    y = vec3_cross(z, x);
-    return mat4_from_basis(x, y, z, mat4_point(m, vec3_make(0, 0, 0)));
-}
-
 pl_status dae_instance_camera(dae_ctx *c, const xmlNode *inst, mat4 to_world)
 {
     dae_entry *entry;
@@ -111,29 +100,20 @@ pl_status dae_instance_camera(dae_ctx *c, const xmlNode *inst, mat4 to_world)
     }
     bool has_x = dae_child(perspective, "xfov") != NULL, has_y = dae_child(perspective, "yfov") != NULL;
     if (!has_x && !has_y) return dae_error(c, perspective, PL_ERR_PARSE, "expected an <xfov> or a <yfov>");
-    camera *cam = &c->out->camera;
-    memset(cam, 0, sizeof *cam);
-    float aspect;
-    st = dae_child_float(c, perspective, "xfov", 0.0f, &cam->hfov);
-    if (!st) st = dae_child_float(c, perspective, "yfov", 0.0f, &cam->vfov);
+    /* Read and check the numbers here, where errors can name the element; camera.c builds it. */
+    float xfov, yfov, aspect, znear, zfar;
+    st = dae_child_float(c, perspective, "xfov", 0.0f, &xfov);  /* 0: not given */
+    if (!st) st = dae_child_float(c, perspective, "yfov", 0.0f, &yfov);
     if (!st) st = dae_child_float(c, perspective, "aspect_ratio", 4.0f / 3.0f, &aspect);  /* CS184's 800x600 */
-    if (!st) st = dae_child_float(c, perspective, "znear", 0.01f, &cam->znear);
-    if (!st) st = dae_child_float(c, perspective, "zfar", 1e30f, &cam->zfar);
-    if (!st && has_x) st = check_fov(c, perspective, "xfov", cam->hfov);
-    if (!st && has_y) st = check_fov(c, perspective, "yfov", cam->vfov);
+    if (!st) st = dae_child_float(c, perspective, "znear", 0.01f, &znear);
+    if (!st) st = dae_child_float(c, perspective, "zfar", 1e30f, &zfar);
+    if (!st && has_x) st = check_fov(c, perspective, "xfov", xfov);
+    if (!st && has_y) st = check_fov(c, perspective, "yfov", yfov);
     if (!st && !(aspect > 0)) st = dae_error(c, perspective, PL_ERR_INVALID, "expected aspect_ratio > 0, found %g", aspect);
-    if (!st && !(cam->znear >= 0 && cam->zfar > cam->znear))
-        st = dae_error(c, perspective, PL_ERR_INVALID, "expected 0 <= znear < zfar, found %g and %g", cam->znear,
-                       cam->zfar);
+    if (!st && !(znear >= 0 && zfar > znear))
+        st = dae_error(c, perspective, PL_ERR_INVALID, "expected 0 <= znear < zfar, found %g and %g", znear, zfar);
     if (st) return st;
-    /* One fov given: the other follows the aspect ratio, and the image's aspect may change it later. */
-    cam->fov_is_vertical = !has_x;
-    if (!has_y) cam->vfov = rad_to_deg(2.0f * atanf(tanf(deg_to_rad(cam->hfov) * 0.5f) / aspect));
-    if (!has_x) cam->hfov = rad_to_deg(2.0f * atanf(tanf(deg_to_rad(cam->vfov) * 0.5f) * aspect));
-    cam->camera_to_world = rigid(to_world);
-    cam->position = mat4_point(to_world, vec3_make(0, 0, 0));
-    cam->focal_distance = 4.7f;  /* CS184's -d default */
-    cam->lens_radius = 0.0f;
+    c->out->camera = camera_from_collada(to_world, xfov, yfov, aspect, znear, zfar);
     c->has_camera = true;
     return PL_OK;
 }

@@ -2,6 +2,7 @@
  * Numbers are read straight from the text nodes libxml2 built, in one pass, so a large mesh costs
  * time linear in its size. */
 #include "dae_internal.h"
+#include "buf.h"
 
 #include <errno.h>
 #include <math.h>
@@ -291,18 +292,12 @@ static pl_status take_float(dae_ctx *c, const xmlNode *n, void *user, const char
     float v = 0.0f;
     pl_status st = parse_float(c, n, tok, end, &v);
     if (st) return st;
-    if (s->count >= s->cap) {
-        /* A fixed array is full: one number more is already an error, so reading stops here and
-         * nothing is ever written past the caller's array. */
-        if (!s->grow) return too_many(c, n, s);
-        if (s->cap > INT_MAX / 2) return dae_error(c, n, PL_ERR_PARSE, "too many numbers");
-        int cap = s->cap ? 2 * s->cap : 64;
-        float *v2 = realloc(s->v, (size_t)cap * sizeof *v2);
-        if (!v2) return pl_fail(c->diag, PL_ERR_NOMEM, "%s: out of memory", c->name);
-        s->v = v2;
-        s->cap = cap;
-    }
-    s->v[s->count++] = v;
+    /* A fixed array is full: one number more is already an error, so reading stops here and
+     * nothing is ever written past the caller's array. Otherwise the number goes into the fixed
+     * array's room, or the growing list grows (buf.h). */
+    if (!s->grow && s->count >= s->cap) return too_many(c, n, s);
+    if (buf_append(&s->v, &s->count, &s->cap, sizeof v, &v) < 0)
+        return pl_fail(c->diag, PL_ERR_NOMEM, "%s: out of memory", c->name);
     return PL_OK;
 }
 
@@ -340,15 +335,9 @@ static pl_status take_int(dae_ctx *c, const xmlNode *n, void *user, const char *
         v = v * 10 + (*q - '0');
     }
     if (v > INT_MAX) return bad_token(c, n, "a non-negative integer", tok, end);
-    if (s->count == s->cap) {
-        if (s->cap > INT_MAX / 2) return dae_error(c, n, PL_ERR_PARSE, "too many numbers");
-        int cap = s->cap ? 2 * s->cap : 64;
-        int *v2 = realloc(s->v, (size_t)cap * sizeof *v2);
-        if (!v2) return pl_fail(c->diag, PL_ERR_NOMEM, "%s: out of memory", c->name);
-        s->v = v2;
-        s->cap = cap;
-    }
-    s->v[s->count++] = (int)v;
+    int index = (int)v;
+    if (buf_append(&s->v, &s->count, &s->cap, sizeof index, &index) < 0)
+        return pl_fail(c->diag, PL_ERR_NOMEM, "%s: out of memory", c->name);
     return PL_OK;
 }
 

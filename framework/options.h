@@ -15,6 +15,8 @@ typedef struct {
     const char *envmap;       /* -e: environment map (not supported yet: rejected) */
     float lens_radius;        /* -b: aperture radius (0) */
     float focal_distance;     /* -d: focal distance (4.7) */
+    bool lens_radius_given;   /* -b given: it replaces the camera's (a -c file's) lens radius */
+    bool focal_distance_given; /* -d given: likewise for the focal distance */
     const char *output;       /* -f: output .png, .hdr or .exr; NULL = no file (print stats only) */
     int width, height;        /* -r W H: frame size (800 600) */
     const char *camera_file;  /* -c: CS184 camera settings file */

@@ -4,7 +4,6 @@
 #include "../parts/part3_direct/part3.h"
 #include "../parts/part4_global/part4.h"
 #include "../parts/part5_adaptive/part5.h"
-#include <math.h>
 #include <pthread.h>
 #include <stdatomic.h>
 #include <stdlib.h>
@@ -12,15 +11,6 @@
 #include <time.h>
 
 #define TILE 16
-
-/* CS184's framing fixes the lens for an 800x600 frame; other sizes crop or extend it. */
-static void apply_cs184_framing(camera *c, const scene *s, int width, int height)
-{
-    camera_set_aspect(c, 800.0f / 600.0f);
-    *c = camera_cs184_framing(c, scene_bounds(s));
-    c->hfov = rad_to_deg(2.0f * atanf(tanf(deg_to_rad(c->hfov) * 0.5f) * width / 800.0f));
-    c->vfov = rad_to_deg(2.0f * atanf(tanf(deg_to_rad(c->vfov) * 0.5f) * height / 600.0f));
-}
 
 void render_ctx_init(render_ctx *ctx, const scene *s, const accel *a, const options *o)
 {
@@ -30,13 +20,7 @@ void render_ctx_init(render_ctx *ctx, const scene *s, const accel *a, const opti
     ctx->opts = o;
     ctx->width = o->width;
     ctx->height = o->height;
-    ctx->camera = s->has_camera ? s->camera : scene_default_camera(s);
-    if (o->cs184_framing)
-        apply_cs184_framing(&ctx->camera, s, o->width, o->height);
-    else
-        camera_set_aspect(&ctx->camera, (float)o->width / (float)o->height);
-    ctx->camera.lens_radius = o->lens_radius;
-    ctx->camera.focal_distance = o->focal_distance;
+    ctx->camera = camera_for_render(s, o);
     ctx->sample_begin = o->sample_end ? o->sample_begin : 0;  /* --samples A:B, else all of -s */
     ctx->sample_end = o->sample_end ? o->sample_end : o->spp;
 }

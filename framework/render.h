@@ -19,7 +19,7 @@ typedef struct render_ctx {
     const scene *scene;    /* not owned */
     const accel *accel;    /* not owned */
     const options *opts;   /* not owned */
-    camera camera;         /* the scene's camera with aspect and framing applied */
+    camera camera;         /* the scene's camera with aspect, framing and lens flags applied */
     int width, height;     /* pixels */
     /* The camera samples to take of every pixel: sample_begin .. sample_end - 1 (--samples A:B;
      * 0 .. opts->spp by default). Sample s is the same whatever range it is rendered in. */
@@ -29,8 +29,8 @@ typedef struct render_ctx {
     void *progress_user;
 } render_ctx;
 
-/* Fills ctx from its parts: camera from the scene (or the default), aspect from width/height,
- * CS184 framing when opts->cs184_framing. */
+/* Fills ctx from its parts; the camera is camera_for_render's (camera.h): the scene's (or the
+ * default framing), aspect from width/height or CS184's framing, and the -b / -d lens when given. */
 void render_ctx_init(render_ctx *ctx, const scene *s, const accel *a, const options *o);
 
 /* The RNG stream of one camera sample: seeded from (opts->seed, pixel index, sample index). */

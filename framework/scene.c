@@ -1,9 +1,9 @@
-/* The scene container: growable arrays, primitive numbering, and camera framing. */
+/* The scene container: growable arrays and primitive numbering. */
 #include "scene.h"
+#include "buf.h"
 #include "../parts/part1_raygen/part1.h"  /* call sites: framework/parts.h */
 #include <stdlib.h>
 #include <string.h>
-#include <math.h>
 
 void scene_free(scene *s)
 {
@@ -15,25 +15,23 @@ void scene_free(scene *s)
     memset(s, 0, sizeof *s);
 }
 
-/* Appends one element of size `size` to *array (count *n), doubling capacity at powers of two. */
-static int append(void **array, int *n, size_t size, const void *elem)
+/* Each array grows by the framework's one growable-array helper (buf.h). */
+int scene_add_material(scene *s, material m)
 {
-    int count = *n;
-    if (count == 0 || (count & (count - 1)) == 0) {  /* count is 0 or a power of two: grow */
-        size_t cap = count == 0 ? 4 : (size_t)count * 2;
-        void *grown = realloc(*array, cap * size);
-        if (!grown) return -1;
-        *array = grown;
-    }
-    memcpy((char *)*array + (size_t)count * size, elem, size);
-    *n = count + 1;
-    return count;
+    return buf_append(&s->materials, &s->num_materials, &s->capacity.materials, sizeof m, &m);
 }
-
-int scene_add_material(scene *s, material m) { return append((void **)&s->materials, &s->num_materials, sizeof m, &m); }
-int scene_add_triangle(scene *s, triangle t) { return append((void **)&s->triangles, &s->num_triangles, sizeof t, &t); }
-int scene_add_sphere(scene *s, sphere sp) { return append((void **)&s->spheres, &s->num_spheres, sizeof sp, &sp); }
-int scene_add_light(scene *s, light l) { return append((void **)&s->lights, &s->num_lights, sizeof l, &l); }
+int scene_add_triangle(scene *s, triangle t)
+{
+    return buf_append(&s->triangles, &s->num_triangles, &s->capacity.triangles, sizeof t, &t);
+}
+int scene_add_sphere(scene *s, sphere sp)
+{
+    return buf_append(&s->spheres, &s->num_spheres, &s->capacity.spheres, sizeof sp, &sp);
+}
+int scene_add_light(scene *s, light l)
+{
+    return buf_append(&s->lights, &s->num_lights, &s->capacity.lights, sizeof l, &l);
+}
 
 material material_make(rgb albedo, rgb Le)
 {
@@ -101,57 +99,4 @@ bool scene_prim_intersect(const scene *s, int prim, ray *r, hit *h)
         h->material = mat;
     }
     return found;
-}
-
-
-void camera_set_aspect(camera *c, float aspect)
-{
-    if (c->fov_is_vertical)
-        c->hfov = rad_to_deg(2.0f * atanf(tanf(deg_to_rad(c->vfov) * 0.5f) * aspect));
-    else
-        c->vfov = rad_to_deg(2.0f * atanf(tanf(deg_to_rad(c->hfov) * 0.5f) / aspect));
-}
-
-/* Places a camera at eye looking at target with world +Y up, keeping the lens settings of base. */
-static camera camera_looking(const camera *base, vec3 eye, vec3 target)
-{
-    camera c = *base;
-    vec3 up = vec3_make(0, 1, 0);
-    vec3 dir = vec3_normalize(vec3_sub(target, eye));
-    if (fabsf(vec3_dot(dir, up)) > 0.999f) up = vec3_make(0, 0, 1);  /* looking straight up or down */
-    c.camera_to_world = mat4_lookat(eye, target, up);
-    c.position = eye;
-    return c;
-}
-
-camera scene_default_camera(const scene *s)
-{
-    camera base;
-    memset(&base, 0, sizeof base);
-    base.hfov = 49.13434f;  /* CS184's Cornell box lens */
-    base.vfov = 37.8f;
-    base.znear = 1e-4f;
-    base.zfar = 1e30f;
-    base.focal_distance = 4.7f;
-    aabb b = scene_bounds(s);
-    if (aabb_is_empty(b)) {
-        b.min = vec3_make(-1, -1, -1);
-        b.max = vec3_make(1, 1, 1);
-    }
-    vec3 centre = aabb_centroid(b);
-    float diag = vec3_length(aabb_extent(b));
-    return camera_looking(&base, vec3_add(centre, vec3_make(0, 0, 1.5f * diag)), centre);
-}
-
-camera camera_cs184_framing(const camera *c, aabb bounds)
-{
-    /* CS184 keeps only the view direction (the camera applied to (0,0,-1)) and orbits the centre
-     * of the bounds at 1.5 x their diagonal. */
-    vec3 view = vec3_normalize(mat4_dir(c->camera_to_world, vec3_make(0, 0, -1)));
-    vec3 centre = aabb_centroid(bounds);
-    float dist = 1.5f * vec3_length(aabb_extent(bounds));
-    camera out = camera_looking(c, vec3_sub(centre, vec3_scale(view, dist)), centre);
-    out.znear = fminf(c->znear, dist * 1e-3f);
-    out.zfar = fmaxf(c->zfar, dist * 10.0f);
-    return out;
 }

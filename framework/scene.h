@@ -12,6 +12,7 @@
 #include "mat4.h"
 #include "aabb.h"
 #include "ray.h"
+#include "camera.h"
 
 /* What the file asked for. Parts 1-5 shade every material as diffuse + emission; the others load
  * (with one warning) so course scenes that use them still render. */
@@ -63,24 +64,14 @@ typedef struct {
     float falloff_exp;     /* spot: exponent of the cos falloff inside the cone */
 } light;
 
-/* A pinhole camera. It looks down its local -Z with local +Y up (COLLADA's convention). */
-typedef struct {
-    mat4 camera_to_world;  /* rigid transform: rotation + translation, no scale */
-    vec3 position;         /* camera_to_world applied to the origin */
-    float hfov, vfov;      /* full horizontal and vertical field of view, degrees */
-    float znear, zfar;     /* camera rays span [znear, zfar] */
-    float lens_radius;     /* thin lens (not used by parts 1-5) */
-    float focal_distance;  /* thin lens (not used by parts 1-5) */
-    bool fov_is_vertical;  /* which fov the file fixed: the other follows the image aspect */
-} camera;
-
 typedef struct scene {
     triangle *triangles; int num_triangles;
     sphere *spheres;     int num_spheres;
     material *materials; int num_materials;
     light *lights;       int num_lights;
-    camera camera;
-    bool has_camera;     /* false: scene_default_camera frames the bounds */
+    struct { int triangles, spheres, materials, lights; } capacity;  /* room allocated (scene_add_*) */
+    camera camera;       /* the file's (camera.h), or a -c settings file's */
+    bool has_camera;     /* false: camera_default_framing frames the bounds */
     char path[512];      /* the file it came from ("" for code-built scenes) */
 } scene;
 
@@ -111,12 +102,5 @@ int scene_add_light(scene *s, light l);
 material material_make(rgb albedo, rgb Le);
 /* A triangle with its face normal at all three vertices. */
 triangle triangle_make(vec3 p0, vec3 p1, vec3 p2, int mat);
-
-/* Camera helpers: the fov not fixed by the file follows the image's aspect ratio (width/height). */
-void camera_set_aspect(camera *c, float aspect);
-/* A camera looking at the centre of the bounds from +Z, for scenes without one. */
-camera scene_default_camera(const scene *s);
-/* CS184's framing: keep only the view direction, orbit the bounds' centre at 1.5 x its diagonal. */
-camera camera_cs184_framing(const camera *c, aabb bounds);
 
 #endif

@@ -1,5 +1,6 @@
 /* Instructor tooling: not part of any assignment. The release stripper's core (see strip.h). */
 #include "strip.h"
+#include "../framework/buf.h"
 #include <ctype.h>
 #include <stdbool.h>
 #include <stdio.h>
@@ -268,14 +269,8 @@ static pl_status add_task(pass *p, const strip_task *t)
             l.number = t->line;
             return fail(p, &l, msg);
         }
-    if (p->num_tasks == p->cap_tasks) {
-        int cap = p->cap_tasks ? 2 * p->cap_tasks : 8;
-        strip_task *grown = realloc(p->tasks, (size_t)cap * sizeof *grown);
-        if (!grown) return pl_fail(p->diag, PL_ERR_NOMEM, "%s: out of memory", p->name);
-        p->tasks = grown;
-        p->cap_tasks = cap;
-    }
-    p->tasks[p->num_tasks++] = *t;
+    if (buf_append(&p->tasks, &p->num_tasks, &p->cap_tasks, sizeof *t, t) < 0)
+        return pl_fail(p->diag, PL_ERR_NOMEM, "%s: out of memory", p->name);
     return PL_OK;
 }
 

@@ -16,9 +16,8 @@
 ray camera_generate_ray(const camera *c, float x, float y)
 {
     /* BEGIN SOLUTION */
-    float to_rad = 3.14159265358979323846f / 180.0f;
-    vec3 sensor = vec3_make(tanf(0.5f * c->hfov * to_rad) * (2.0f * x - 1.0f),
-                            tanf(0.5f * c->vfov * to_rad) * (2.0f * y - 1.0f), -1.0f);
+    vec3 sensor = vec3_make(tanf(deg_to_rad(0.5f * c->hfov)) * (2.0f * x - 1.0f),
+                            tanf(deg_to_rad(0.5f * c->vfov)) * (2.0f * y - 1.0f), -1.0f);
     vec3 d = vec3_normalize(mat4_dir(c->camera_to_world, sensor));
     return ray_make(c->position, d, c->znear, c->zfar);
     /* END SOLUTION */

@@ -6,11 +6,13 @@ int cli_tests(void);
 int render_tests(void);
 int film_tests(void);    /* the film and the sample-range merge */
 int camera_file_tests(void);
+int camera_tests(void);      /* the camera module: fov rule, framing, lens */
 int dae_tests(void);
 int scenes_tests(void);
 /* The release stripper's tests: weak, because the student release leaves the stripper and its
  * tests out. */
 int strip_tests(void) __attribute__((weak));
+int buf_tests(void);      /* the growable-array helper */
 int file_tests(void);     /* whole-file reads and their refusals */
 int bvh_tests(void);      /* the BVH validator (framework/bvh.c) */
 int output_tests(void);   /* a render's outputs as one unit */
@@ -28,9 +30,11 @@ int main(void)
     failed += render_tests();
     failed += film_tests();
     failed += camera_file_tests();
+    failed += camera_tests();
     failed += dae_tests();
     failed += scenes_tests();
     if (strip_tests) failed += strip_tests();
+    failed += buf_tests();
     failed += file_tests();
     failed += output_tests();
     failed += lights_tests();

@@ -32,6 +32,8 @@ static void test_cli__defaults_are_cs184s(void **state)
     assert_int_equal(32, o.adaptive_batch);
     assert_float_near(0.05, o.adaptive_tol, 1e-7);
     assert_float_near(4.7, o.focal_distance, 1e-6);
+    assert_false(o.lens_radius_given);  /* the camera's own lens stays (camera_for_render) */
+    assert_false(o.focal_distance_given);
     assert_false(o.adaptive);
     assert_false(o.hemisphere);
     assert_string_equal("s.dae", o.scene_path);
@@ -53,6 +55,7 @@ static void test_cli__every_flag_is_read(void **state)
     assert_false(o.accumulate);
     assert_float_near(0.1, o.lens_radius, 1e-6);
     assert_float_near(3.0, o.focal_distance, 1e-6);
+    assert_true(o.lens_radius_given && o.focal_distance_given);
     assert_string_equal("x.png", o.output);
     assert_int_equal(480, o.width);
     assert_int_equal(360, o.height);

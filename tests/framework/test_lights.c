@@ -141,12 +141,12 @@ static void test_spot_light__cone_and_falloff(void **state)
     assert_true(light_sample_L(&l, vec3_make(0, 0, 0), vec2_make(0.5f, 0.5f), &ls));
     assert_rgb_near(rgb_gray(1.0f), ls.L, 1e-6f);  /* on the axis: 4 / 2^2 */
     /* 20 degrees off the axis: 4 cos^2(20) / d^2 with d = 2 / cos(20) */
-    float t = tanf(20.0f * (float)M_PI / 180.0f) * 2.0f;
+    float t = tanf(deg_to_rad(20.0f)) * 2.0f;
     assert_true(light_sample_L(&l, vec3_make(t, 0, 0), vec2_make(0.5f, 0.5f), &ls));
-    double c = cos(20.0 * M_PI / 180.0), d = 2.0 / c;
+    double c = cos(deg_to_rad(20.0f)), d = 2.0 / c;
     assert_float_near(4.0 * c * c / (d * d), ls.L.r, 1e-5);
     /* 40 degrees off the axis: outside the cone */
-    t = tanf(40.0f * (float)M_PI / 180.0f) * 2.0f;
+    t = tanf(deg_to_rad(40.0f)) * 2.0f;
     assert_false(light_sample_L(&l, vec3_make(t, 0, 0), vec2_make(0.5f, 0.5f), &ls));
 }
 

@@ -120,7 +120,7 @@ static void check_cornell_box(const scene *s)
     assert_false(c->fov_is_vertical);
     vec3 view = mat4_dir(c->camera_to_world, vec3_make(0, 0, -1));
     vec3 to_centre = vec3_normalize(vec3_sub(centre, c->position));
-    assert_true(vec3_dot(view, to_centre) > cosf(c->vfov * 0.5f * 3.14159265f / 180.0f));
+    assert_true(vec3_dot(view, to_centre) > cosf(deg_to_rad(c->vfov * 0.5f)));
 }
 
 static void test_scenes__cornell_boxes_are_closed_lit_and_framed(void **state)

@@ -31,7 +31,7 @@ static void test_camera_generate_ray__corners_span_the_field_of_view(void **stat
     /* hfov 90: tan(45) = 1, so the right edge is at x = 1 on the plane z = -1.
      * vfov 60: tan(30) = 0.57735 at the top edge. */
     camera c = make_camera(mat4_identity(), 90.0f, 60.0f);
-    float ty = tanf(30.0f * 3.14159265f / 180.0f);
+    float ty = tanf(deg_to_rad(30.0f));
     struct { float x, y; vec3 through; } cases[] = {
         {1, 1, {1, ty, -1}}, {0, 0, {-1, -ty, -1}}, {1, 0, {1, -ty, -1}}, {0, 1, {-1, ty, -1}}, {0.75f, 0.5f, {0.5f, 0, -1}},
     };

@@ -194,7 +194,7 @@ static void test_render__normal_image_matches_oracle(void **state)
     assert_int_equal(PL_OK, render_image(&ctx, &img, NULL, &st, &d));
     assert_implemented();
 
-    double tan_h = tan(ctx.camera.hfov * M_PI / 360.0), tan_v = tan(ctx.camera.vfov * M_PI / 360.0);
+    double tan_h = tan(deg_to_rad(ctx.camera.hfov * 0.5f)), tan_v = tan(deg_to_rad(ctx.camera.vfov * 0.5f));
     image want_img;
     assert_int_equal(PL_OK, image_alloc(&want_img, o.width, o.height));
     int wrong = 0, first_x = -1, first_y = -1;
