@@ -41,8 +41,10 @@ static pl_status read_float_array(dae_ctx *c, dae_entry *entry, const xmlNode *a
 {
     int declared;
     pl_status st = dae_attr_int(c, array, "count", true, 0, 0, &declared);
-    if (!st) st = dae_float_list(c, array, &entry->floats, &entry->num_floats);
-    if (!st && entry->num_floats != declared)
+    if (!st) st = dae_float_list(c, array, declared, &entry->floats, &entry->num_floats);
+    if (!st && entry->num_floats > declared)
+        st = dae_error(c, array, PL_ERR_PARSE, "expected %d numbers (count), found more", declared);
+    else if (!st && entry->num_floats != declared)
         st = dae_error(c, array, PL_ERR_PARSE, "expected %d numbers (count), found %d", declared,
                        entry->num_floats);
     if (st) {
@@ -226,8 +228,10 @@ static pl_status read_list(dae_ctx *c, const xmlNode *prim, const inputs *in, co
     if (polylist) {
         const xmlNode *vc = dae_child(prim, "vcount");
         if (!vc && count > 0) return dae_error(c, prim, PL_ERR_PARSE, "expected a <vcount> (count is %d)", count);
-        if (vc) st = dae_int_list(c, vc, &vcount, &num_vcount);
-        if (!st && num_vcount != count)
+        if (vc) st = dae_int_list(c, vc, count, &vcount, &num_vcount);
+        if (!st && num_vcount > count)
+            st = dae_error(c, prim, PL_ERR_PARSE, "vcount has more entries than count says (%d)", count);
+        else if (!st && num_vcount != count)
             st = dae_error(c, prim, PL_ERR_PARSE, "vcount has %d entr%s, count says %d", num_vcount,
                            num_vcount == 1 ? "y" : "ies", count);
         for (int i = 0; i < num_vcount && !st; i++)
@@ -238,11 +242,14 @@ static pl_status read_list(dae_ctx *c, const xmlNode *prim, const inputs *in, co
     for (int i = 0; i < count && !st; i++) corners += polylist ? vcount[i] : 3;
     if (!st) st = dae_check_room(c, inst->elem, (long)(corners - 2LL * count));  /* n - 2 triangles per polygon */
     if (!st && corners > 0 && !p) st = dae_error(c, prim, PL_ERR_PARSE, "expected a <p> with the indices");
-    if (!st && p) st = dae_int_list(c, p, &idx, &num_idx);
-    if (!st && num_idx != corners * in->stride)
-        st = dae_error(c, p ? p : prim, PL_ERR_PARSE,
-                       "expected %lld indices (%lld corners x %d inputs), found %d", corners * in->stride,
-                       corners, in->stride, num_idx);
+    long long want = corners * in->stride;
+    if (!st && p) st = dae_int_list(c, p, want < INT_MAX ? (int)want : INT_MAX, &idx, &num_idx);
+    if (!st && num_idx > want)
+        st = dae_error(c, p, PL_ERR_PARSE, "expected %lld indices (%lld corners x %d inputs), found more", want,
+                       corners, in->stride);
+    else if (!st && num_idx != want)
+        st = dae_error(c, p ? p : prim, PL_ERR_PARSE, "expected %lld indices (%lld corners x %d inputs), found %d",
+                       want, corners, in->stride, num_idx);
     size_t at = 0;
     for (int i = 0; i < count && !st; i++) {
         int n = polylist ? vcount[i] : 3;
@@ -270,7 +277,7 @@ static pl_status read_polygons(dae_ctx *c, const xmlNode *prim, const inputs *in
             continue;
         }
         int *idx, n;
-        if ((st = dae_int_list(c, p, &idx, &n))) break;
+        if ((st = dae_int_list(c, p, -1, &idx, &n))) break;
         if (n % in->stride != 0 || n / in->stride < 3)
             st = dae_error(c, p, PL_ERR_PARSE, "expected at least 3 corners of %d indices each, found %d indices",
                            in->stride, n);

@@ -78,13 +78,14 @@ pl_status dae_resolve(dae_ctx *c, const xmlNode *at, const char *attr, const cha
                       dae_entry **out);
 
 /* ---- numbers ----------------------------------------------------------------------------- */
-/* Reads exactly want numbers (or, when want_alt > 0, want_alt of them) from n's text. found gets
- * how many were read (may be NULL). */
+/* Reads exactly want numbers (or, when want_alt > 0, want_alt of them) from n's text, and never
+ * more than one past the larger: "found more" then. found gets how many were read (may be NULL). */
 pl_status dae_floats(dae_ctx *c, const xmlNode *n, float *out, int want, int want_alt, int *found);
-/* Reads every number of n's text into a new array (caller frees; NULL when empty). */
-pl_status dae_float_list(dae_ctx *c, const xmlNode *n, float **out, int *count);
+/* Reads the numbers of n's text into a new array (caller frees, also when *count is 0). Reading
+ * stops one number past max (the count the file declares; < 0: none): *count is then max + 1. */
+pl_status dae_float_list(dae_ctx *c, const xmlNode *n, int max, float **out, int *count);
 /* The same for non-negative integers (<p>, <vcount>). */
-pl_status dae_int_list(dae_ctx *c, const xmlNode *n, int **out, int *count);
+pl_status dae_int_list(dae_ctx *c, const xmlNode *n, int max, int **out, int *count);
 /* One float from the text of parent's child `name`; def when the child is absent. */
 pl_status dae_child_float(dae_ctx *c, const xmlNode *parent, const char *name, float def, float *out);
 /* An integer attribute >= min; def when absent (required: absence is an error). */

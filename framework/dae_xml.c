@@ -206,27 +206,6 @@ static const char *text_of(const xmlNode *n, xmlChar **copy)
     return *copy ? (const char *)*copy : "";
 }
 
-/* Calls take(user, token, end) for each whitespace-separated token of n's text, stopping at the
- * first non-OK status. The tokenizer is shared by every number reader. */
-typedef pl_status (*token_fn)(dae_ctx *c, const xmlNode *n, void *user, const char *tok, const char *end);
-
-static pl_status for_each_token(dae_ctx *c, const xmlNode *n, token_fn take, void *user)
-{
-    xmlChar *copy;
-    const char *s = text_of(n, &copy);
-    pl_status st = PL_OK;
-    while (st == PL_OK) {
-        while (is_space(*s)) s++;
-        if (!*s) break;
-        const char *end = s;
-        while (*end && !is_space(*end)) end++;
-        st = take(c, n, user, s, end);
-        s = end;
-    }
-    xmlFree(copy);
-    return st;
-}
-
 static pl_status bad_token(dae_ctx *c, const xmlNode *n, const char *what, const char *tok, const char *end)
 {
     int len = (int)(end - tok);
@@ -237,36 +216,42 @@ static pl_status bad_token(dae_ctx *c, const xmlNode *n, const char *what, const
 /* Clinger's fast path: a decimal of at most 7 digits' worth (m < 2^24) with at most 10 digits after
  * the point is m / 10^k with m and 10^k both exact floats, and IEEE division rounds that quotient
  * correctly: the same float strtof returns, at a fraction of its cost. Exported meshes are almost
- * all such numbers ("0.0187232"); anything else (exponents, long mantissas) goes to strtof. */
-static bool parse_float_fast(const char *tok, const char *end, float *out)
+ * all such numbers ("0.0187232"). scan_float parses one at s while scanning it and returns where it
+ * ends (at a blank or the text's end), or NULL for anything else (exponents, long mantissas, junk),
+ * which parse_float then reads with strtof or refuses. */
+static const char *scan_float(const char *s, float *out)
 {
     static const float pow10[11] = {1e0f, 1e1f, 1e2f, 1e3f, 1e4f, 1e5f, 1e6f, 1e7f, 1e8f, 1e9f, 1e10f};
-    const char *q = tok;
-    bool negative = q < end && *q == '-';
-    if (q < end && (*q == '-' || *q == '+')) q++;
+    bool negative = *s == '-';
+    if (*s == '-' || *s == '+') s++;
     uint32_t m = 0;
-    int decimals = 0, digits = 0;
-    bool point = false;
-    for (; q < end; q++) {
-        if (*q == '.' && !point) {
-            point = true;
-            continue;
-        }
-        if (*q < '0' || *q > '9') return false;
-        m = m * 10 + (uint32_t)(*q - '0');
-        if (m >= (1u << 24)) return false;
-        decimals += point;
-        digits++;
-    }
-    if (digits == 0 || decimals > 10) return false;
+    int digits = 0, decimals = 0;
+    for (; *s >= '0' && *s <= '9'; s++, digits++)
+        if ((m = m * 10 + (uint32_t)(*s - '0')) >= (1u << 24)) return NULL;
+    if (*s == '.')
+        for (s++; *s >= '0' && *s <= '9'; s++, digits++, decimals++)
+            if ((m = m * 10 + (uint32_t)(*s - '0')) >= (1u << 24)) return NULL;
+    if (digits == 0 || decimals > 10 || (*s && !is_space(*s))) return NULL;
     float v = (float)m / pow10[decimals];
     *out = negative ? -v : v;
-    return true;
+    return s;
+}
+
+/* An index: a plain digit string up to INT_MAX, parsed while scanned (no strtol locale or sign
+ * machinery); NULL for anything else, which the caller refuses naming the token. */
+static const char *scan_index(const char *s, int *out)
+{
+    long x = 0;
+    const char *start = s;
+    for (; *s >= '0' && *s <= '9'; s++)
+        if ((x = x * 10 + (*s - '0')) > INT_MAX) return NULL;
+    if (s == start || (*s && !is_space(*s))) return NULL;
+    *out = (int)x;
+    return s;
 }
 
 static pl_status parse_float(dae_ctx *c, const xmlNode *n, const char *tok, const char *end, float *out)
 {
-    if (parse_float_fast(tok, end, out)) return PL_OK;
     char *stop;
     errno = 0;
     float v = strtof(tok, &stop);
@@ -276,78 +261,95 @@ static pl_status parse_float(dae_ctx *c, const xmlNode *n, const char *tok, cons
     return PL_OK;
 }
 
-/* Where numbers go: a caller's fixed array (want or want_alt numbers) or a growing one. */
-typedef struct { float *v; int count, cap; bool grow; int want, want_alt; } float_sink;
+/* ---- number lists ---------------------------------------------------------------------------
+ * Every list of numbers in a scene (vertex arrays, index lists, matrices, colours) is read by one
+ * loop, read_numbers. It walks the element's text once, parses each token in place, and reads at
+ * most one number past `max`, the count the file declares or the caller's array holds: a list that
+ * lies about its length is refused after one extra number, never read to its end. The output is
+ * sized once, from what the text can hold (a number and its separator take two characters) and
+ * from max, so a 3 MB mesh is one allocation rather than twenty reallocations and copies. */
 
-static pl_status too_many(dae_ctx *c, const xmlNode *n, const float_sink *s)
+/* Reads the numbers of n's text, floats or (ints) non-negative indices, into `into` (room for max)
+ * or, when into is NULL, a new array in *grown (free with free()). *count is how many were read;
+ * max + 1 means "more than max" (that one is not stored). max < 0: no limit but the text's length. */
+static pl_status read_numbers(dae_ctx *c, const xmlNode *n, bool ints, int max, void *into, void **grown,
+                              int *count)
 {
-    if (s->want_alt > 0)
-        return dae_error(c, n, PL_ERR_PARSE, "expected %d or %d numbers, found more", s->want, s->want_alt);
-    return dae_error(c, n, PL_ERR_PARSE, "expected %d number%s, found more", s->want, s->want == 1 ? "" : "s");
-}
-
-static pl_status take_float(dae_ctx *c, const xmlNode *n, void *user, const char *tok, const char *end)
-{
-    float_sink *s = user;
-    float v = 0.0f;
-    pl_status st = parse_float(c, n, tok, end, &v);
-    if (st) return st;
-    /* A fixed array is full: one number more is already an error, so reading stops here and
-     * nothing is ever written past the caller's array. Otherwise the number goes into the fixed
-     * array's room, or the growing list grows (buf.h). */
-    if (!s->grow && s->count >= s->cap) return too_many(c, n, s);
-    if (buf_append(&s->v, &s->count, &s->cap, sizeof v, &v) < 0)
+    xmlChar *copy;
+    const char *s = text_of(n, &copy);
+    size_t room = strlen(s) / 2 + 1;
+    if (room > INT_MAX) room = INT_MAX;
+    if (max >= 0 && (size_t)max < room) room = (size_t)max;
+    void *v = into;
+    if (!v && !(v = malloc((room ? room : 1) * sizeof(float)))) {  /* float and int: 4 bytes each */
+        xmlFree(copy);
         return pl_fail(c->diag, PL_ERR_NOMEM, "%s: out of memory", c->name);
-    return PL_OK;
+    }
+    float *fv = v;
+    int *iv = v;
+    size_t k = 0;
+    pl_status st = PL_OK;
+    for (;;) {
+        while (is_space(*s)) s++;
+        if (!*s) break;
+        if (k == room) {  /* one number more than the list may hold: stop reading here */
+            k++;
+            break;
+        }
+        /* The common token is parsed while it is scanned; anything else is found whole and read
+         * (or refused) by the careful path. */
+        const char *tok = s, *fast = ints ? scan_index(s, &iv[k]) : scan_float(s, &fv[k]);
+        if (fast) {
+            s = fast;
+            k++;
+            continue;
+        }
+        while (*s && !is_space(*s)) s++;
+        if (ints) st = bad_token(c, n, "a non-negative integer", tok, s);
+        else st = parse_float(c, n, tok, s, &fv[k]);
+        if (st) break;
+        k++;
+    }
+    xmlFree(copy);
+    if (!into) {
+        if (st) {
+            free(v);
+            v = NULL;
+        }
+        *grown = v;
+    }
+    *count = st ? 0 : (int)k;
+    return st;
 }
 
 pl_status dae_floats(dae_ctx *c, const xmlNode *n, float *out, int want, int want_alt, int *found)
 {
-    float_sink s = {out, 0, want > want_alt ? want : want_alt, false, want, want_alt};
-    pl_status st = for_each_token(c, n, take_float, &s);
-    if (found) *found = s.count;
+    int k, cap = want > want_alt ? want : want_alt;
+    pl_status st = read_numbers(c, n, false, cap, out, NULL, &k);
+    if (found) *found = k;
     if (st) return st;
-    if (s.count == want || (want_alt > 0 && s.count == want_alt)) return PL_OK;
+    if (k == want || (want_alt > 0 && k == want_alt)) return PL_OK;
+    char got[32];
+    if (k > cap) snprintf(got, sizeof got, "more");
+    else snprintf(got, sizeof got, "%d", k);
     if (want_alt > 0)
-        return dae_error(c, n, PL_ERR_PARSE, "expected %d or %d numbers, found %d", want, want_alt, s.count);
-    return dae_error(c, n, PL_ERR_PARSE, "expected %d number%s, found %d", want, want == 1 ? "" : "s", s.count);
+        return dae_error(c, n, PL_ERR_PARSE, "expected %d or %d numbers, found %s", want, want_alt, got);
+    return dae_error(c, n, PL_ERR_PARSE, "expected %d number%s, found %s", want, want == 1 ? "" : "s", got);
 }
 
-pl_status dae_float_list(dae_ctx *c, const xmlNode *n, float **out, int *count)
+pl_status dae_float_list(dae_ctx *c, const xmlNode *n, int max, float **out, int *count)
 {
-    float_sink s = {NULL, 0, 0, true, 0, 0};
-    pl_status st = for_each_token(c, n, take_float, &s);
-    if (st) { free(s.v); s.v = NULL; s.count = 0; }
-    *out = s.v;
-    *count = s.count;
+    void *v;
+    pl_status st = read_numbers(c, n, false, max, NULL, &v, count);
+    *out = v;
     return st;
 }
 
-typedef struct { int *v; int count, cap; } int_sink;
-
-static pl_status take_int(dae_ctx *c, const xmlNode *n, void *user, const char *tok, const char *end)
+pl_status dae_int_list(dae_ctx *c, const xmlNode *n, int max, int **out, int *count)
 {
-    int_sink *s = user;
-    /* Indices are plain digit strings: read them without strtol's locale and sign machinery. */
-    long v = 0;
-    for (const char *q = tok; q < end; q++) {
-        if (*q < '0' || *q > '9' || v > INT_MAX / 10) return bad_token(c, n, "a non-negative integer", tok, end);
-        v = v * 10 + (*q - '0');
-    }
-    if (v > INT_MAX) return bad_token(c, n, "a non-negative integer", tok, end);
-    int index = (int)v;
-    if (buf_append(&s->v, &s->count, &s->cap, sizeof index, &index) < 0)
-        return pl_fail(c->diag, PL_ERR_NOMEM, "%s: out of memory", c->name);
-    return PL_OK;
-}
-
-pl_status dae_int_list(dae_ctx *c, const xmlNode *n, int **out, int *count)
-{
-    int_sink s = {NULL, 0, 0};
-    pl_status st = for_each_token(c, n, take_int, &s);
-    if (st) { free(s.v); s.v = NULL; s.count = 0; }
-    *out = s.v;
-    *count = s.count;
+    void *v;
+    pl_status st = read_numbers(c, n, true, max, NULL, &v, count);
+    *out = v;
     return st;
 }
 
