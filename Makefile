@@ -71,6 +71,7 @@ help::
 	@echo "  make                  build bin/pathtracer (start here)"
 	@echo "  make test-part1       run part 1's tests (likewise test-part2 .. test-part5)"
 	@echo "  make test-part3 FILTER='*hemisphere*'  run only the tests whose names match"
+	@echo "  make test-part3 LIST=1                  list the suite's tests (with FILTER: those that match)"
 	@echo "  make test-framework   run the framework's tests"
 	@echo "  make test             run every suite"
 	@echo "  make test SAN=1       the same under AddressSanitizer + UBSan"
@@ -105,14 +106,18 @@ ifeq ($(strip $(call suite_obj,$(1))),)
 	@echo "test-$(1): no tests yet"
 else
 	@echo "== test-$(1)"
-	$$(Q)PL_TEST_FILTER='$$(FILTER)' $(BIN)/test-$(1)
+	$$(Q)PL_TEST_FILTER='$$(FILTER)' PL_TEST_LIST='$$(LIST)' $(BIN)/test-$(1)
 endif
 endef
 $(foreach s,$(SUITES),$(eval $(call suite_rules,$(s))))
 
-# Every suite runs even when one fails; the target fails if any did.
+# Every suite runs even when one fails; the target fails if any did. A FILTER need match in one
+# suite only: a suite with a match creates $(BUILD)/filter-matched, and the target fails without one.
 test:
-	@fail=0; for s in $(SUITES); do $(MAKE) --no-print-directory test-$$s || fail=1; done; \
+	@fail=0; matched=$(BUILD)/filter-matched; mkdir -p $(BUILD); rm -f $$matched; \
+	 for s in $(SUITES); do PL_TEST_MATCHED=$$matched $(MAKE) --no-print-directory test-$$s || fail=1; done; \
+	 if [ -n '$(FILTER)' ] && [ ! -f $$matched ]; then \
+	   echo "ERROR: no test of any suite matches FILTER='$(FILTER)' (the tests are listed by \`make test LIST=1\`)"; exit 1; fi; \
 	 if [ $$fail = 0 ]; then echo "all suites passed"; else echo "some suites FAILED"; exit 1; fi
 
 clean:

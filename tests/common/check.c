@@ -1,5 +1,6 @@
 /* Test machinery: not part of any assignment. */
 #include "test.h"
+#include <stdarg.h>
 #include <stdio.h>
 #include <math.h>
 
@@ -60,6 +61,17 @@ void check_fail(const char *file, int line)
         _fail(at_file, at_line);
     }
     _fail(file, line);
+}
+
+void check_fail_msg(const char *file, int line, const char *format, ...)
+{
+    va_list args;
+    va_start(args, format);
+    print_error("ERROR: ");
+    vprint_error(format, args);
+    print_error("\n");
+    va_end(args);
+    check_fail(file, line);
 }
 
 void check_true(bool cond, const char *what, const char *file, int line)

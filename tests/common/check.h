@@ -37,6 +37,10 @@ void pl_at_push(const char *file, int line);
 void pl_at_pop(void);
 /* cmocka's _fail at the outermost PL_AT call site if there is one, else at file:line. */
 void check_fail(const char *file, int line);
+/* fail_msg that a PL_AT helper may call: prints "ERROR: <message>" and fails at the outermost PL_AT
+ * call site (cmocka's fail_msg always names its own line, which in a helper is the helper's). */
+#define PL_FAIL(...) check_fail_msg(__FILE__, __LINE__, __VA_ARGS__)
+void check_fail_msg(const char *file, int line, const char *format, ...) CMOCKA_PRINTF_ATTRIBUTE(3, 4);
 
 /* PL_CHECK(cond) and PL_CHECK_NEAR(expected, got, eps): on failure print the expression, both
  * values and the calling test's line (through PL_AT helpers too), then fail the test. */

@@ -19,13 +19,13 @@ void fixture_for_each_scene(void (*visit)(const scene *s, const char *path))
             scene s;
             pl_diag diag = pl_diag_default();
             diag.on_warning = NULL;
-            if (dae_load(g.gl_pathv[i], &s, &diag) != PL_OK) fail_msg("%s does not load: %s", g.gl_pathv[i], diag.error);
+            if (dae_load(g.gl_pathv[i], &s, &diag) != PL_OK) PL_FAIL("%s does not load: %s", g.gl_pathv[i], diag.error);
             visit(&s, g.gl_pathv[i]);
             scene_free(&s);
         }
         globfree(&g);
     }
-    if (found == 0) fail_msg("no scenes found under scenes/ (run the tests from the repository root)");
+    if (found == 0) PL_FAIL("no scenes found under scenes/ (run the tests from the repository root)");
 }
 
 static vec3 random_point(rng *g, float half)
@@ -74,7 +74,7 @@ void fixture_random_soup(scene *s, int n, uint64_t seed)
         default:
             break;
         }
-        if (scene_add_triangle(s, triangle_make(a, b, d, 0)) < 0) fail_msg("out of memory");
+        if (scene_add_triangle(s, triangle_make(a, b, d, 0)) < 0) PL_FAIL("out of memory");
     }
 }
 
@@ -126,7 +126,7 @@ void fixture_build_median(bvh *out, const scene *s, int max_leaf_size)
     out->nodes = malloc((2 * (size_t)n - 1) * sizeof *out->nodes);
     out->prim_index = malloc((size_t)n * sizeof *out->prim_index);
     keyed_prim *scratch = malloc((size_t)n * sizeof *scratch);
-    if (!out->nodes || !out->prim_index || !scratch) fail_msg("out of memory");
+    if (!out->nodes || !out->prim_index || !scratch) PL_FAIL("out of memory");
     for (int i = 0; i < n; i++) out->prim_index[i] = i;
     out->num_prims = n;
     out->num_nodes = 1;

@@ -11,12 +11,13 @@ static void build_and_check(const scene *s, int max_leaf_size, const char *what)
     bvh b;
     pl_status st = bvh_build(&b, s, max_leaf_size);
     assert_implemented();
-    if (st != PL_OK) fail_msg("%s: bvh_build returned %s", what, pl_status_name(st));
+    if (st != PL_OK) PL_FAIL("%s: bvh_build returned %s", what, pl_status_name(st));
     pl_diag why = pl_diag_default();
     pl_status valid = bvh_validate(&b, s, max_leaf_size, true, NULL, &why);
     bvh_free(&b);
-    if (valid != PL_OK) fail_msg("%s (max_leaf_size %d): %s", what, max_leaf_size, why.error);
+    if (valid != PL_OK) PL_FAIL("%s (max_leaf_size %d): %s", what, max_leaf_size, why.error);
 }
+#define build_and_check(...) PL_AT(build_and_check(__VA_ARGS__))  /* failures name the calling test's line */
 
 static void check_invariants_of_scene(const scene *s, const char *path)
 {
@@ -26,7 +27,7 @@ static void check_invariants_of_scene(const scene *s, const char *path)
 
 static void test_bvh_build__invariants_hold_on_every_shipped_scene(void **state)
 {
-    fixture_for_each_scene(check_invariants_of_scene);
+    PL_AT(fixture_for_each_scene(check_invariants_of_scene));  /* failures name this line */
 }
 
 static void test_bvh_build__invariants_hold_on_random_soups(void **state)

@@ -56,9 +56,9 @@ static void compare_images_of_scene(const scene *s, const char *path)
     image with = {0}, without = {0};
     pl_status st = render_normals(s, true, &with);
     assert_implemented();
-    if (st != PL_OK) fail_msg("%s: rendering through the BVH failed: %s", path, pl_status_name(st));
+    if (st != PL_OK) PL_FAIL("%s: rendering through the BVH failed: %s", path, pl_status_name(st));
     st = render_normals(s, false, &without);
-    if (st != PL_OK) fail_msg("%s: rendering through the linear scan failed: %s", path, pl_status_name(st));
+    if (st != PL_OK) PL_FAIL("%s: rendering through the linear scan failed: %s", path, pl_status_name(st));
 
     int differ = 0, first = -1;
     for (int p = 0; p < IMAGE_WIDTH * IMAGE_HEIGHT; p++) {
@@ -70,14 +70,14 @@ static void compare_images_of_scene(const scene *s, const char *path)
     image_free(&with);
     image_free(&without);
     if (differ)
-        fail_msg("%s: %d of %d pixels differ; first at column %d, row %d from the top: BVH rgb(%g, %g, %g), "
-                 "linear scan rgb(%g, %g, %g)", path, differ, IMAGE_WIDTH * IMAGE_HEIGHT,
-                 first % IMAGE_WIDTH, first / IMAGE_WIDTH, a.r, a.g, a.b, b.r, b.g, b.b);
+        PL_FAIL("%s: %d of %d pixels differ; first at column %d, row %d from the top: BVH rgb(%g, %g, %g), "
+                "linear scan rgb(%g, %g, %g)", path, differ, IMAGE_WIDTH * IMAGE_HEIGHT,
+                first % IMAGE_WIDTH, first / IMAGE_WIDTH, a.r, a.g, a.b, b.r, b.g, b.b);
 }
 
 static void test_bvh__normal_images_equal_the_linear_scan_on_shipped_scenes(void **state)
 {
-    fixture_for_each_scene(compare_images_of_scene);
+    PL_AT(fixture_for_each_scene(compare_images_of_scene));  /* failures name this line */
 }
 
 static void test_heatmap__colours_visits_and_adds_a_legend(void **state)

@@ -14,7 +14,8 @@
  *   box); the BVH must then agree with the scan of the other primitives.
  * Anything else fails: a different t, a hit the scan does not see, a missed non-grazing hit. The
  * rays are fixed (seeded; $PL_TEST_SEED draws others), so a verdict never changes between runs,
- * and a failure prints the command that replays its ray ($PL_TEST_RAY). */
+ * and a failure prints the command that replays its ray: $PL_TEST_RAY = <scene>:<ray>, the scene
+ * numbered 0, 1, ... in the order the test judges its scenes. */
 #include "../common/test.h"
 #include "fixtures.h"
 #include "../common/procmesh.h"
@@ -23,6 +24,7 @@
 #include "../../framework/rng.h"
 #include "../../framework/sampler.h"
 #include <float.h>
+#include <limits.h>
 #include <pthread.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -305,8 +307,17 @@ static void *oracle_worker(void *arg)
     return NULL;
 }
 
-/* The test running, for the replay command a failure prints. */
+/* The test running, for the replay command a failure prints, and its scenes judged so far. */
 static const char *current_test = "";
+static int scenes_seen;
+
+/* $PL_TEST_RAY = <scene>:<ray>: judge that one ray of that one scene of the test, and print its
+ * verdict whether or not it agrees. */
+static struct {
+    bool active;
+    int scene, ray;
+    const char *text;
+} replay;
 
 /* One answer, for the message: "no hit", or the primitive, t, barycentrics and the triangle's size. */
 static int describe_answer(char *out, size_t len, const scene *s, const ray *r, bool found, const hit *h)
@@ -328,9 +339,16 @@ static int describe_answer(char *out, size_t len, const scene *s, const ray *r, 
 static char first_failure[1600];
 static int failures;
 
-/* Judges the rays of b over s against the linear scan, recording the first disagreement for
- * assert_agreed. $PL_TEST_RAY = i judges ray i alone and prints its verdict. */
-static void check_tree_against_oracle(const scene *s, const bvh *b, const char *name, oracle_checks checks)
+/* The next scene's number in the running test, or -1 when a replay of another scene skips it. */
+static int next_scene(void)
+{
+    int number = scenes_seen++;
+    return replay.active && number != replay.scene ? -1 : number;
+}
+
+/* Judges the rays of b over s (scene number scene_no of the running test) against the linear scan, recording
+ * the first disagreement for assert_agreed. A replay judges its one ray alone and prints its verdict. */
+static void check_tree_against_oracle(const scene *s, const bvh *b, const char *name, oracle_checks checks, int scene_no)
 {
     char *msg = first_failure;
     size_t msg_len = sizeof first_failure;
@@ -343,7 +361,7 @@ static void check_tree_against_oracle(const scene *s, const bvh *b, const char *
     src.wide.max = vec3_add(src.wide.max, grow);
     ray *rays = malloc((size_t)num_rays * sizeof *rays);
     verdict *verdicts = calloc((size_t)num_rays, sizeof *verdicts);
-    if (!rays || !verdicts) fail_msg("out of memory");
+    if (!rays || !verdicts) PL_FAIL("out of memory");
     for (int i = 0; i < num_rays; i++) rays[i] = next_ray(&src, i);
 
     /* A stub says so on the first ray, before thousands of linear scans. */
@@ -355,17 +373,22 @@ static void check_tree_against_oracle(const scene *s, const bvh *b, const char *
     }
 
     int begin = 0, end = num_rays;
-    const char *only = getenv("PL_TEST_RAY");
+    bool only = replay.active;
     if (only) {
-        begin = atoi(only);
-        if (begin < 0 || begin >= num_rays) fail_msg("PL_TEST_RAY=%s: %s has rays 0 .. %d", only, name, num_rays - 1);
+        begin = replay.ray;
+        if (begin >= num_rays) {
+            free(rays);
+            free(verdicts);
+            PL_FAIL("PL_TEST_RAY=%s: scene %d of %s (%s) has rays 0 .. %d", replay.text, scene_no, current_test, name,
+                    num_rays - 1);
+        }
         end = begin + 1;
     }
     oracle_job jobs[ORACLE_THREADS];
     pthread_t threads[ORACLE_THREADS];
     for (int k = 0; k < ORACLE_THREADS; k++) {
         jobs[k] = (oracle_job){s, b, rays, verdicts, checks, begin + k, end, ORACLE_THREADS};
-        if (k > 0 && pthread_create(&threads[k], NULL, oracle_worker, &jobs[k]) != 0) fail_msg("pthread_create failed");
+        if (k > 0 && pthread_create(&threads[k], NULL, oracle_worker, &jobs[k]) != 0) PL_FAIL("pthread_create failed");
     }
     oracle_worker(&jobs[0]);
     for (int k = 1; k < ORACLE_THREADS; k++) pthread_join(threads[k], NULL);
@@ -375,8 +398,8 @@ static void check_tree_against_oracle(const scene *s, const bvh *b, const char *
         ties += verdicts[i].tie;
         if (verdicts[i].why && wrong++ == 0) first = i;
     }
-    print_message("      %s: %d primitives, %d rays (seed %llu), %d ties or grazes\n", name, prims, end - begin,
-                  (unsigned long long)seed, ties);
+    print_message("      scene %d, %s: %d primitives, %d rays (seed %llu), %d ties or grazes\n", scene_no, name, prims,
+                  end - begin, (unsigned long long)seed, ties);
     int at = only ? begin : first;
     if (failures > 0 && !only) at = -1;  /* keep the test's first disagreement */
     failures += wrong;
@@ -386,42 +409,65 @@ static void check_tree_against_oracle(const scene *s, const bvh *b, const char *
         char lin[320], bv[320];
         describe_answer(lin, sizeof lin, s, r, v->linear_found, &v->linear);
         describe_answer(bv, sizeof bv, s, r, v->bvh_found, &v->bvh);
-        snprintf(msg, msg_len,
-                 "%s: %d of %d rays disagree with the linear scan; ray %d (o = (%.9g, %.9g, %.9g), d = (%.9g, %.9g, "
-                 "%.9g), t in [%g, %g]): %s\n  linear scan: %s\n  BVH:         %s\n  replay this ray: PL_TEST_SEED=%llu "
-                 "PL_TEST_RAY=%d make test-part2 FILTER=%s",
-                 name, wrong, end - begin, at, r->o.x, r->o.y, r->o.z, r->d.x, r->d.y, r->d.z, r->min_t, r->max_t,
-                 v->why ? v->why : "agree", lin, bv, (unsigned long long)(seed ^ ORACLE_SEED), at, current_test);
-        if (only) print_message("%s\n", msg);
+        int head = only ? snprintf(msg, msg_len, "replayed scene %d (%s), ray %d", scene_no, name, at)
+                        : snprintf(msg, msg_len, "scene %d (%s): %d of %d rays disagree with the linear scan; ray %d",
+                                   scene_no, name, wrong, end - begin, at);
+        snprintf(msg + head, msg_len - (size_t)head,
+                 " (o = (%.9g, %.9g, %.9g), d = (%.9g, %.9g, %.9g), t in [%g, %g]): %s\n  linear scan: %s\n"
+                 "  BVH:         %s\n  replay this ray: PL_TEST_SEED=%llu PL_TEST_RAY=%d:%d make test-part2 FILTER=%s",
+                 r->o.x, r->o.y, r->o.z, r->d.x, r->d.y, r->d.z, r->min_t, r->max_t,
+                 v->why ? v->why : "the BVH agrees with the linear scan", lin, bv,
+                 (unsigned long long)(seed ^ ORACLE_SEED), scene_no, at, current_test);
+        if (only && !v->why) print_message("%s\n", msg);  /* a disagreement prints as the test fails */
     }
     free(rays);
     free(verdicts);
 }
 
-/* Starts a test: names it for the replay command and forgets the last test's disagreements. */
+/* Starts a test: names it for the replay command, forgets the last test's disagreements and reads
+ * $PL_TEST_RAY. */
 static void oracle_begin(const char *test)
 {
     current_test = test;
+    scenes_seen = 0;
     failures = 0;
     first_failure[0] = '\0';
+    const char *text = getenv("PL_TEST_RAY");
+    replay.active = text && *text;
+    replay.text = text;
+    if (!replay.active) return;
+    char *end;
+    long scene_no = strtol(text, &end, 10), ray_no = -1;
+    if (end != text && *end == ':') ray_no = strtol(end + 1, &end, 10);
+    if (*end != '\0' || scene_no < 0 || ray_no < 0 || scene_no > INT_MAX || ray_no > INT_MAX)
+        PL_FAIL("PL_TEST_RAY=%s: give <scene>:<ray> (e.g. PL_TEST_RAY=0:25), as a failure's replay command does",
+                text);
+    replay.scene = (int)scene_no;
+    replay.ray = (int)ray_no;
 }
+#define oracle_begin(...) PL_AT(oracle_begin(__VA_ARGS__))  /* failures name the calling test's line */
 
-/* Fails the test, at its own line, when any ray it judged disagreed. */
-#define assert_agreed()                                   \
-    do {                                                  \
-        if (failures > 0) fail_msg("%s", first_failure);  \
+/* Fails the test, at its own line, when any ray it judged disagreed (or a replay named no scene of it). */
+#define assert_agreed()                                                                                    \
+    do {                                                                                                   \
+        if (replay.active && replay.scene >= scenes_seen)                                                  \
+            fail_msg("PL_TEST_RAY=%s: %s judges scenes 0 .. %d", replay.text, current_test, scenes_seen - 1); \
+        if (failures > 0) fail_msg("%s", first_failure);                                                   \
     } while (0)
 
 /* Both queries through the student's own tree. */
 static void check_scene_against_oracle(const scene *s, const char *name)
 {
+    int scene_no = next_scene();
+    if (scene_no < 0) return;  /* a replay of another scene */
     bvh b;
     pl_status st = bvh_build(&b, s, 4);
     assert_implemented();
-    if (st != PL_OK) fail_msg("%s: bvh_build returned %s", name, pl_status_name(st));
-    check_tree_against_oracle(s, &b, name, CHECK_BOTH);
+    if (st != PL_OK) PL_FAIL("%s: bvh_build returned %s", name, pl_status_name(st));
+    check_tree_against_oracle(s, &b, name, CHECK_BOTH, scene_no);
     bvh_free(&b);
 }
+#define check_scene_against_oracle(...) PL_AT(check_scene_against_oracle(__VA_ARGS__))  /* the calling test's line */
 
 /* The scenes several tests judge, made once for the group: a soup of 3000 and a bumpy sphere of
  * about 5000 triangles, each with a tree the tests build (fixture_build_median), so tasks 2.3 and
@@ -465,11 +511,14 @@ static void check_given_trees(oracle_checks checks)
 {
     const shared_scene *sc = shared_scenes();
     for (int i = 0; i < 2; i++) {
+        int scene_no = next_scene();
+        if (scene_no < 0) continue;  /* a replay of another scene */
         char name[96];
         snprintf(name, sizeof name, "%s, given tree", sc[i].name);
-        check_tree_against_oracle(&sc[i].s, &sc[i].given, name, checks);
+        check_tree_against_oracle(&sc[i].s, &sc[i].given, name, checks, scene_no);
     }
 }
+#define check_given_trees(...) PL_AT(check_given_trees(__VA_ARGS__))  /* failures name the calling test's line */
 
 static void test_bvh_intersect__matches_linear_scan_on_a_given_tree(void **state)
 {
@@ -493,7 +542,7 @@ static void check_scene_if_not_empty(const scene *s, const char *path)
 static void test_bvh_intersect__matches_linear_scan_on_shipped_scenes(void **state)
 {
     oracle_begin(__func__);
-    fixture_for_each_scene(check_scene_if_not_empty);
+    PL_AT(fixture_for_each_scene(check_scene_if_not_empty));  /* failures name this line */
     assert_agreed();
 }
 

@@ -2,6 +2,7 @@
 #include "../common/test.h"
 #include "../../parts/part2_bvh/part2.h"
 #include <math.h>
+#include <stdio.h>
 
 static const aabb UNIT_BOX = {{0.0f, 0.0f, 0.0f}, {1.0f, 1.0f, 1.0f}};
 
@@ -10,24 +11,38 @@ static ray ray_from(float ox, float oy, float oz, float dx, float dy, float dz)
     return ray_make(vec3_make(ox, oy, oz), vec3_make(dx, dy, dz), 0.0f, INFINITY);
 }
 
+/* The query, for a message: "aabb_intersect(box [(0, 0, 0), (1, 1, 1)], ray o = (...), d = (...), t in [0, inf])". */
+static void describe_query(char *out, size_t len, const aabb *b, const ray *r)
+{
+    snprintf(out, len, "aabb_intersect(box [(%g, %g, %g), (%g, %g, %g)], ray o = (%g, %g, %g), d = (%g, %g, %g), "
+             "t in [%g, %g])", b->min.x, b->min.y, b->min.z, b->max.x, b->max.y, b->max.z, r->o.x, r->o.y, r->o.z,
+             r->d.x, r->d.y, r->d.z, r->min_t, r->max_t);
+}
+
 /* Expects a hit with exactly [t_enter, t_exit] (every case here is exact in float). */
 static void expect_hit(const aabb *b, ray r, float t_enter, float t_exit)
 {
     float t0 = NAN, t1 = NAN;
+    char query[256];
+    describe_query(query, sizeof query, b, &r);
     bool is_hit = aabb_intersect(b, &r, &t0, &t1);
     assert_implemented();
-    if (!is_hit) fail_msg("expected a hit with [%g, %g], got a miss", t_enter, t_exit);
+    if (!is_hit) PL_FAIL("wrong: %s: expected a hit with [t_enter, t_exit] = [%g, %g], got a miss", query, t_enter, t_exit);
     if (!(t0 == t_enter && t1 == t_exit))
-        fail_msg("expected [t_enter, t_exit] = [%g, %g], got [%g, %g]", t_enter, t_exit, t0, t1);
+        PL_FAIL("wrong: %s: expected [t_enter, t_exit] = [%g, %g], got [%g, %g]", query, t_enter, t_exit, t0, t1);
 }
+#define expect_hit(...) PL_AT(expect_hit(__VA_ARGS__))  /* failures name the calling test's line */
 
 static void expect_miss(const aabb *b, ray r)
 {
     float t0 = NAN, t1 = NAN;
+    char query[256];
+    describe_query(query, sizeof query, b, &r);
     bool is_hit = aabb_intersect(b, &r, &t0, &t1);
     assert_implemented();
-    if (is_hit) fail_msg("expected a miss, got a hit with [%g, %g]", t0, t1);
+    if (is_hit) PL_FAIL("wrong: %s: expected a miss, got a hit with [t_enter, t_exit] = [%g, %g]", query, t0, t1);
 }
+#define expect_miss(...) PL_AT(expect_miss(__VA_ARGS__))  /* failures name the calling test's line */
 
 static void test_aabb_intersect__ray_through_box_enters_and_leaves(void **state)
 {
