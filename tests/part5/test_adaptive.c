@@ -11,20 +11,18 @@
  *   red channel, the max channel, the standard deviation instead of the standard error...) stops
  *   at other counts and fails;
  * - with tolerance 0 every striped pixel takes all spp samples and the image is the fixed-rate one.
- * alpha: family-wise 1e-3 over this suite, split by Sidak over CHECKS statistical checks.
- * Seeds fixed and printed. */
+ * alpha: two statistical checks, each at PART5_CHECK_ALPHA (family alpha and budget:
+ * part5_alpha.h). Seeds fixed, printed, and changed by PL_TEST_SEED (mc_seed). */
 #include <stdio.h>
 #include <stdlib.h>
 #include "../common/test.h"
 #include "../common/stats.h"
 #include "../common/mc_assert.h"
 #include "../common/tiny_scenes.h"
+#include "part5_alpha.h"
 #include "../../parts/part5_adaptive/part5.h"
 #include "../../framework/render.h"
 
-#define FAMILY_ALPHA 1e-3
-#define CHECKS 4
-#define CHECK_ALPHA stats_sidak(FAMILY_ALPHA, CHECKS)
 #define SEED mc_seed(0x5eed5001ull)
 
 #define W 32
@@ -222,11 +220,12 @@ static void test_adaptive__noisy_pixels_stop_where_the_luminance_rule_says(void 
     double p = erfc(fabs(z) / sqrt(2.0));
     print_message("striped pixels: mean count %.2f, the luminance rule gives %.2f +- %.2f\n", acc.mean, mean,
                   sqrt(var / (double)acc.n));
-    if (p < CHECK_ALPHA)
+    double alpha = PART5_CHECK_ALPHA;
+    if (p < alpha)
         print_error("striped pixels took %.2f samples on average; the rule on luminance gives %.2f +- %.2f "
                     "(z = %.1f, p = %.3g < %.3g). Test I = 1.96 sqrt(var / n) <= T mean on the luminance "
-                    "of each sample (part5.h).\n", acc.mean, mean, sqrt(var / (double)acc.n), z, p, CHECK_ALPHA);
-    assert_true(p >= CHECK_ALPHA);
+                    "of each sample (part5.h).\n", acc.mean, mean, sqrt(var / (double)acc.n), z, p, alpha);
+    assert_true(p >= alpha);
     assert_true(acc.mean > BATCH);  /* noisy pixels take more than the first batch */
 }
 
@@ -239,7 +238,7 @@ static void test_adaptive__zero_tolerance_is_the_fixed_rate_estimate(void **stat
     /* Each pixel: a mean of 64 samples of a fair coin in red and green, so sd 0.0625 per channel,
      * and two independent such means (if the two draw their numbers differently) differ by
      * 0.088 sd. The bound is the Sidak-corrected normal quantile over the pixels. */
-    double alpha_pixel = stats_sidak(CHECK_ALPHA, W * H / 2);
+    double alpha_pixel = stats_sidak(PART5_CHECK_ALPHA, W * H / 2);  /* one check, split over the pixels */
     double zcrit = stats_t_quantile2(alpha_pixel, 1e9);
     double tol = zcrit * 0.5 * sqrt(2.0 / 64.0);
     for (int y = 0; y < H; y++)
