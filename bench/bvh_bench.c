@@ -16,6 +16,7 @@
 #include <string.h>
 #include <time.h>
 #include "../framework/accel.h"
+#include "../framework/counters.h"
 #include "../parts/part2_bvh/part2.h"
 #include "../framework/dae.h"
 #include "../framework/frame.h"
@@ -303,9 +304,9 @@ static int bench_scene(const char *name, int runs)
     for (int k = 0; k < 3; k++) {
         for (int threads = 1; threads <= MAX_THREADS; threads++) {
             long hits = 0;
-            bvh_take_visits();
+            (void)counters_take();
             double ours = mrays_per_second(trace_pathlab, &a, kind_rays[k], kind_count[k], kind_query[k], threads, runs, &hits);
-            double visits = threads == 1 ? (double)bvh_take_visits() / ((double)runs * kind_count[k]) : 0.0;
+            double visits = threads == 1 ? (double)counters_take().node_visits / ((double)runs * kind_count[k]) : 0.0;
 #ifdef PL_HAVE_EMBREE
             long ehits = 0;
             double theirs = mrays_per_second(trace_embree, &e, kind_rays[k], kind_count[k], kind_query[k], threads, runs, &ehits);

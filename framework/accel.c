@@ -1,20 +1,11 @@
 /* Ray-scene queries: part 2's BVH when implemented, the linear scan otherwise. */
 #include "accel.h"
 #include "../parts/part2_bvh/part2.h"  /* a call site: framework/parts.h */
+#include "counters.h"
 #include "todo.h"
 #include <stdlib.h>
 #include <string.h>
 #include <time.h>
-
-/* Per-thread ray counter: no atomics on the hot path; the render loop collects it per worker. */
-static _Thread_local uint64_t rays_traced;
-
-uint64_t accel_take_ray_count(void)
-{
-    uint64_t n = rays_traced;
-    rays_traced = 0;
-    return n;
-}
 
 static double now_seconds(void)
 {
@@ -64,13 +55,13 @@ void accel_free(accel *a)
 
 bool accel_intersect(const accel *a, ray *r, hit *h)
 {
-    rays_traced++;
+    counters_add_ray();
     return a->use_bvh ? bvh_intersect(&a->bvh, a->scene, r, h) : linear_intersect(a->scene, r, h);
 }
 
 bool accel_occluded(const accel *a, const ray *r)
 {
-    rays_traced++;
+    counters_add_ray();
     return a->use_bvh ? bvh_occluded(&a->bvh, a->scene, r) : linear_occluded(a->scene, r);
 }
 

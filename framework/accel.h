@@ -4,7 +4,6 @@
 #define PL_ACCEL_H
 
 #include <stdbool.h>
-#include <stdint.h>
 #include "scene.h"
 #include "status.h"
 #include "bvh.h"
@@ -38,7 +37,6 @@ bool linear_occluded(const scene *s, const ray *r);
 typedef bvh_shape accel_shape;
 accel_shape accel_bvh_shape(const accel *a);
 
-/* Rays traced by accel_intersect / accel_occluded on the calling thread since its last call. */
-uint64_t accel_take_ray_count(void);
+/* accel_intersect and accel_occluded each count one ray (counters.h, framework-internal). */
 
 #endif

@@ -1,6 +1,7 @@
 /* The BVH's storage, counters and validator: owned by the framework, so the tree can be freed,
  * counted and checked whatever state part 2 is in. */
 #include "bvh.h"
+#include "counters.h"
 #include <stdlib.h>
 #include <string.h>
 
@@ -12,15 +13,10 @@ void bvh_free(bvh *b)
     memset(b, 0, sizeof *b);
 }
 
-/* Per-thread visit counter: bvh_visit adds one per node handed out, so the hot path pays one
- * thread-local add per box and no atomics. */
-_Thread_local uint64_t bvh_node_visits;
-
-uint64_t bvh_take_visits(void)
+const bvh_node *bvh_visit(const bvh *b, int index)
 {
-    uint64_t n = bvh_node_visits;
-    bvh_node_visits = 0;
-    return n;
+    counters_add_visit(index);
+    return &b->nodes[index];
 }
 
 /* ---- Validation ------------------------------------------------------------------------------ */

@@ -8,13 +8,13 @@
  * - Primitives are the scene's (scene.h: triangles, then spheres) and are tested only through
  *   scene_prim_intersect, so a hit found through the BVH is exactly the hit the linear scan finds.
  * - No tree is deeper than BVH_MAX_DEPTH, so a traversal can keep its to-do list in a fixed array.
- * - A traversal reads every node it tests through bvh_visit: that is where the framework counts
- *   node visits for the heat map and the complexity test (a traversal never reports its own). */
+ * - A traversal reads every node it enters through bvh_visit: that is where the framework counts
+ *   node visits (counters.h) for the heat map, the sidecar and the complexity test; a traversal
+ *   never reports its own. */
 #ifndef PL_BVH_H
 #define PL_BVH_H
 
 #include <stdbool.h>
-#include <stdint.h>
 #include "aabb.h"
 #include "scene.h"
 #include "status.h"
@@ -41,17 +41,12 @@ void bvh_free(bvh *b);
 
 /* ---- Counted access ------------------------------------------------------------------------ */
 
-/* Node `index` of b, counted as one node visit (one box about to be tested) on the calling
- * thread. index must be valid: bvh_validate has checked every index a traversal can reach. */
-static inline const bvh_node *bvh_visit(const bvh *b, int index)
-{
-    extern _Thread_local uint64_t bvh_node_visits;
-    bvh_node_visits++;
-    return &b->nodes[index];
-}
-
-/* Nodes handed out by bvh_visit on the calling thread since the last call; resets the count. */
-uint64_t bvh_take_visits(void);
+/* Node `index` of b, counted as one node visit on the calling thread. A traversal reads every
+ * node it enters (tests the box of, or reads the children or primitives of) through bvh_visit,
+ * the root included, and never reads b->nodes directly: the framework counts visits here for the
+ * heat map, the sidecar and the complexity test, and a traversal has no way to report or reset
+ * its own. index must be valid: bvh_validate has checked every index a traversal can reach. */
+const bvh_node *bvh_visit(const bvh *b, int index);
 
 /* ---- The one validator ----------------------------------------------------------------------- */
 

@@ -2,6 +2,7 @@
  * legend strip underneath. A good tree is dark blue almost everywhere; red patches show where
  * rays wade through many boxes (long thin triangles, overlapping leaves, a poor split). */
 #include "heatmap.h"
+#include "counters.h"
 #include "render.h"
 #include "colormap.h"
 #include "../parts/part1_raygen/part1.h"  /* call sites: framework/parts.h */
@@ -75,13 +76,13 @@ pl_status render_heatmap(const struct render_ctx *ctx, const char *path, pl_diag
 
     /* One ray through each pixel centre; pixel (x, y) counts from the bottom, rows from the top. */
     unsigned most = 0;
-    bvh_take_visits();
+    (void)counters_take();
     for (int y = 0; y < h; y++) {
         for (int x = 0; x < w; x++) {
             ray r = camera_generate_ray(&ctx->camera, (x + 0.5f) / w, (y + 0.5f) / h);
             hit hi;
             bvh_intersect(&ctx->accel->bvh, ctx->scene, &r, &hi);
-            uint64_t n = bvh_take_visits();
+            uint64_t n = counters_take().node_visits;
             unsigned v = n > UINT32_MAX ? UINT32_MAX : (unsigned)n;
             visits[(size_t)(h - 1 - y) * w + x] = v;
             if (v > most) most = v;
@@ -91,7 +92,7 @@ pl_status render_heatmap(const struct render_ctx *ctx, const char *path, pl_diag
         free(visits);
         free(rgb8);
         return pl_fail(diag, PL_ERR_INVALID,
-                       "%s: bvh_intersect visited no nodes: it must read the nodes it tests through bvh_visit (bvh.h)", path);
+                       "%s: bvh_intersect visited no nodes: call bvh_visit for every node you enter (task 2.3)", path);
     }
 
     /* One scale for every scene and every BVH, so two heat maps compare colour for colour (a

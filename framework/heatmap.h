@@ -1,11 +1,9 @@
 /* BVH heat map: a picture of how many BVH nodes each camera ray visits, read from the framework's
- * node-visit counter (bvh_visit, bvh_take_visits: bvh.h). */
+ * node-visit counter (counted in bvh_visit: counters.h). */
 #ifndef PL_HEATMAP_H
 #define PL_HEATMAP_H
 
-#include <stdint.h>
 #include "status.h"
-#include "bvh.h"  /* bvh_take_visits */
 
 struct render_ctx;
 

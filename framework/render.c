@@ -1,5 +1,6 @@
 /* The render: estimator dispatch and the tiled, multi-threaded pixel loop. */
 #include "render.h"
+#include "counters.h"
 #include "../parts/part1_raygen/part1.h"  /* call sites: framework/parts.h */
 #include "../parts/part3_direct/part3.h"
 #include "../parts/part4_global/part4.h"
@@ -86,7 +87,7 @@ typedef struct {
     int tiles_x, tiles_total;
     atomic_int next_tile;   /* tiles are handed out in order; any thread may take any tile */
     atomic_int tiles_done;
-    atomic_uint_fast64_t rays, camera_samples;
+    atomic_uint_fast64_t rays, node_visits, prim_tests, camera_samples;
     atomic_int bad_pixels;
     atomic_int first_bad;   /* image index of the lowest bad pixel, INT32_MAX if none */
 } render_job;
@@ -122,14 +123,17 @@ static void render_tile(render_job *job, int tile)
 static void *render_worker(void *arg)
 {
     render_job *job = arg;
-    accel_take_ray_count();  /* start this thread's count from zero */
+    (void)counters_take();  /* start this thread's counts from zero */
     for (;;) {
         int tile = atomic_fetch_add(&job->next_tile, 1);
         if (tile >= job->tiles_total) break;
         render_tile(job, tile);
         atomic_fetch_add(&job->tiles_done, 1);
     }
-    atomic_fetch_add(&job->rays, accel_take_ray_count());
+    work_counts work = counters_take();
+    atomic_fetch_add(&job->rays, work.rays);
+    atomic_fetch_add(&job->node_visits, work.node_visits);
+    atomic_fetch_add(&job->prim_tests, work.prim_tests);
     return NULL;
 }
 
@@ -149,6 +153,8 @@ static pl_status render_run(render_job job, render_stats *stats, pl_diag *diag)
     atomic_init(&job.next_tile, 0);
     atomic_init(&job.tiles_done, 0);
     atomic_init(&job.rays, 0);
+    atomic_init(&job.node_visits, 0);
+    atomic_init(&job.prim_tests, 0);
     atomic_init(&job.camera_samples, 0);
     atomic_init(&job.bad_pixels, 0);
     atomic_init(&job.first_bad, INT32_MAX);
@@ -176,6 +182,8 @@ static pl_status render_run(render_job job, render_stats *stats, pl_diag *diag)
         memset(stats, 0, sizeof *stats);
         stats->seconds = now_seconds() - t0;
         stats->rays = atomic_load(&job.rays);
+        stats->node_visits = atomic_load(&job.node_visits);
+        stats->prim_tests = atomic_load(&job.prim_tests);
         stats->samples = atomic_load(&job.camera_samples);
         stats->bad_pixels = atomic_load(&job.bad_pixels);
         int first = atomic_load(&job.first_bad);

@@ -52,6 +52,8 @@ rgb one_bounce_radiance(const render_ctx *ctx, const ray *r, const hit *h, rng *
 typedef struct {
     double seconds;         /* wall time of the pixel loop */
     uint64_t rays;          /* rays traced (camera, bounce, shadow) */
+    uint64_t node_visits;   /* BVH nodes handed out by bvh_visit (0 for the linear scan) */
+    uint64_t prim_tests;    /* primitive tests through scene_prim_intersect */
     uint64_t samples;       /* camera samples taken, all pixels */
     int bad_pixels;         /* pixels with a NaN, Inf, negative or huge sample (film.h) */
     int first_bad_x, first_bad_y;

@@ -1,6 +1,7 @@
 /* The scene container: growable arrays and primitive numbering. */
 #include "scene.h"
 #include "buf.h"
+#include "counters.h"
 #include "../parts/part1_raygen/part1.h"  /* call sites: framework/parts.h */
 #include <stdlib.h>
 #include <string.h>
@@ -71,19 +72,9 @@ aabb scene_bounds(const scene *s)
     return b;
 }
 
-/* Per-thread count of primitive tests: one thread-local add per test, no atomics. */
-static _Thread_local uint64_t prim_tests;
-
-uint64_t scene_take_prim_tests(void)
-{
-    uint64_t n = prim_tests;
-    prim_tests = 0;
-    return n;
-}
-
 bool scene_prim_intersect(const scene *s, int prim, ray *r, hit *h)
 {
-    prim_tests++;
+    counters_add_prim(prim);
     bool found;
     int mat;
     if (prim < s->num_triangles) {

@@ -85,12 +85,9 @@ aabb scene_bounds(const scene *s);
 
 /* Intersects one primitive through part 1's triangle_intersect / sphere_intersect, setting
  * h->prim and h->material on a hit. Shrinks r->max_t on a hit, like them. Every call counts as one
- * primitive test on the calling thread: the framework's count, which a traversal cannot report
- * for itself (the complexity test and the benchmark read it). */
+ * primitive test on the calling thread: the framework's count (counters.h), which a traversal
+ * cannot report for itself. Traversals test primitives only through this function. */
 bool scene_prim_intersect(const scene *s, int prim, ray *r, hit *h);
-
-/* Primitive tests made by scene_prim_intersect on the calling thread since the last call; resets. */
-uint64_t scene_take_prim_tests(void);
 
 /* Appending, for loaders and tests. Each returns the new element's index, or -1 without memory. */
 int scene_add_material(scene *s, material m);

@@ -49,7 +49,7 @@ pl_status sidecar_encode(FILE *f, const void *user, pl_diag *diag)
         "{s:s, s:o, s:o, s:o, s:I, s:i, s:i,"
         " s:{s:i, s:i, s:i, s:b, s:b, s:b, s:i, s:f, s:b, s:b, s:i},"
         " s:{s:i, s:i, s:i, s:i}, s:{s:s, s:i, s:i, s:i}, s:{s:f, s:f, s:f},"
-        " s:I, s:f, s:I, s:f, s:i}",
+        " s:I, s:I, s:I, s:f, s:I, s:f, s:i}",
         "program", "pathlab", "version", string_lossy(PL_VERSION), "command_line", string_lossy(o->command_line),
         "scene", string_lossy(o->scene_path), "seed", (json_int_t)o->seed, "width", ctx->width, "height", ctx->height,
         "options", "spp", o->spp, "light_samples", o->light_samples, "max_depth", o->max_depth, "accumulate",
@@ -61,7 +61,8 @@ pl_status sidecar_encode(FILE *f, const void *user, pl_diag *diag)
         "accel", "kind", ctx->accel->use_bvh ? "bvh" : "linear", "nodes", shape.nodes, "leaves", shape.leaves,
         "depth", shape.depth,
         "timings_seconds", "load", info->load_seconds, "build", info->build_seconds, "render", r->seconds,
-        "rays_traced", (json_int_t)r->rays, "million_rays_per_second", mrays, "camera_samples", (json_int_t)r->samples,
+        "rays_traced", (json_int_t)r->rays, "node_visits", (json_int_t)r->node_visits,
+        "primitive_tests", (json_int_t)r->prim_tests, "million_rays_per_second", mrays, "camera_samples", (json_int_t)r->samples,
         "mean_samples_per_pixel", (double)r->samples / ((double)ctx->width * ctx->height), "bad_pixels", r->bad_pixels);
     if (root && info->samples_per_pixel) {
         json_t *rows = json_array();

@@ -12,9 +12,10 @@ typedef struct {
     const int *samples_per_pixel;                       /* per pixel, top row first; NULL to omit */
 } sidecar_info;
 
-/* Writes the command line, seed, resolution, samples, timings, rays, the BVH's shape and the code
- * version (and, with samples_per_pixel, the per-pixel counts as rows) as JSON to f. user is a
- * sidecar_info (an output_encode_fn). */
+/* Writes the command line, seed, resolution, samples, timings, the work the framework counted (rays
+ * traced, BVH node visits, primitive tests: counters.h), the BVH's shape and the code version (and,
+ * with samples_per_pixel, the per-pixel counts as rows) as JSON to f. user is a sidecar_info (an
+ * output_encode_fn). */
 pl_status sidecar_encode(FILE *f, const void *user, pl_diag *diag);
 
 #endif

@@ -328,11 +328,12 @@ static bool bvh_traverse(const bvh *b, const scene *s, ray *r, hit *h, bool stop
 
     /* Nodes still to visit, with the t where the ray enters each. Nearest first pushes at most one
      * pending sibling per level, so depth + 1 entries suffice. */
-    struct { int node; float t_enter; } todo[BVH_MAX_DEPTH + 1];
+    struct { const bvh_node *node; float t_enter; } todo[BVH_MAX_DEPTH + 1];
     int num_todo = 0;
     float t_root;
-    if (node_hit(bvh_visit(b, 0), &sr, r->min_t, r->max_t, &t_root)) {
-        todo[0].node = 0;
+    const bvh_node *root = bvh_visit(b, 0);
+    if (node_hit(root, &sr, r->min_t, r->max_t, &t_root)) {
+        todo[0].node = root;
         todo[0].t_enter = t_root;
         num_todo = 1;
     }
@@ -342,8 +343,8 @@ static bool bvh_traverse(const bvh *b, const scene *s, ray *r, hit *h, bool stop
         num_todo--;
         /* Early exit: a hit found since this node was pushed may now lie before its box. */
         if (todo[num_todo].t_enter > r->max_t) continue;
-        /* Its box was tested when it was pushed; reading its fields is not a new visit. */
-        const bvh_node *node = &b->nodes[todo[num_todo].node];
+        /* Its box was tested, and its visit counted, when it was pushed. */
+        const bvh_node *node = todo[num_todo].node;
 
         if (node->count > 0) {
             for (int i = 0; i < node->count && !(found && stop_at_first); i++)
@@ -352,12 +353,12 @@ static bool bvh_traverse(const bvh *b, const scene *s, ray *r, hit *h, bool stop
         }
 
         /* Visit the nearer child first: its hits shrink max_t, which may rule out the other. */
-        int near = node->first, far = node->first + 1;
+        const bvh_node *near = bvh_visit(b, node->first), *far = bvh_visit(b, node->first + 1);
         float t_near, t_far;
-        bool hit_near = node_hit(bvh_visit(b, near), &sr, r->min_t, r->max_t, &t_near);
-        bool hit_far = node_hit(bvh_visit(b, far), &sr, r->min_t, r->max_t, &t_far);
+        bool hit_near = node_hit(near, &sr, r->min_t, r->max_t, &t_near);
+        bool hit_far = node_hit(far, &sr, r->min_t, r->max_t, &t_far);
         if (hit_near && hit_far && t_far < t_near) {
-            int swap_node = near; near = far; far = swap_node;
+            const bvh_node *swap_node = near; near = far; far = swap_node;
             float swap_t = t_near; t_near = t_far; t_far = swap_t;
             bool swap_hit = hit_near; hit_near = hit_far; hit_far = swap_hit;
         }
@@ -378,9 +379,10 @@ static bool bvh_traverse(const bvh *b, const scene *s, ray *r, hit *h, bool stop
  * Closest hit through the BVH (handout/part2.md, 2.3).
  * In:  b (built by bvh_build over s), s, r.   Out: *h, r->max_t (only on a hit).
  * Must: the same hit as linear_intersect (same t and primitive; either one on an exact tie);
- *       visit the nearer child first and skip boxes entered beyond r->max_t; test primitives only
- *       through scene_prim_intersect; read each node whose box you test through bvh_visit (the
- *       framework counts visits there for the heat map and the complexity test).
+ *       visit the nearer child first and skip boxes entered beyond r->max_t; call bvh_visit for
+ *       every node you enter (the root and each child whose box you test; never b->nodes[i]) and
+ *       scene_prim_intersect for every primitive you test (never triangle_intersect): the
+ *       framework counts both, and the tests check each ray's counts against its hit.
  * Test: make test-part2
  * =================================================================================== */
 bool bvh_intersect(const bvh *b, const scene *s, ray *r, hit *h)
@@ -395,7 +397,7 @@ bool bvh_intersect(const bvh *b, const scene *s, ray *r, hit *h)
  * Any hit through the BVH, for shadow rays (handout/part2.md, 2.4).
  * In:  b (built by bvh_build over s), s, r (read-only).   Out: true when anything is hit.
  * Must: the same answer as linear_occluded; return at the first hit found; leave *r unchanged;
- *       nodes through bvh_visit and primitives through scene_prim_intersect, as in 2.3.
+ *       bvh_visit for every node you enter, scene_prim_intersect for every primitive you test.
  * Test: make test-part2
  * =================================================================================== */
 bool bvh_occluded(const bvh *b, const scene *s, const ray *r)

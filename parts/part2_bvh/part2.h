@@ -31,8 +31,10 @@ pl_status bvh_build(bvh *out, const scene *s, int max_leaf_size);
 bool bvh_intersect(const bvh *b, const scene *s, ray *r, hit *h);
 
 /* TASK 2.4: any hit in [r->min_t, r->max_t] (shadow rays), as linear_occluded would answer.
- * Both traversals read each node whose box they test through bvh_visit (framework/bvh.h), and
- * test primitives only through scene_prim_intersect: the framework counts both. */
+ * Both traversals call bvh_visit (framework/bvh.h) for every node they enter (the root and each
+ * child whose box they test; never b->nodes[i] directly) and scene_prim_intersect for every
+ * primitive they test (never triangle_intersect directly): the framework counts both, and the
+ * tests check each ray's counts against its answer. */
 bool bvh_occluded(const bvh *b, const scene *s, const ray *r);
 
 #endif

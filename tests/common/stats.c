@@ -218,3 +218,12 @@ stats_result stats_chi2_test(const double *observed, const double *expected, int
     r.reject = r.p < alpha;
     return r;
 }
+
+double stats_binomial_p2(long k, long n, double p)
+{
+    /* The tails through the incomplete beta: P(X <= k) = I_{1-p}(n - k, k + 1), P(X >= k) = I_p(k, n - k + 1). */
+    double lower = k >= n ? 1.0 : stats_beta_inc((double)(n - k), (double)k + 1.0, 1.0 - p);
+    double upper = k <= 0 ? 1.0 : stats_beta_inc((double)k, (double)(n - k) + 1.0, p);
+    double two = 2.0 * (lower < upper ? lower : upper);
+    return two < 1.0 ? two : 1.0;
+}

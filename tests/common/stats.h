@@ -47,5 +47,9 @@ stats_result stats_ttest_two(const stats_acc *a, const stats_acc *b, double alph
  * (smallest first) until each pooled bin reaches it; dof = bins after pooling - 1. */
 stats_result stats_chi2_test(const double *observed, const double *expected, int bins,
                              double min_expected, double alpha);
+/* Exact two-sided binomial test: the p-value of k successes in n trials of probability p, twice the
+ * smaller tail (P(X <= k), P(X >= k)), at most 1. Rejecting when it is below alpha fails a correct
+ * proportion with probability at most alpha, at any n (no normal approximation). */
+double stats_binomial_p2(long k, long n, double p);
 
 #endif

@@ -31,6 +31,17 @@ static void test_stats_beta_inc__matches_closed_forms(void **state)
     PL_CHECK_NEAR(1.0, stats_beta_inc(2.0, 3.0, 1.0), 0.0);
 }
 
+static void test_stats_binomial_p2__matches_exact_sums(void **state)
+{
+    /* Twice the smaller tail, summed exactly in rational arithmetic (Python fractions). */
+    PL_CHECK_NEAR(0.34375, stats_binomial_p2(3, 10, 0.5), 1e-12);
+    PL_CHECK_NEAR(0.001953125, stats_binomial_p2(0, 10, 0.5), 1e-12);
+    PL_CHECK_NEAR(0.001953125, stats_binomial_p2(10, 10, 0.5), 1e-12);
+    PL_CHECK_NEAR(0.007560310459460499, stats_binomial_p2(950, 4096, 0.25), 1e-10);
+    PL_CHECK_NEAR(0.0006379692244483967, stats_binomial_p2(1120, 4096, 0.25), 1e-11);
+    PL_CHECK_NEAR(1.0, stats_binomial_p2(1024, 4096, 0.25), 0.0);
+}
+
 static void test_stats_chi2_sf__matches_the_table(void **state)
 {
     (void)state;
@@ -62,6 +73,7 @@ int stats_tests(void)
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(test_stats_gamma_p__matches_closed_forms),
         cmocka_unit_test(test_stats_beta_inc__matches_closed_forms),
+        cmocka_unit_test(test_stats_binomial_p2__matches_exact_sums),
         cmocka_unit_test(test_stats_chi2_sf__matches_the_table),
         cmocka_unit_test(test_stats_t__quantiles_match_the_table),
         cmocka_unit_test(test_stats_sidak__keeps_the_family_rate),

@@ -3,9 +3,14 @@
  * loop with it (coverage of the pixel), and a whole normal-shaded render against an independent
  * oracle.
  *
- * Statistics: the coverage tests are binomial proportions checked with a two-sided z-test at
- * ALPHA = 1e-4 each (three tests: Sidak over the suite gives 3e-4 < 1e-3). Seeds are fixed (SEED). */
+ * Statistics: each coverage test counts the covered samples and checks the proportion with an
+ * exact two-sided binomial test (stats_binomial_p2) at the suite's per-check level
+ * PART1_CHECK_ALPHA (family alpha and budget: part1_alpha.h). Seeds are fixed, printed, and
+ * changed by PL_TEST_SEED (mc_seed). */
 #include "../common/test.h"
+#include "../common/mc_assert.h"
+#include "../common/stats.h"
+#include "part1_alpha.h"
 #include "../../parts/part1_raygen/part1.h"
 #include "../../framework/render.h"
 #include <math.h>
@@ -13,9 +18,8 @@
 #include <string.h>
 #include <sys/stat.h>
 
-#define ALPHA 1e-4
-#define Z_CRIT 3.8906  /* two-sided standard normal quantile for ALPHA */
-#define SEED 20261121u
+/* The fixed seed of the coverage tests, XORed with PL_TEST_SEED; each test adds its own offset. */
+#define SEED_BASE 20261121u
 
 /* A 1x1-pixel film looking down -Z with a 90-degree fov: film x in [0,1] maps to the plane
  * z = -1 at x in [-1, 1]. A quad on that plane covers x in [x0, 10], y in [y0, 10]. */
@@ -34,7 +38,7 @@ static void build_edge_scene(scene *s, float x0, float y0)
 }
 
 /* Fraction of the pixel covered, estimated from the blue channel (normal (0,0,1) shades blue 1). */
-static double covered_fraction(float x0, float y0, int spp, int *taken)
+static double covered_fraction(float x0, float y0, int spp, uint64_t seed, int *taken)
 {
     scene s;
     build_edge_scene(&s, x0, y0);
@@ -45,7 +49,7 @@ static double covered_fraction(float x0, float y0, int spp, int *taken)
     o.width = o.height = 1;
     o.spp = spp;
     o.normals = true;
-    o.seed = SEED;
+    o.seed = seed;
     render_ctx ctx;
     render_ctx_init(&ctx, &s, &a, &o);
     film_pixel p = {0};
@@ -56,16 +60,20 @@ static double covered_fraction(float x0, float y0, int spp, int *taken)
     return film_pixel_mean(&p, 2);
 }
 
-static void expect_fraction(float x0, float y0, double expected, int spp)
+/* One statistical check: the covered samples of spp, against a binomial of the covered area. */
+static void expect_fraction(const char *name, uint64_t seed, float x0, float y0, double expected, int spp)
 {
+    mc_print_seed(name, seed);
     int taken = 0;
-    double got = covered_fraction(x0, y0, spp, &taken);
+    double got = covered_fraction(x0, y0, spp, seed, &taken);
     assert_implemented();
     if (taken != spp) fail_msg("the pixel loop took %d samples, expected %d (the -s value)", taken, spp);
-    double tolerance = Z_CRIT * sqrt(expected * (1 - expected) / spp);
-    if (!(fabs(got - expected) <= tolerance))
-        fail_msg("wrong: %d samples cover %.4f of the pixel, expected %.4f +- %.4f (alpha %g, seed %u): "
-                 "are samples spread uniformly over the whole pixel?", spp, got, expected, tolerance, ALPHA, SEED);
+    long covered = lround(got * spp);  /* each sample is blue 1 (covered) or 0 */
+    double alpha = PART1_CHECK_ALPHA, p = stats_binomial_p2(covered, spp, expected);
+    if (!(p >= alpha))
+        fail_msg("wrong: %ld of %d samples (%.4f) cover the pixel's area %.4f: p = %.3g < alpha %.3g (exact binomial "
+                 "test, seed 0x%llx): are samples spread uniformly over the whole pixel?", covered, spp, got, expected,
+                 p, alpha, (unsigned long long)seed);
 }
 
 /* ---- pixel_sample_ray alone: exact ---------------------------------------------------------- */
@@ -115,27 +123,28 @@ static void test_pixel_sample_ray__u_spans_the_pixel(void **state)
 static void test_pixel_loop__one_sample_goes_through_the_centre(void **state)
 {
     int taken = 0;
-    double hit_left = covered_fraction(-0.2f, -10, 1, &taken);  /* the centre (x = 0) is covered */
+    double hit_left = covered_fraction(-0.2f, -10, 1, SEED_BASE, &taken);  /* the centre (x = 0) is covered */
     assert_implemented();
     assert_int_equal(1, taken);
     assert_float_near(1.0, hit_left, 1e-6);
-    double miss = covered_fraction(0.2f, -10, 1, &taken);       /* the centre is not covered */
+    double miss = covered_fraction(0.2f, -10, 1, SEED_BASE, &taken);       /* the centre is not covered */
     assert_float_near(0.0, miss, 1e-6);
 }
 
 static void test_pixel_loop__samples_cover_the_pixel_uniformly_in_x(void **state)
 {
-    expect_fraction(0.2f, -10, 0.4, 4096);  /* x in [0.2, 1] of [-1, 1] */
+    expect_fraction("coverage in x", mc_seed(SEED_BASE + 1), 0.2f, -10, 0.4, 4096);  /* x in [0.2, 1] of [-1, 1] */
 }
 
 static void test_pixel_loop__samples_cover_the_pixel_uniformly_in_y(void **state)
 {
-    expect_fraction(-10, 0.5f, 0.25, 4096); /* y in [0.5, 1] of [-1, 1]: film y = 0 is the bottom */
+    /* y in [0.5, 1] of [-1, 1]: film y = 0 is the bottom */
+    expect_fraction("coverage in y", mc_seed(SEED_BASE + 2), -10, 0.5f, 0.25, 4096);
 }
 
 static void test_pixel_loop__corner_quarter(void **state)
 {
-    expect_fraction(0.0f, 0.0f, 0.25, 4096);
+    expect_fraction("corner quarter", mc_seed(SEED_BASE + 3), 0.0f, 0.0f, 0.25, 4096);
 }
 
 /* ---- a whole render against an oracle written independently, in double precision ---------- */
@@ -235,6 +244,5 @@ int pixel_tests(void)
         cmocka_unit_test_setup(test_pixel_loop__corner_quarter, test_setup),
         cmocka_unit_test_setup(test_render__normal_image_matches_oracle, test_setup),
     };
-    printf("part1 pixel tests: seed %u, alpha %g per statistical test\n", SEED, ALPHA);
     return cmocka_run_group_tests_name("part1: pixel_sample_ray (task 1.4), the pixel loop and whole renders", tests, NULL, NULL);
 }

@@ -14,6 +14,7 @@
 #include "../common/tiny_scenes.h"
 #include "../../parts/part4_global/part4.h"
 #include "part4_alpha.h"
+#include "../../framework/counters.h"
 #include <stdlib.h>
 
 #define SEED mc_seed(0x5eed4002ull)
@@ -85,9 +86,9 @@ static furnace_run run_furnace(bool roulette, uint64_t seed)
     ray r = ray_make(vec3_make(0, 0, 0), vec3_normalize(vec3_make(-0.4f, 0.1f, -0.9f)), 0.0f, INFINITY);
     const char *name = roulette ? "furnace -m 12, roulette" : "furnace -m 12, no roulette";
     mc_print_seed(name, seed);
-    (void)accel_take_ray_count();
+    (void)counters_take();
     mc_run_ray(&w->ctx, name, &r, seed, N, out.acc, __FILE__, __LINE__);
-    out.rays = accel_take_ray_count();
+    out.rays = counters_take().rays;
     tiny_world_destroy(w);
     return out;
 }

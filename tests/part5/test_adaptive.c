@@ -11,20 +11,18 @@
  *   red channel, the max channel, the standard deviation instead of the standard error...) stops
  *   at other counts and fails;
  * - with tolerance 0 every striped pixel takes all spp samples and the image is the fixed-rate one.
- * alpha: family-wise 1e-3 over this suite, split by Sidak over CHECKS statistical checks.
- * Seeds fixed and printed. */
+ * alpha: two statistical checks, each at PART5_CHECK_ALPHA (family alpha and budget:
+ * part5_alpha.h). Seeds fixed, printed, and changed by PL_TEST_SEED (mc_seed). */
 #include <stdio.h>
 #include <stdlib.h>
 #include "../common/test.h"
 #include "../common/stats.h"
 #include "../common/mc_assert.h"
 #include "../common/tiny_scenes.h"
+#include "part5_alpha.h"
 #include "../../parts/part5_adaptive/part5.h"
 #include "../../framework/render.h"
 
-#define FAMILY_ALPHA 1e-3
-#define CHECKS 4
-#define CHECK_ALPHA stats_sidak(FAMILY_ALPHA, CHECKS)
 #define SEED mc_seed(0x5eed5001ull)
 
 #define W 32
@@ -86,41 +84,68 @@ static bool rule_stops(int n, int greens, double tol)
     return 1.96 * sqrt(var / n) <= tol * mean;
 }
 
-/* Exact mean and variance of a striped pixel's sample count: carry the distribution of the number
- * of green samples among those still running from one batch to the next. */
-static void count_distribution(double tol, double *mean, double *var)
+/* Batches a striped pixel can stop after: BATCH, 2 BATCH, ..., SPP. */
+#define STOPS ((SPP + BATCH - 1) / BATCH)
+
+/* Exact distribution of a striped pixel's sample count: stop[j] is the chance it stops after batch
+ * j + 1. Carries the distribution of the number of green samples among the pixels still running
+ * from one batch to the next. */
+static void count_distribution(double tol, double stop[STOPS])
 {
     double *p = calloc(SPP + 1, sizeof *p), *next = calloc(SPP + 1, sizeof *next);
     assert_non_null(p);
     assert_non_null(next);
     p[0] = 1.0;
-    double e1 = 0.0, e2 = 0.0;
-    for (int n = 0; n < SPP; n += BATCH) {
+    for (int n = 0, j = 0; n < SPP; n += BATCH, j++) {
         int step = n + BATCH <= SPP ? BATCH : SPP - n;
         /* add `step` fair coin flips to every live state */
         for (int i = 0; i <= SPP; i++) next[i] = 0.0;
         for (int k = 0; k <= n; k++) {
             if (p[k] == 0.0) continue;
             double c = p[k] * pow(0.5, step);
-            for (int j = 0; j <= step; j++) {
-                next[k + j] += c;
-                c = c * (step - j) / (j + 1);
+            for (int i = 0; i <= step; i++) {
+                next[k + i] += c;
+                c = c * (step - i) / (i + 1);
             }
         }
         int m = n + step;
+        stop[j] = 0.0;
         for (int k = 0; k <= m; k++) {
             p[k] = next[k];
             if (p[k] > 0.0 && (m == SPP || rule_stops(m, k, tol))) {
-                e1 += p[k] * m;
-                e2 += p[k] * (double)m * m;
+                stop[j] += p[k];
                 p[k] = 0.0;
             }
         }
     }
-    *mean = e1;
-    *var = e2 - e1 * e1;
     free(p);
     free(next);
+}
+
+/* Exact two-sided p-value of `total` batches summed over `pixels` independent striped pixels, each
+ * stopping after batch j + 1 with chance stop[j]: twice the smaller tail of the convolution. */
+static double batches_p2(const double stop[STOPS], int pixels, int total)
+{
+    int most = pixels * STOPS;
+    double *dist = calloc((size_t)most + 1, sizeof *dist), *next = calloc((size_t)most + 1, sizeof *next);
+    assert_non_null(dist);
+    assert_non_null(next);
+    dist[0] = 1.0;
+    for (int i = 0; i < pixels; i++) {
+        for (int t = 0; t <= most; t++) next[t] = 0.0;
+        for (int t = 0; t <= i * STOPS; t++)
+            for (int j = 0; j < STOPS; j++) next[t + j + 1] += dist[t] * stop[j];
+        double *swap = dist; dist = next; next = swap;
+    }
+    double lower = 0.0, upper = 0.0;
+    for (int t = 0; t <= most; t++) {
+        if (t <= total) lower += dist[t];
+        if (t >= total) upper += dist[t];
+    }
+    free(dist);
+    free(next);
+    double two = 2.0 * fmin(lower, upper);
+    return fmin(1.0, two);
 }
 
 /* ---- adaptive_converged alone: exact ---------------------------------------------------------- */
@@ -210,23 +235,32 @@ static void test_adaptive__noisy_pixels_stop_where_the_luminance_rule_says(void 
     mc_print_seed("adaptive stripes", SEED + 2);
     adaptive_run *run = run_stripes(true, TOL, SPP, SEED + 2);
     stats_acc acc = stats_acc_make();
+    int batches = 0;  /* each count is a whole number of batches: SPP is a multiple of BATCH */
     for (int y = 0; y < H; y++)
-        for (int x = W / 2; x < W; x++)
+        for (int x = W / 2; x < W; x++) {
             stats_acc_add(&acc, run->counts[y * W + x]);
+            batches += (run->counts[y * W + x] + BATCH - 1) / BATCH;
+        }
     free_run(run);
-    double mean, var;
-    count_distribution(TOL, &mean, &var);
-    /* Known variance, so a z test: the count of a pixel is a sum of few values, the mean of 128 is
-     * close to normal. */
+    double stop[STOPS], mean = 0.0, var = 0.0;
+    count_distribution(TOL, stop);
+    for (int j = 0; j < STOPS; j++) {
+        double m = (double)(j + 1) * BATCH;
+        mean += stop[j] * m;
+        var += stop[j] * m * m;
+    }
+    var -= mean * mean;
+    /* The exact distribution of the total over the pixels (a convolution), not a normal approximation. */
+    double p = batches_p2(stop, (int)acc.n, batches);
     double z = (acc.mean - mean) / sqrt(var / (double)acc.n);
-    double p = erfc(fabs(z) / sqrt(2.0));
     print_message("striped pixels: mean count %.2f, the luminance rule gives %.2f +- %.2f\n", acc.mean, mean,
                   sqrt(var / (double)acc.n));
-    if (p < CHECK_ALPHA)
+    double alpha = PART5_CHECK_ALPHA;
+    if (p < alpha)
         print_error("striped pixels took %.2f samples on average; the rule on luminance gives %.2f +- %.2f "
-                    "(z = %.1f, p = %.3g < %.3g). Test I = 1.96 sqrt(var / n) <= T mean on the luminance "
-                    "of each sample (part5.h).\n", acc.mean, mean, sqrt(var / (double)acc.n), z, p, CHECK_ALPHA);
-    assert_true(p >= CHECK_ALPHA);
+                    "(z = %.1f, exact p = %.3g < %.3g). Test I = 1.96 sqrt(var / n) <= T mean on the luminance "
+                    "of each sample (part5.h).\n", acc.mean, mean, sqrt(var / (double)acc.n), z, p, alpha);
+    assert_true(p >= alpha);
     assert_true(acc.mean > BATCH);  /* noisy pixels take more than the first batch */
 }
 
@@ -239,7 +273,7 @@ static void test_adaptive__zero_tolerance_is_the_fixed_rate_estimate(void **stat
     /* Each pixel: a mean of 64 samples of a fair coin in red and green, so sd 0.0625 per channel,
      * and two independent such means (if the two draw their numbers differently) differ by
      * 0.088 sd. The bound is the Sidak-corrected normal quantile over the pixels. */
-    double alpha_pixel = stats_sidak(CHECK_ALPHA, W * H / 2);
+    double alpha_pixel = stats_sidak(PART5_CHECK_ALPHA, W * H / 2);  /* one check, split over the pixels */
     double zcrit = stats_t_quantile2(alpha_pixel, 1e9);
     double tol = zcrit * 0.5 * sqrt(2.0 / 64.0);
     for (int y = 0; y < H; y++)
