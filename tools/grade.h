@@ -150,7 +150,7 @@ bool grade_part_dirs(const grade_env *env, int part);
  * in r->suite_reason when the results are missing or malformed, or hold other than `expected` tests
  * (the suite stopped early, or the files are not its own), or disagree with the exit status. */
 void grade_suite_score(const char *dir, int expected, double points, int status, grade_part_result *r);
-/* The last `lines` lines of the file at path, at most size - 1 bytes ("" when unreadable). */
+/* The last `lines` lines of the log at path, less make's progress lines, at most size - 1 bytes ("" when unreadable). */
 void grade_log_tail(const char *path, int lines, char *out, size_t size);
 
 /* ---- reports --------------------------------------------------------------------------------- */
