@@ -6,6 +6,7 @@ OPT     ?= -O2
 SAN     ?= 0   # 1: AddressSanitizer + UndefinedBehaviorSanitizer build, in build/san and bin/san
 WERROR  ?= 0   # 1: warnings are errors (CI sets it)
 V       ?= 0   # 1: print whole commands instead of "CC file.c"
+LTO     ?= 1   # 0: no link-time optimisation (the grader's builds: objects hold machine code it can inspect)
 PKGS    := libxml-2.0 stb jansson zlib OpenEXR
 TPKGS   := cmocka
 SUITES  := framework grader part1 part2 part3 part4 part5
@@ -27,8 +28,10 @@ ifeq ($(SAN),1)
   BIN      := bin/san
 else
   # Link-time optimisation lets the BVH inline part 1's triangle test across files: ~9% faster renders.
-  CFLAGS   += -flto=auto
-  LDFLAGS  += -flto=auto $(OPT) $(WARN)
+  ifneq ($(strip $(LTO)),0)
+    CFLAGS   += -flto=auto
+    LDFLAGS  += -flto=auto $(OPT) $(WARN)
+  endif
   BUILD    := build/release
   BIN      := bin
 endif

@@ -42,6 +42,7 @@ typedef struct {
 typedef struct {
     int part;                           /* 1..5 */
     double unit_points;
+    int unit_tests;                     /* the tests its suite runs to its end ("unit_tests" in cases.json) */
     grade_case cases[GRADE_MAX_CASES];
     int num_cases;
 } grade_part_spec;
@@ -72,6 +73,7 @@ typedef struct {
     int part;
     bool built;
     char build_log[320];       /* path of the compiler's output */
+    char build_output[4096];   /* its last lines, when the part does not build */
     int tests_run, tests_failed;
     char suite_reason[256];    /* why the suite scored zero (crash, timeout, no results), or "" */
     char failures[2048];       /* names and messages of the failed tests, Markdown */
@@ -83,6 +85,7 @@ typedef struct {
 
 typedef struct {
     uint64_t seed;             /* drawn at grading time, recorded */
+    char unprotected[256];     /* the protections this machine could not give student code, or "" */
     double seconds;
     grade_part_result parts[GRADE_NUM_PARTS];
     int num_parts;
@@ -93,7 +96,8 @@ typedef struct {
 typedef struct {
     double wall_seconds;       /* kill the whole process group after this */
     const char *cwd;           /* run in this folder */
-    const char *log_path;      /* stdout and stderr go here, truncated at log_max bytes */
+    const char *log_path;      /* stdout and stderr go here (a fresh file the grader writes, in a folder
+                                  the child cannot write), cut at log_max bytes; NULL: discarded */
     long log_max;
     char *const *env;          /* extra "NAME=value" entries, NULL-terminated, or NULL */
     bool untrusted;            /* runs student code: limits, no network, an unprivileged user */
@@ -105,10 +109,13 @@ typedef struct {
     bool as_other_user;        /* runs as `nobody` (the grader is root) */
     bool no_network;           /* a new network namespace */
     unsigned uid, gid;         /* nobody's */
+    long process_limit;        /* RLIMIT_NPROC for untrusted children (counts the whole user's) */
 } grade_sandbox;
 
 /* Finds what this machine allows (call once, before any child runs). */
 grade_sandbox grade_sandbox_probe(void);
+/* The protections this machine could not give, in words for the report ("" when none is missing). */
+void grade_sandbox_describe(const grade_sandbox *s, char *out, size_t size);
 
 typedef struct {
     bool exited;               /* ended by exit(), not by a signal or the timeout */
@@ -137,6 +144,14 @@ typedef struct {
 
 /* Builds (or reuses) the tree for part p, runs its suite and cases, and fills r. */
 void grade_part(const grade_env *env, const grade_spec *spec, const grade_part_spec *p, grade_part_result *r);
+/* Fresh scratch for part `part`: work/partN (the grader's: logs) and work/partN/renders (the child's). */
+bool grade_part_dirs(const grade_env *env, int part);
+/* Scores the cmocka XML files in dir: points times the share of tests passed, or zero with a reason
+ * in r->suite_reason when the results are missing or malformed, or hold other than `expected` tests
+ * (the suite stopped early, or the files are not its own), or disagree with the exit status. */
+void grade_suite_score(const char *dir, int expected, double points, int status, grade_part_result *r);
+/* The last `lines` lines of the log at path, less make's progress lines, at most size - 1 bytes ("" when unreadable). */
+void grade_log_tail(const char *path, int lines, char *out, size_t size);
 
 /* ---- reports --------------------------------------------------------------------------------- */
 

@@ -76,7 +76,13 @@ static pl_status read_parts(const char *path, json_t *root, bool base, grade_spe
                            path, k);
         grade_part_spec *p = &out->parts[part - 1];
         p->part = part;
-        if (base) p->unit_points = json_number_value(json_object_get(pj, "unit_points"));
+        if (base) {
+            p->unit_points = json_number_value(json_object_get(pj, "unit_points"));
+            p->unit_tests = (int)json_integer_value(json_object_get(pj, "unit_tests"));
+            if (p->unit_tests < 1)
+                return pl_fail(diag, PL_ERR_PARSE, "%s: part %d: expected \"unit_tests\", the number of tests its "
+                               "suite runs, >= 1", path, part);
+        }
         if (p->num_cases + json_array_size(cases) > GRADE_MAX_CASES)
             return pl_fail(diag, PL_ERR_PARSE, "%s: part %d: more than %d cases", path, part, GRADE_MAX_CASES);
         for (size_t i = 0; i < json_array_size(cases); i++) {

@@ -1,5 +1,7 @@
 /* Grader machinery: not part of any assignment. One image case. */
 #include "grade_image.h"
+#include "grade_guard.h"
+#include "../framework/file.h"
 #include "../framework/image.h"
 #include "../framework/exr.h"
 #include "../framework/film.h"
@@ -7,10 +9,13 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <unistd.h>
 
 #define RENDER_SECONDS 120
 #define LOG_MAX (256 * 1024)
 #define Z_SCALE 5.0f  /* the z-map saturates at |t| = 5 */
+#define RENDER_MAX (256L << 20)    /* a candidate EXR: far above any case's size */
+#define SCENE_MAX (64L << 20)
 
 /* The mean image of an EXR the renderer wrote (R, G, B, top row first), read in this process. The
  * film adds a NaN, infinite or negative sample as black and counts it in `bad`: such a pixel is
@@ -57,14 +62,35 @@ static pl_status write_z_map(const verdict *v, int width, int height, const char
     return st;
 }
 
+/* A scene under grading/ (a hidden case's) sits in a folder the child may not enter: the render
+ * gets a copy of that one file, in the part's folder. Other scenes are read where they are. */
+static bool scene_for_child(const grade_env *env, int part, const grade_case *k, char *path, size_t size,
+                            pl_diag *diag)
+{
+    snprintf(path, size, "%s/%s", env->root, k->scene);
+    if (strncmp(k->scene, "grading/", 8) != 0) return true;
+    char *data = NULL;
+    size_t len = 0;
+    const char *base = strrchr(k->scene, '/') + 1;
+    pl_status st = file_read_all(path, "scene", SCENE_MAX, &data, &len, diag);
+    snprintf(path, size, "%s/part%d/%s", env->work, part, base);
+    if (!st) st = file_write_atomic(path, data, len, diag);
+    free(data);
+    return st == PL_OK;
+}
+
 void grade_image_case(const grade_env *env, const grade_spec *spec, const char *tree, int part, grade_case_result *c)
 {
     const grade_case *k = c->spec;
     char out[4096], log[4096], bin[4096], scene[4096], ref[4096], seed[32], res_w[16], res_h[16], spp[16], thr[16];
-    snprintf(out, sizeof out, "%s/part%d/%s.exr", env->work, part, k->name);
+    pl_diag diag = pl_diag_default();
+    snprintf(out, sizeof out, "%s/part%d/renders/%s.exr", env->work, part, k->name);
     snprintf(log, sizeof log, "%s/part%d/%s.log", env->work, part, k->name);
     snprintf(bin, sizeof bin, "%s/bin/pathtracer", tree);
-    snprintf(scene, sizeof scene, "%s/%s", env->root, k->scene);
+    if (!scene_for_child(env, part, k, scene, sizeof scene, &diag)) {
+        snprintf(c->reason, sizeof c->reason, "the course's scene: %s", diag.error);
+        return;
+    }
     snprintf(ref, sizeof ref, "%s/reference_images/%spart%d/%s.exr", env->root, k->hidden ? "hidden/" : "", part,
              k->name);
     snprintf(seed, sizeof seed, "%llu", (unsigned long long)env->seed);
@@ -93,7 +119,6 @@ void grade_image_case(const grade_env *env, const grade_spec *spec, const char *
 
     /* The verdict, from the two files, in this process. */
     image cand = {0}, refimg = {0};
-    pl_diag diag = pl_diag_default();
     long bad;
     if (read_mean(ref, &refimg, &bad, &diag) != PL_OK || bad) {
         /* A broken reference is the course's fault, never the student's: say so, not "differs". */
@@ -102,7 +127,16 @@ void grade_image_case(const grade_env *env, const grade_spec *spec, const char *
         image_free(&refimg);
         return;
     }
-    if (read_mean(out, &cand, &bad, &diag) != PL_OK) {
+    /* The render's file, opened once without following a link (it could name a reference) and read
+     * through that descriptor. */
+    int fd = grade_guard_open_child_file(out, RENDER_MAX);
+    char by_fd[64];
+    snprintf(by_fd, sizeof by_fd, "/proc/self/fd/%d", fd);
+    pl_status st = fd < 0 ? pl_fail(&diag, PL_ERR_IO, "%s: missing, a link, not a regular file, or over %ld MiB",
+                                    out, RENDER_MAX >> 20)
+                          : read_mean(by_fd, &cand, &bad, &diag);
+    if (fd >= 0) close(fd);
+    if (st != PL_OK) {
         snprintf(c->reason, sizeof c->reason, "the render wrote no readable image: %s", diag.error);
         image_free(&refimg);
         return;
@@ -127,9 +161,9 @@ void grade_image_case(const grade_env *env, const grade_spec *spec, const char *
             char path[4096];
             snprintf(c->images[i], sizeof c->images[i], "part%d_%s_%s.png", part, k->name, kinds[i]);
             snprintf(path, sizeof path, "%s/%s", env->report, c->images[i]);
-            pl_status st = i == 0 ? image_write_png(&cand, path, &diag)
-                         : i == 1 ? image_write_png(&refimg, path, &diag)
-                                  : write_z_map(&c->v, cand.width, cand.height, path, &diag);
+            st = i == 0 ? image_write_png(&cand, path, &diag)
+               : i == 1 ? image_write_png(&refimg, path, &diag)
+                        : write_z_map(&c->v, cand.width, cand.height, path, &diag);
             if (st != PL_OK) c->images[i][0] = '\0';
         }
     }

@@ -5,10 +5,15 @@
 #include <stdbool.h>
 #include <stddef.h>
 
-/* Inspects the .c files of parts/<folder> in the built tree (scratch under work). True when every file keeps to
- * the allow-list; otherwise false with why = "parts/<folder>/<file>: <what>". untrusted: compile
- * contained, as the build was. */
+/* Inspects the objects the build made from the .c files of parts/<folder> in the built tree (built
+ * without LTO), with its logs in work (a folder the child cannot write). True when every object
+ * keeps to the allow-list; otherwise false with why = "parts/<folder>/<file>: <what>". untrusted:
+ * run the inspecting tools contained, as the build was. */
 bool grade_inspect_part(const char *tree, const char *folder, const char *work, bool untrusted, char *why,
                         size_t size);
+
+/* True when part code may refer to name: the allow-list (grade_allow.c), not counting the parts'
+ * own functions, which grade_inspect_part adds. */
+bool grade_allowed_symbol(const char *name);
 
 #endif

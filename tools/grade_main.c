@@ -8,6 +8,7 @@
  *                     often it failed beside the alpha it claims, and the deciles of its p-values
  * Exit status: 0 when every graded part got full marks, 1 otherwise, 2 for bad arguments. */
 #include "grade.h"
+#include "grade_guard.h"
 #include "grade_image.h"
 #include <errno.h>
 #include <stdio.h>
@@ -49,10 +50,8 @@ static int calibrate(const grade_env *base, const grade_spec *spec, const char *
         char digit[2] = {(char)('1' + k), 0};
         if (!strstr(parts, digit)) continue;
         const grade_part_spec *p = &spec->parts[k];
-        char dir[4200];
-        snprintf(dir, sizeof dir, "%s/part%d", base->work, p->part);
-        if (mkdir(dir, 0755) != 0 && errno != EEXIST) {
-            fprintf(stderr, "grade: cannot create %s\n", dir);
+        if (!grade_part_dirs(base, p->part)) {
+            fprintf(stderr, "grade: cannot create %s/part%d\n", base->work, p->part);
             return 1;
         }
         for (int i = 0; i < p->num_cases; i++) {
@@ -137,6 +136,16 @@ int main(int argc, char **argv)
     result.seed = seed_given ? seed : fresh_seed();
     grade_env env = {root, submission ? subdir : NULL, work, report, public_only, result.seed, threads,
                      grade_sandbox_probe()};
+    /* Before any child runs: the answers out of its reach, and the report says what could not be. */
+    char why[512];
+    if (submission && !grade_guard_secrets(root, outdir, &env.sandbox, why, sizeof why)) {
+        fprintf(stderr, "grade: %s\n", why);
+        grade_spec_free(&spec);
+        return 2;
+    }
+    if (submission) grade_sandbox_describe(&env.sandbox, result.unprotected, sizeof result.unprotected);
+    else snprintf(result.unprotected, sizeof result.unprotected, "your own tree: its code ran as you, unconfined");
+    if (result.unprotected[0]) fprintf(stderr, "grade: unavailable protections: %s\n", result.unprotected);
     if (calibrate_runs > 0) {
         int code = calibrate(&env, &spec, parts, calibrate_runs);
         grade_spec_free(&spec);
@@ -157,6 +166,10 @@ int main(int argc, char **argv)
     int code = 0;
     if (grade_write_results_json(&result, json, &diag) != PL_OK || grade_write_html(&result, report, &diag) != PL_OK) {
         fprintf(stderr, "grade: %s\n", diag.error);
+        code = 1;
+    }
+    if (submission && !grade_guard_secrets(root, outdir, &env.sandbox, why, sizeof why)) {  /* the new results.json */
+        fprintf(stderr, "grade: %s\n", why);
         code = 1;
     }
     printf("results: %s\nreport:  %s/index.html\n", json, report);

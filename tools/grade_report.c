@@ -53,6 +53,7 @@ void grade_print_table(const grade_result *r, FILE *out)
         max += p->max_score;
     }
     fprintf(out, "total%52.1f / %.1f   (seed %llu, %.0f s)\n", total, max, (unsigned long long)r->seed, r->seconds);
+    if (r->unprotected[0]) fprintf(out, "unavailable protections: %s\n", r->unprotected);
 }
 
 /* ---- results.json: Gradescope's format ------------------------------------------------------- */
@@ -70,12 +71,14 @@ pl_status grade_write_results_json(const grade_result *r, const char *path, pl_d
     double total = 0;
     for (int i = 0; i < r->num_parts; i++) {
         const grade_part_result *p = &r->parts[i];
-        char name[128], text[3072];
+        char name[128], text[sizeof p->build_output + 1024];
         total += p->score;
         snprintf(name, sizeof name, "Part %d: unit tests", p->part);
-        if (p->suite_reason[0])
-            snprintf(text, sizeof text, "**0 points**: %s.%s%s", p->suite_reason, p->built ? "" : " Compiler output: ",
-                     p->built ? "" : p->build_log);
+        if (p->suite_reason[0] && p->build_output[0])
+            snprintf(text, sizeof text, "**0 points**: %s. The end of the compiler's output:\n\n```\n%s\n```\n",
+                     p->suite_reason, p->build_output);
+        else if (p->suite_reason[0])
+            snprintf(text, sizeof text, "**0 points**: %s.", p->suite_reason);
         else
             snprintf(text, sizeof text, "%d of %d tests passed.\n\n%s", p->tests_run - p->tests_failed, p->tests_run,
                      p->failures);
@@ -89,8 +92,9 @@ pl_status grade_write_results_json(const grade_result *r, const char *path, pl_d
                                                     c->spec->hidden));
         }
     }
-    char summary[128];
-    snprintf(summary, sizeof summary, "pathlab grader, seed %llu", (unsigned long long)r->seed);
+    char summary[512];
+    snprintf(summary, sizeof summary, "pathlab grader, seed %llu.%s%s", (unsigned long long)r->seed,
+             r->unprotected[0] ? " Unavailable protections: " : "", r->unprotected);
     json_t *root = json_pack("{s:f, s:f, s:s, s:o}", "score", total, "execution_time", r->seconds, "output", summary,
                              "tests", tests);
     char *text = root ? json_dumps(root, JSON_INDENT(2)) : NULL;
@@ -142,6 +146,11 @@ pl_status grade_write_html(const grade_result *r, const char *folder, pl_diag *d
                "reference, block by block; a case fails only when the difference is too large to be noise (a "
                "correct part fails a case about once in a thousand gradings).</p>\n",
             (unsigned long long)r->seed, r->seconds);
+    if (r->unprotected[0]) {
+        fprintf(f, "<p class=\"fail\">Unavailable protections: ");
+        html_escape(f, r->unprotected);
+        fprintf(f, "</p>\n");
+    }
     fprintf(f, "<table class=\"sum\"><tr><th>part</th><th>unit tests</th><th>image cases</th><th>score</th></tr>\n");
     for (int i = 0; i < r->num_parts; i++) {
         const grade_part_result *p = &r->parts[i];
@@ -159,6 +168,11 @@ pl_status grade_write_html(const grade_result *r, const char *folder, pl_diag *d
             fprintf(f, "<p class=\"fail\">Unit tests: 0 points: ");
             html_escape(f, p->suite_reason);
             fprintf(f, "</p>\n");
+            if (p->build_output[0]) {
+                fprintf(f, "<p>The end of the compiler's output:</p><pre>");
+                html_escape(f, p->build_output);
+                fprintf(f, "</pre>\n");
+            }
         }
         else {
             fprintf(f, "<p class=\"%s\">Unit tests: %d of %d passed</p>\n", p->tests_failed ? "fail" : "pass",

@@ -1,5 +1,8 @@
-# The grader (issue 10): the image verdict and its suite, make test-grader.
-$(BIN)/test-grader: $(BUILD)/tools/verdict.o
+# The grader (issue 10): the image verdict and its suite, make test-grader. The suite also tests the
+# grader's modules (all but main), so it links them.
+$(BIN)/test-grader: $(BUILD)/tools/verdict.o $(patsubst %.c,$(BUILD)/%.o,$(filter-out tools/grade_main.c,$(wildcard tools/grade*.c)))
+$(BIN)/test-grader: LDLIBS += $(shell pkg-config --libs jansson)
+$(BUILD)/tests/grader/%.o: CPPFLAGS += $(shell pkg-config --cflags jansson)
 
 # bin/grade links the framework's file and image code, never a part (it must not run student code).
 GRADE_OBJ := $(patsubst %.c,$(BUILD)/%.o,$(wildcard tools/grade*.c)) $(BUILD)/tools/verdict.o \
@@ -22,3 +25,9 @@ grade: $(BIN)/grade
 .PHONY: test-report
 test-report: $(BIN)/grade $(BIN)/pathtracer $(BIN)/imgtool
 	$(Q)sh tests/grader/report.sh
+
+# The grader's containment at process level (tests/grader/sandbox.sh says what it proves): grades
+# part 1 of two hostile submissions; as root it also checks what nobody can read.
+.PHONY: test-grader-process
+test-grader-process: $(BIN)/grade $(BIN)/test-grader $(foreach n,1 2 3 4 5,$(BIN)/test-part$(n))
+	$(Q)sh tests/grader/sandbox.sh

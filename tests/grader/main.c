@@ -1,7 +1,10 @@
 /* Test machinery: not part of any assignment. The grader's suite: make test-grader. */
 int verdict_tests(void);
+int sandbox_tests(void);
 
 int main(void)
 {
-    return verdict_tests() != 0;
+    int failed = verdict_tests();
+    failed += sandbox_tests();
+    return failed != 0;
 }

@@ -1,0 +1,84 @@
+#!/bin/sh
+# Test machinery: the grader's containment at process level (make test-grader-process; needs the
+# solution tree, builds and grades part 1 twice: about two minutes on two cores).
+# 1. Each part's unit_tests in grading/cases.json is the number of tests its suite runs.
+# 2. A submission whose part 1 calls system() only under -pthread's _REENTRANT scores zero for the
+#    part, the message naming `system` (the allow-list reads the objects the build linked).
+# 3. A submission that does not compile shows the compiler's own message in results.json and in
+#    the HTML report.
+# 4. As root: the graded tree holds no reference or hidden case, and nobody can read the references,
+#    the hidden cases, results.json or the report.
+# 5. As a user that is not root, untrusted children still get a process limit (the grader's suite
+#    run as nobody).
+set -eu
+cd "$(dirname "$0")/../.."
+out=out/sandbox-test
+fail() { echo "test-grader-process: FAILED: $*"; exit 1; }
+rm -rf "$out"
+mkdir -p "$out"
+
+# 1. the expected counts are the suites' own
+for n in 1 2 3 4 5; do
+    want=$(sed -n "/\"part\": $n,/,/unit_tests/s/.*\"unit_tests\": *\([0-9]*\).*/\1/p" grading/cases.json)
+    mkdir -p "$out/suite$n"
+    CMOCKA_MESSAGE_OUTPUT=xml CMOCKA_XML_FILE="$PWD/$out/suite$n/%g.xml" bin/test-part$n >/dev/null 2>&1 ||
+        fail "the solution's part $n suite fails"
+    got=$(cat "$out/suite$n"/*.xml | grep -c '<testcase')
+    [ "$got" = "$want" ] || fail "part $n: cases.json says unit_tests $want, the suite runs $got"
+    echo "  part $n: unit_tests $want, as the suite runs"
+done
+
+# A submission: the solution's parts, part 1 changed by $1 (appended to pixel.c).
+submission() {
+    rm -rf "$out/sub"
+    mkdir -p "$out/sub"
+    cp -r parts "$out/sub/"
+    printf '%s\n' "$1" >>"$out/sub/parts/part1_raygen/pixel.c"
+}
+unit_output() { jq -r '.tests[] | select(.name == "Part 1: unit tests") | .output' "$1/results.json"; }
+part1_score() { jq '[.tests[] | select(.name | startswith("Part 1:")) | .score] | add' "$1/results.json"; }
+
+# 2. system() behind _REENTRANT (defined by the build's -pthread, not by a plain recompile)
+submission '#ifdef _REENTRANT
+#include <stdlib.h>
+int pl_sneaky(void) { return system("true"); }
+#endif'
+bin/grade --submission "$out/sub" --parts 1 --seed 1 --out "$out/reentrant" >"$out/reentrant.log" 2>&1 || true
+unit_output "$out/reentrant" | grep -q 'calls `system`' || fail "system() under _REENTRANT was not refused (see $out/reentrant.log)"
+[ "$(part1_score "$out/reentrant")" = 0 ] || fail "system() under _REENTRANT scored $(part1_score "$out/reentrant")"
+echo "  system() under _REENTRANT: refused, part 1 scores 0"
+
+# 4. what nobody can reach after a grading, as root
+if [ "$(id -u)" = 0 ]; then
+    tree="$out/reentrant/work/part1/tree"
+    [ -d "$tree/parts" ] || fail "no graded tree at $tree"
+    [ ! -e "$tree/grading" ] && [ ! -e "$tree/reference_images" ] ||
+        fail "the graded tree holds grading/ or reference_images/"
+    [ -z "$(find "$tree" -name '*.exr' | head -1)" ] || fail "the graded tree holds an EXR"
+    as_nobody() { setpriv --reuid=nobody --regid=nogroup --clear-groups "$@" >/dev/null 2>&1; }
+    ref=$(find reference_images -name '*.exr' | head -1)
+    for secret in "$ref" grading/hidden/cases.json "$out/reentrant/results.json" "$out/reentrant/report/index.html"; do
+        [ -e "$secret" ] || fail "$secret is missing"
+        if as_nobody cat "$secret"; then fail "nobody can read $secret"; fi
+    done
+    as_nobody cat grading/cases.json || fail "nobody cannot read the public cases: the check above proves nothing"
+    echo "  as nobody: references, hidden cases, results.json and the report are unreadable"
+
+    # 5. not root: the grader's own suite, as nobody, checks its children's process limit
+    PL_TEST_FILTER='*process_limit*' setpriv --reuid=nobody --regid=nogroup --clear-groups bin/test-grader \
+        >"$out/nproc.log" 2>&1 || fail "not root, an untrusted child has no process limit (see $out/nproc.log)"
+    grep -q 'PASSED.*1 test' "$out/nproc.log" || fail "the process-limit test did not run as nobody ($out/nproc.log)"
+    echo "  as nobody (not root): untrusted children have a process limit"
+else
+    echo "  (not root: the checks as nobody are skipped)"
+fi
+
+# 3. a part that does not compile
+submission 'int pl_broken(void) { return undeclared_thing; }'
+bin/grade --submission "$out/sub" --parts 1 --seed 1 --out "$out/broken" >"$out/broken.log" 2>&1 || true
+unit_output "$out/broken" | grep -q "undeclared_thing.*undeclared" ||
+    fail "results.json does not carry the compiler's message (see $out/broken/results.json)"
+page="$out/broken/report/index.html"
+grep -q "undeclared_thing" "$page" || fail "the HTML report does not carry the compiler's message"
+echo "  a part that does not build: the compiler's message is in results.json and the report"
+echo "test-grader-process: passed"

@@ -1,0 +1,315 @@
+/* Test machinery: not part of any assignment.
+ * The grader's containment (DESIGN.md section 9), each audit finding with its proof:
+ * - the allow-list refuses the framework's files, images and counter resets, not only libc's exit;
+ * - a suite's XML scores only when it holds exactly the tests the suite has (an early _exit does not);
+ * - a child's log is the grader's own fresh file: a planted symlink is never followed, and a flood
+ *   is cut at its cap while the child runs;
+ * - untrusted children always have a process limit, and the report names what is missing;
+ * - as root, a child running as nobody cannot open a reference, a hidden case or the results;
+ * - a failed build's message is its last lines. */
+#include "../common/test.h"
+#include "../../tools/grade.h"
+#include "../../tools/grade_guard.h"
+#include "../../tools/grade_inspect.h"
+#include <fcntl.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <sys/stat.h>
+#include <unistd.h>
+
+/* A scratch folder every user may enter (the nobody child must reach what it is refused, or the
+ * test would prove only that /tmp/xxx is private). */
+static char scratch[64];
+
+static int make_scratch(void **state)
+{
+    (void)state;
+    snprintf(scratch, sizeof scratch, "/tmp/pl-grade-test-XXXXXX");
+    if (!mkdtemp(scratch) || chmod(scratch, 0755) != 0) return -1;
+    grade_sandbox_probe();
+    return 0;
+}
+
+static int remove_scratch(void **state)
+{
+    (void)state;
+    char cmd[128];
+    snprintf(cmd, sizeof cmd, "rm -rf '%s'", scratch);
+    return system(cmd) == 0 ? 0 : -1;
+}
+
+static void write_text(const char *path, const char *text)
+{
+    FILE *f = fopen(path, "w");
+    assert_non_null(f);
+    fputs(text, f);
+    assert_int_equal(fclose(f), 0);
+}
+
+static long file_size(const char *path)
+{
+    struct stat st;
+    return lstat(path, &st) == 0 ? (long)st.st_size : -1;
+}
+
+/* Runs sh -c script as the grader runs untrusted code; its exit status (-1: did not exit). */
+static int run_untrusted(const char *script, const char *log)
+{
+    char *argv[] = {"sh", "-c", (char *)script, NULL};
+    grade_run_opts o = {30, NULL, log, 4096, NULL, true};
+    grade_run_result r = grade_run(argv, &o);
+    return r.exited ? r.status : -1;
+}
+
+/* ---- the allow-list ------------------------------------------------------------------------ */
+
+static void test_allowlist__framework_api_only(void **state)
+{
+    (void)state;
+    static const char *const allowed[] = {"rng_uniform", "sample_cosine_hemisphere_pdf", "scene_prim_intersect",
+                                          "render_intersect", "light_sample_L", "pl_todo_report", "mat4_point",
+                                          "sqrtf", "tan", "memcpy", "malloc", "qsort", "printf", NULL};
+    static const char *const refused[] = {"exr_read", "exr_write", "file_write_atomic", "file_read_all",
+                                          "image_write_png", "image_read", "scene_take_prim_tests",
+                                          "bvh_take_visits", "accel_take_ray_count", "pl_todo_reset", "dae_load",
+                                          "render_film", "system", "fopen", "exit", "_exit", "fork", "getenv",
+                                          "syscall", NULL};
+    for (const char *const *s = allowed; *s; s++)
+        if (!grade_allowed_symbol(*s)) fail_msg("the allow-list refuses %s, which part code needs", *s);
+    for (const char *const *s = refused; *s; s++)
+        if (grade_allowed_symbol(*s)) fail_msg("the allow-list accepts %s", *s);
+}
+
+/* ---- the suite's results ------------------------------------------------------------------- */
+
+/* dir/name.xml holding `tests` test cases, `failed` of them failed, as cmocka writes them. */
+static void write_suite_xml(const char *dir, const char *name, int tests, int failed)
+{
+    char path[256];
+    snprintf(path, sizeof path, "%s/%s.xml", dir, name);
+    FILE *f = fopen(path, "w");
+    assert_non_null(f);
+    fprintf(f, "<?xml version=\"1.0\" encoding=\"UTF-8\" ?>\n<testsuites>\n<testsuite name=\"%s\" tests=\"%d\">\n",
+            name, tests);
+    for (int i = 0; i < tests; i++)
+        fprintf(f, "<testcase name=\"t%d\" time=\"0.0\">%s</testcase>\n", i,
+                i < failed ? "<failure><![CDATA[it broke]]></failure>" : "");
+    fprintf(f, "</testsuite>\n</testsuites>\n");
+    assert_int_equal(fclose(f), 0);
+}
+
+static void score_dir(const char *name, grade_part_result *r)
+{
+    memset(r, 0, sizeof *r);
+    char dir[256];
+    snprintf(dir, sizeof dir, "%s/%s", scratch, name);
+    grade_suite_score(dir, 28, 10.0, 0, r);
+}
+
+static void test_suite_score__only_a_suite_run_to_its_end(void **state)
+{
+    (void)state;
+    grade_part_result r;
+    char dir[256];
+    /* The whole suite, in two groups, one test failed: 27/28 of the points. */
+    snprintf(dir, sizeof dir, "%s/whole", scratch);
+    assert_int_equal(mkdir(dir, 0755), 0);
+    write_suite_xml(dir, "a", 20, 1);
+    write_suite_xml(dir, "b", 8, 0);
+    memset(&r, 0, sizeof r);
+    grade_suite_score(dir, 28, 10.0, 1, &r);
+    assert_string_equal(r.suite_reason, "");
+    assert_true(r.unit_score > 9.64 && r.unit_score < 9.65);
+
+    /* An _exit(0) in the second group: its file is missing, 20 tests of 28, all passed. */
+    snprintf(dir, sizeof dir, "%s/early", scratch);
+    assert_int_equal(mkdir(dir, 0755), 0);
+    write_suite_xml(dir, "a", 21, 0);
+    score_dir("early", &r);
+    assert_string_equal(r.suite_reason, "the suite stopped after 21 of 28 tests");
+    assert_true(r.unit_score == 0.0);
+
+    /* Results of its own added by the code under test: more tests than the suite has. */
+    snprintf(dir, sizeof dir, "%s/extra", scratch);
+    assert_int_equal(mkdir(dir, 0755), 0);
+    write_suite_xml(dir, "a", 28, 0);
+    write_suite_xml(dir, "fake", 5, 0);
+    score_dir("extra", &r);
+    assert_non_null(strstr(r.suite_reason, "reported 33 tests, but it has 28"));
+    assert_true(r.unit_score == 0.0);
+
+    /* Malformed, and a results file that is a symlink (never followed, even to a good file). */
+    snprintf(dir, sizeof dir, "%s/bad", scratch);
+    assert_int_equal(mkdir(dir, 0755), 0);
+    write_suite_xml(dir, "a", 20, 0);
+    char path[300];
+    snprintf(path, sizeof path, "%s/b.xml", dir);
+    write_text(path, "<testsuites><testsuite><testcase name=");
+    score_dir("bad", &r);
+    assert_string_equal(r.suite_reason, "the suite wrote no readable test results");
+    assert_int_equal(unlink(path), 0);
+    char target[300];
+    snprintf(target, sizeof target, "%s/whole/b.xml", scratch);
+    assert_int_equal(symlink(target, path), 0);
+    score_dir("bad", &r);
+    assert_string_equal(r.suite_reason, "the suite wrote no readable test results");
+    assert_true(r.unit_score == 0.0);
+}
+
+/* ---- logs ---------------------------------------------------------------------------------- */
+
+static void test_run__log_is_a_fresh_file_never_a_planted_link(void **state)
+{
+    (void)state;
+    char victim[256], log[256], text[64] = "";
+    snprintf(victim, sizeof victim, "%s/victim", scratch);
+    snprintf(log, sizeof log, "%s/planted.log", scratch);
+    write_text(victim, "precious\n");
+    assert_int_equal(symlink(victim, log), 0);
+    assert_int_equal(run_untrusted("echo from the child", log), 0);
+    FILE *f = fopen(victim, "r");
+    assert_non_null(f);
+    assert_non_null(fgets(text, sizeof text, f));
+    fclose(f);
+    assert_string_equal(text, "precious\n");
+    struct stat st;
+    assert_int_equal(lstat(log, &st), 0);
+    assert_true(S_ISREG(st.st_mode));
+    assert_int_equal(st.st_uid, getuid());  /* the grader's, written by the grader */
+}
+
+static void test_run__a_flood_is_cut_while_the_child_runs(void **state)
+{
+    (void)state;
+    char log[256];
+    snprintf(log, sizeof log, "%s/flood.log", scratch);
+    /* 64 MiB of output against a 4 KiB cap: the log never holds more than the cap and a note. */
+    assert_int_equal(run_untrusted("head -c 67108864 /dev/zero", log), 0);
+    long size = file_size(log);
+    assert_true(size >= 4096 && size < 4096 + 64);
+    char tail[200];
+    grade_log_tail(log, 1, tail, sizeof tail);
+    assert_string_equal(tail, "[grader: output cut here]");
+}
+
+/* ---- limits and what the report says ------------------------------------------------------- */
+
+static void test_run__untrusted_children_have_a_process_limit(void **state)
+{
+    (void)state;
+    char log[256], text[64] = "";
+    snprintf(log, sizeof log, "%s/nproc.log", scratch);
+    assert_int_equal(run_untrusted("awk '/Max processes/ {print $3}' /proc/self/limits", log), 0);
+    FILE *f = fopen(log, "r");
+    assert_non_null(f);
+    assert_non_null(fgets(text, sizeof text, f));
+    fclose(f);
+    if (!strncmp(text, "unlimited", 9)) fail_msg("an untrusted child has no process limit (uid %u)", getuid());
+    long limit = atol(text);
+    assert_true(limit > 0 && limit < 100000);
+}
+
+static void test_sandbox__report_names_what_is_missing(void **state)
+{
+    (void)state;
+    char text[256];
+    grade_sandbox s = {false, false, 0, 0, 300};
+    grade_sandbox_describe(&s, text, sizeof text);
+    assert_non_null(strstr(text, "not root: student code ran as your own user"));
+    assert_non_null(strstr(text, "had the network"));
+    s.as_other_user = s.no_network = true;
+    grade_sandbox_describe(&s, text, sizeof text);
+    assert_string_equal(text, "");
+}
+
+/* ---- secrets, as root ---------------------------------------------------------------------- */
+
+static void test_guard__nobody_cannot_open_a_reference(void **state)
+{
+    (void)state;
+    grade_sandbox s = grade_sandbox_probe();
+    if (!s.as_other_user) {
+        printf("  (skipped: needs root, to run a child as nobody)\n");
+        return;
+    }
+    char path[512], script[2048], log[256];
+    static const char *const dirs[] = {"course", "course/reference_images", "course/reference_images/part1",
+                                       "course/grading", "course/grading/hidden", "course/scenes", "out",
+                                       "out/report", NULL};
+    for (const char *const *d = dirs; *d; d++) {
+        snprintf(path, sizeof path, "%s/%s", scratch, *d);
+        assert_int_equal(mkdir(path, 0755), 0);
+    }
+    static const char *const files[] = {"course/reference_images/part1/case.exr", "course/grading/hidden/cases.json",
+                                        "course/scenes/public.dae", "out/report/part1_case_reference.png",
+                                        "out/results.json", NULL};
+    for (const char *const *f = files; *f; f++) {
+        snprintf(path, sizeof path, "%s/%s", scratch, *f);
+        write_text(path, "secret\n");
+        chmod(path, 0644);
+    }
+    snprintf(log, sizeof log, "%s/guard.log", scratch);
+    /* Before: everything is readable to nobody (else the test below proves nothing). */
+    snprintf(script, sizeof script, "cat '%s/course/reference_images/part1/case.exr'", scratch);
+    assert_int_equal(run_untrusted(script, log), 0);
+
+    char course[300], out[300], why[256] = "";
+    snprintf(course, sizeof course, "%s/course", scratch);
+    snprintf(out, sizeof out, "%s/out", scratch);
+    if (!grade_guard_secrets(course, out, &s, why, sizeof why)) fail_msg("%s", why);
+    for (const char *const *f = files; *f; f++) {
+        snprintf(script, sizeof script, "id -u >&2; cat '%s/%s'", scratch, *f);
+        int status = run_untrusted(script, log);
+        bool is_public = strstr(*f, "public") != NULL;
+        if ((status == 0) != is_public)
+            fail_msg("a child as nobody %s %s (exit status %d)", is_public ? "cannot read" : "read", *f, status);
+    }
+    snprintf(script, sizeof script, "ls '%s/course/grading/hidden' '%s/course/reference_images'", scratch, scratch);
+    assert_int_not_equal(run_untrusted(script, log), 0);
+
+    /* A render "written" as a link to the reference is refused by the grader, root though it is. */
+    snprintf(path, sizeof path, "%s/render.exr", scratch);
+    snprintf(script, sizeof script, "%s/course/reference_images/part1/case.exr", scratch);
+    assert_int_equal(symlink(script, path), 0);
+    assert_int_equal(grade_guard_open_child_file(path, 1 << 20), -1);
+}
+
+/* ---- a failed build's message --------------------------------------------------------------- */
+
+static void test_log_tail__last_lines_bounded(void **state)
+{
+    (void)state;
+    char path[256], text[4096];
+    snprintf(path, sizeof path, "%s/build.log", scratch);
+    FILE *f = fopen(path, "w");
+    assert_non_null(f);
+    for (int i = 1; i <= 100; i++) fprintf(f, "line %d\n", i);
+    fclose(f);
+    grade_log_tail(path, 40, text, sizeof text);
+    assert_true(!strncmp(text, "line 61\n", 8));
+    assert_non_null(strstr(text, "\nline 100"));
+    /* A small buffer keeps the last whole lines that fit. */
+    char small[32];
+    grade_log_tail(path, 40, small, sizeof small);
+    assert_true(strlen(small) < sizeof small);
+    assert_non_null(strstr(small, "line 100"));
+    assert_true(!strncmp(small, "line ", 5));
+    grade_log_tail("/nonexistent/build.log", 40, small, sizeof small);
+    assert_string_equal(small, "");
+}
+
+int sandbox_tests(void)
+{
+    const struct CMUnitTest tests[] = {
+        cmocka_unit_test(test_allowlist__framework_api_only),
+        cmocka_unit_test(test_suite_score__only_a_suite_run_to_its_end),
+        cmocka_unit_test(test_run__log_is_a_fresh_file_never_a_planted_link),
+        cmocka_unit_test(test_run__a_flood_is_cut_while_the_child_runs),
+        cmocka_unit_test(test_run__untrusted_children_have_a_process_limit),
+        cmocka_unit_test(test_sandbox__report_names_what_is_missing),
+        cmocka_unit_test(test_guard__nobody_cannot_open_a_reference),
+        cmocka_unit_test(test_log_tail__last_lines_bounded),
+    };
+    return cmocka_run_group_tests_name("grader sandbox", tests, make_scratch, remove_scratch);
+}

@@ -1,0 +1,68 @@
+/* Grader machinery: not part of any assignment.
+ * What keeps the answers from student code (DESIGN.md section 9), beside the child's own limits
+ * (grade_run.c). Student code runs as `nobody` when the grader is root; then:
+ * - the references and hidden cases, and the grader's own outputs (results.json, report/), sit in
+ *   folders only root may enter (grade_guard_secrets);
+ * - the child writes only into folders made for it (grade_guard_child_dir), never into one that
+ *   holds a log or a result, so it cannot plant a name the grader would later follow;
+ * - a file the child wrote is opened by the grader without following a symlink and only when it is
+ *   a regular file (grade_guard_open_child_file): a render "written" as a link to a reference
+ *   would otherwise be read, as root, and compared with itself. */
+#include "grade_guard.h"
+#include "grade.h"
+#include <errno.h>
+#include <fcntl.h>
+#include <stdio.h>
+#include <string.h>
+#include <sys/stat.h>
+#include <unistd.h>
+
+/* A folder only its owner may enter, and its owner root, not nobody. */
+static bool make_private(const char *path, const grade_sandbox *s)
+{
+    struct stat st;
+    if (lstat(path, &st) != 0) return errno == ENOENT;  /* nothing to hide */
+    if (!S_ISDIR(st.st_mode)) return false;
+    if (st.st_uid == s->uid && chown(path, 0, 0) != 0) return false;
+    return chmod(path, 0700) == 0;
+}
+
+bool grade_guard_secrets(const char *root, const char *outdir, const grade_sandbox *s, char *why, size_t size)
+{
+    if (!s->as_other_user) return true;  /* the child is the grader's own user: nothing a mode can hide */
+    static const char *const secrets[] = {"reference_images", "grading/hidden"};
+    char path[4200];
+    for (size_t k = 0; k < sizeof secrets / sizeof secrets[0]; k++) {
+        snprintf(path, sizeof path, "%s/%s", root, secrets[k]);
+        if (!make_private(path, s)) return snprintf(why, size, "cannot make %s private to root", path), false;
+    }
+    /* The report shows references as PNGs; results.json is the verdict. The output folder itself
+     * stays enterable (the children's scratch lives below it), its results do not. */
+    snprintf(path, sizeof path, "%s/report", outdir);
+    if (!make_private(path, s)) return snprintf(why, size, "cannot make %s private to root", path), false;
+    snprintf(path, sizeof path, "%s/results.json", outdir);
+    if (chmod(path, 0600) != 0 && errno != ENOENT) return snprintf(why, size, "cannot protect %s", path), false;
+    return true;
+}
+
+bool grade_guard_child_dir(const char *path, const grade_sandbox *s, bool contained)
+{
+    char *rm[] = {"rm", "-rf", (char *)path, NULL};  /* rm never follows a link it deletes */
+    grade_run_opts o = {60, NULL, NULL, 0, NULL, false};
+    grade_run_result r = grade_run(rm, &o);
+    if (!r.exited || r.status != 0 || mkdir(path, 0755) != 0) return false;
+    return !(contained && s->as_other_user) || chown(path, s->uid, s->gid) == 0;
+}
+
+int grade_guard_open_child_file(const char *path, long max_bytes)
+{
+    int fd = open(path, O_RDONLY | O_NOFOLLOW | O_NONBLOCK | O_CLOEXEC);
+    struct stat st;
+    if (fd < 0) return -1;
+    if (fstat(fd, &st) != 0 || !S_ISREG(st.st_mode) || st.st_size > max_bytes) {
+        close(fd);
+        errno = EINVAL;
+        return -1;
+    }
+    return fd;
+}
