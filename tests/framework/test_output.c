@@ -6,6 +6,7 @@
 #include "../../framework/output.h"
 #include "../../framework/file.h"
 #include <dirent.h>
+#include <dlfcn.h>
 #include <jansson.h>
 #include <signal.h>
 #include <stdio.h>
@@ -19,6 +20,19 @@
 #define SCENE "scenes/cornell_spheres.dae"
 
 static char dir[64];
+
+/* file.c's mkstemp resolves to this one (defined in the executable): when a test sets
+ * raise_after_mkstemp, SIGTERM arrives right after the temporary exists, before anything else runs. */
+static volatile int raise_after_mkstemp;
+
+int mkstemp(char *template)
+{
+    static int (*real)(char *);
+    if (!real) *(void **)&real = dlsym(RTLD_NEXT, "mkstemp");
+    int fd = real(template);
+    if (fd >= 0 && raise_after_mkstemp) raise(SIGTERM);
+    return fd;
+}
 
 static int make_dir(void **state)
 {
@@ -223,20 +237,17 @@ static void test_output__signal_removes_temporaries(void **state)
     expect_files("");
 }
 
-/* A full disk (a 64 KB tmpfs, mounted when the tests run as root): a clear error and no file. */
-static void test_output__full_disk_leaves_nothing(void **state)
+/* Mounts a 64 KB tmpfs at <dir>/small and fills it to the last byte, so any output fails however
+ * well it compresses (a stubbed render is one flat colour). Skips the test unless run as root. */
+static void mount_full_disk(char *mnt, size_t size)
 {
-    (void)state;
-    char mnt[128];
-    snprintf(mnt, sizeof mnt, "%s/small", dir);
+    snprintf(mnt, size, "%s/small", dir);
     assert_int_equal(0, mkdir(mnt, 0755));
     if (geteuid() != 0 || mount("tmpfs", mnt, "tmpfs", 0, "size=64k") != 0) {
         print_message("skipped: mounting a small tmpfs needs root (run the tests as root to check full disks)\n");
         rmdir(mnt);
         skip();
     }
-    /* Fill it to the last byte first, so any output fails however well it compresses (a stubbed
-     * render is one flat colour). */
     char filler[160];
     snprintf(filler, sizeof filler, "%s/filler", mnt);
     FILE *f = fopen(filler, "w");
@@ -244,18 +255,32 @@ static void test_output__full_disk_leaves_nothing(void **state)
     static const char block[512];
     while (fwrite(block, 1, sizeof block, f) == sizeof block && fflush(f) == 0) {}
     fclose(f);
-    char fmt[256];
-    snprintf(fmt, sizeof fmt, "-t 2 -s 2 -r 400 300 -f %%s/small/x.png " SCENE);
-    int code = render(fmt);
-    char names[1024] = "";
+}
+
+/* Unmounts it; returns what it held besides the filler, space-separated. */
+static void unmount_full_disk(const char *mnt, char *names, size_t size)
+{
+    names[0] = '\0';
     DIR *d = opendir(mnt);
     for (struct dirent *e; d && (e = readdir(d));)
         if (strcmp(e->d_name, ".") && strcmp(e->d_name, "..") && strcmp(e->d_name, "filler"))
-            strncat(names, e->d_name, sizeof names - strlen(names) - 2);
+            strncat(names, e->d_name, size - strlen(names) - 2);
     if (d) closedir(d);
+    char filler[160];
+    snprintf(filler, sizeof filler, "%s/filler", mnt);
     unlink(filler);
     umount(mnt);
     rmdir(mnt);
+}
+
+/* A full disk: a clear error and no file. */
+static void test_output__full_disk_leaves_nothing(void **state)
+{
+    (void)state;
+    char mnt[128], names[1024];
+    mount_full_disk(mnt, sizeof mnt);
+    int code = render("-t 2 -s 2 -r 400 300 -f %s/small/x.png " SCENE);
+    unmount_full_disk(mnt, names, sizeof names);
     assert_int_equal(1, code);
     if (names[0]) fail_msg("the full filesystem holds '%s', expected nothing", names);
 }
@@ -274,6 +299,56 @@ static void test_output__non_utf8_path_gives_valid_json(void **state)
     json_decref(j);
 }
 
+/* ---- the cleanup table ----------------------------------------------------------------------- */
+
+/* A stop signal between creating a temporary and registering it for cleanup must not leave it:
+ * mkstemp (above) raises SIGTERM the moment the file exists. */
+static void test_output__signal_right_after_create_leaves_nothing(void **state)
+{
+    (void)state;
+    pid_t pid = fork();
+    assert_true(pid >= 0);
+    if (pid == 0) {
+        char path[128];
+        snprintf(path, sizeof path, "%s/x.png", dir);
+        raise_after_mkstemp = 1;
+        file_temp t;
+        file_temp_create(path, &t, NULL);
+        _exit(4);  /* not reached: SIGTERM, at the latest when the signals are unblocked */
+    }
+    int status;
+    assert_int_equal(pid, waitpid(pid, &status, 0));
+    assert_true(WIFSIGNALED(status) && WTERMSIG(status) == SIGTERM);
+    expect_files("");
+}
+
+/* Every temporary is tracked: the table holds every file a render writes, and one more than it
+ * holds is refused, not created untracked. A stop signal then removes them all. */
+static void test_output__every_temporary_is_tracked_or_refused(void **state)
+{
+    (void)state;
+    assert_true(FILE_MAX_TEMPS >= OUTPUT_KINDS);
+    pid_t pid = fork();
+    assert_true(pid >= 0);
+    if (pid == 0) {
+        char path[128];
+        snprintf(path, sizeof path, "%s/x.png", dir);
+        file_temp t[FILE_MAX_TEMPS + 1];
+        for (int i = 0; i < FILE_MAX_TEMPS; i++)
+            if (file_temp_create(path, &t[i], NULL) != PL_OK) _exit(3);
+        pl_diag d = pl_diag_default();
+        if (file_temp_create(path, &t[FILE_MAX_TEMPS], &d) == PL_OK) _exit(5);
+        if (!strstr(d.error, "x.png")) _exit(6);
+        raise(SIGTERM);
+        _exit(4);
+    }
+    int status;
+    assert_int_equal(pid, waitpid(pid, &status, 0));
+    if (WIFEXITED(status)) fail_msg("the child exited %d instead of dying of SIGTERM", WEXITSTATUS(status));
+    assert_true(WIFSIGNALED(status) && WTERMSIG(status) == SIGTERM);
+    expect_files("");
+}
+
 int output_tests(void)
 {
     const struct CMUnitTest tests[] = {
@@ -285,6 +360,8 @@ int output_tests(void)
         cmocka_unit_test_setup_teardown(test_output__signal_removes_temporaries, make_dir, remove_dir),
         cmocka_unit_test_setup_teardown(test_output__full_disk_leaves_nothing, make_dir, remove_dir),
         cmocka_unit_test_setup_teardown(test_output__non_utf8_path_gives_valid_json, make_dir, remove_dir),
+        cmocka_unit_test_setup_teardown(test_output__signal_right_after_create_leaves_nothing, make_dir, remove_dir),
+        cmocka_unit_test_setup_teardown(test_output__every_temporary_is_tracked_or_refused, make_dir, remove_dir),
     };
     return cmocka_run_group_tests_name("outputs", tests, NULL, NULL);
 }
