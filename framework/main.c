@@ -64,6 +64,7 @@ static int run(const options *o, const char *prog)
     double t0 = now_seconds();
     dae_limits limits = dae_limits_default();
     limits.max_primitives = o->max_primitives;
+    limits.max_instances = o->max_instances;
     if (dae_load_limited(o->scene_path, &limits, &s, &diag) != PL_OK) {
         output_free(&out);
         return fail(prog, &diag, 2);
