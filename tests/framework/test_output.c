@@ -305,7 +305,7 @@ static void test_output__heatmap_commits_with_the_image(void **state)
     (void)state;
     assert_int_equal(0, render("--normals -r 16 12 --heatmap %s/h.png -f %s/x.png " SCENE));
     expect_files("h.png x.json x.png x_rate.png");
-    char cmd[128];
+    char cmd[256];
     snprintf(cmd, sizeof cmd, "rm -f %s/*.png %s/*.json", dir, dir);
     assert_int_equal(0, system(cmd));
     char mnt[128], names[1024];
@@ -338,7 +338,7 @@ static void render_two_pieces(void)
 {
     assert_int_equal(0, render("--normals -r 8 6 -s 2 --samples 0:1 -f %s/r0.exr " SCENE));
     assert_int_equal(0, render("--normals -r 8 6 -s 2 --samples 1:2 -f %s/r1.exr " SCENE));
-    char cmd[128];
+    char cmd[256];
     snprintf(cmd, sizeof cmd, "rm -f %s/*.json %s/*_rate.png", dir, dir);
     assert_int_equal(0, system(cmd));
 }
