@@ -6,6 +6,7 @@
  * zfar) would otherwise give an all-black image and exit 0, which hides the mistake. */
 #include "camera_file.h"
 #include "file.h"
+#include "dae.h"  /* DAE_MAX_COORD: the scene's bound on coordinates, the camera's too */
 #include <errno.h>
 #include <math.h>
 #include <stdlib.h>
@@ -48,6 +49,28 @@ static pl_status read_line(const char **cursor, const char *path, int line, cons
     if (p != eol)
         return pl_fail(d, PL_ERR_PARSE, "%s:%d: expected %d numbers (%s), found more: '%.20s'", path, line, count, what, p);
     *cursor = *eol ? eol + 1 : eol;
+    return PL_OK;
+}
+
+/* After the sixth line only blank lines may follow: anything else is a file of another format or
+ * a seventh line the reader would silently drop. `line` is the number of the line at p. */
+static pl_status check_end(const char *p, const char *path, int line, pl_diag *d)
+{
+    for (; *p == ' ' || *p == '\t' || *p == '\r' || *p == '\n'; p++) line += *p == '\n';
+    if (*p == '\0') return PL_OK;
+    size_t n = strcspn(p, "\r\n");
+    return pl_fail(d, PL_ERR_PARSE, "%s:%d: expected the end of the file after six lines, found '%.*s'", path, line,
+                   (int)(n > 20 ? 20 : n), p);
+}
+
+/* Line 2: the position and target within the scene's bound (dae.h): a finite 1e38 would leave no
+ * float precision for the rays and render black. */
+static pl_status check_pose(const char *path, const float pose[6], pl_diag *d)
+{
+    for (int k = 0; k < 6; k++)
+        if (!(fabsf(pose[k]) <= DAE_MAX_COORD))
+            return pl_fail(d, PL_ERR_INVALID, "%s:2: expected coordinates within +-%g (position xyz, target xyz), got %g "
+                           "as number %d", path, (double)DAE_MAX_COORD, pose[k], k + 1);
     return PL_OK;
 }
 
@@ -101,9 +124,14 @@ pl_status camera_file_load(const char *path, camera *out, pl_diag *d)
     if (s == PL_OK) s = read_line(&cursor, path, 4, "camera-to-world rotation, 9 entries", 9, rot, d);
     if (s == PL_OK) s = read_line(&cursor, path, 5, "screen_w screen_h screen_dist", 3, screen, d);
     if (s == PL_OK) s = read_line(&cursor, path, 6, "focal_distance lens_radius", 2, focus, d);
+    if (s == PL_OK) s = check_end(cursor, path, 7, d);
     free(text);
     if (s == PL_OK) s = check_lens(path, lens, d);
+    if (s == PL_OK) s = check_pose(path, pose, d);
     if (s == PL_OK) s = check_rotation(path, rot, d);
+    if (s == PL_OK && !(focus[0] > 0 && focus[0] <= DAE_MAX_COORD))
+        s = pl_fail(d, PL_ERR_INVALID, "%s:6: expected a focal distance in (0, %g], got %g", path, (double)DAE_MAX_COORD,
+                    focus[0]);
     if (s == PL_OK && !(focus[1] >= 0))
         s = pl_fail(d, PL_ERR_INVALID, "%s:6: expected a lens radius >= 0, got %g", path, focus[1]);
     if (s != PL_OK) return s;

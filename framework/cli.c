@@ -26,6 +26,7 @@ options options_default(void)
     o.adaptive_tol = 0.05f;
     o.max_leaf_size = 4;
     o.max_primitives = dae_limits_default().max_primitives;
+    o.max_instances = dae_limits_default().max_instances;
     return o;
 }
 
@@ -56,6 +57,7 @@ void cli_print_usage(FILE *f, const char *prog)
             "  --no-rr           no Russian roulette: every path runs to -m bounces (part 4)\n"
             "  --leaf-size N     BVH max primitives per leaf (4)\n"
             "  --max-primitives N  refuse scenes with more triangles + spheres (2000000; guards memory)\n"
+            "  --max-instances N   refuse scenes whose nodes expand to more instances (1000000; guards time)\n"
             "  --heatmap FILE    write a PNG of BVH nodes visited per pixel\n"
             "  --samples A:B     render only samples A..B-1 of -s N (fixed rate; -f x.exr keeps what --merge needs)\n"
             "  --merge -f OUT.(exr|png|hdr) IN.exr...  merge --samples ranges that tile 0..N into OUT\n",
@@ -178,6 +180,11 @@ pl_status cli_parse(int argc, char **argv, options *out, cli_action *action, pl_
             int v = 0;
             s = parse_int(a, VALUE(1), 1, 1 << 30, &v, d), i++;
             o.max_primitives = v;
+        }
+        else if (!strcmp(a, "--max-instances")) {
+            int v = 0;
+            s = parse_int(a, VALUE(1), 1, 1 << 30, &v, d), i++;
+            o.max_instances = v;
         }
         else if (!strcmp(a, "--samples")) {
             char extra;

@@ -219,7 +219,7 @@ static pl_status visit_node(dae_ctx *c, const xmlNode *node, mat4 parent, int de
     /* <instance_node> can multiply work exponentially (a node instancing another twice, 40 times). */
     if (++c->node_visits > c->limits.max_instances)
         return dae_error(c, node, PL_ERR_INVALID, "more than %ld node instances (<instance_node> fan-out?): the "
-                         "limit guards time and memory", c->limits.max_instances);
+                         "limit guards time and memory; --max-instances N raises it", c->limits.max_instances);
     mat4 local;
     pl_status st = node_transform(c, node, &local);
     mat4 m = mat4_mul(parent, local);

@@ -17,7 +17,8 @@
 /* What one scene may ask for. A 32 KB file can ask for 10^8 triangles through <instance_node>
  * fan-out, so both are bounded before anything is allocated; the message names the element that
  * crossed the limit. A triangle costs about 80 bytes, its BVH share about 40: the default primitive
- * cap keeps a hostile scene near 300 MB; `--max-primitives N` raises it for a real big scene. */
+ * cap keeps a hostile scene near 300 MB; `--max-primitives N` raises it for a real big scene, and
+ * `--max-instances N` the instance cap. */
 typedef struct {
     long max_primitives;  /* triangles + spheres (2,000,000: ~150 MB of triangles) */
     long max_instances;   /* nodes visited, counting every <instance_node> expansion (1,000,000) */

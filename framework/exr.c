@@ -185,29 +185,6 @@ pl_status exr_encode(FILE *file, const void *user, pl_diag *diag)
     return r == EXR_ERR_SUCCESS ? PL_OK : exr_fail(diag, "writing EXR", r);
 }
 
-pl_status exr_write(const char *path, const exr_image *img, pl_diag *diag)
-{
-    size_t n = strlen(path) + 32;
-    char *tmp = malloc(n);
-    if (!tmp) return pl_fail(diag, PL_ERR_NOMEM, "%s: out of memory", path);
-    snprintf(tmp, n, "%s.tmp.%ld", path, (long)getpid());
-    FILE *f = fopen(tmp, "wb");
-    if (!f) {
-        pl_status s = pl_fail(diag, PL_ERR_IO, "%s: cannot write: %s", path, strerror(errno));
-        free(tmp);
-        return s;
-    }
-    pl_status s = exr_encode(f, img, diag);
-    if (fclose(f) != 0 && s == PL_OK) s = pl_fail(diag, PL_ERR_IO, "%s: cannot write: %s", path, strerror(errno));
-    if (s == PL_OK && rename(tmp, path) != 0) s = pl_fail(diag, PL_ERR_IO, "%s: cannot write: %s", path, strerror(errno));
-    if (s != PL_OK) {
-        remove(tmp);
-        if (strncmp(diag->error, path, strlen(path)) != 0) pl_fail(diag, s, "%s: %s", path, diag->error);
-    }
-    free(tmp);
-    return s;
-}
-
 /* ---- reading --------------------------------------------------------------------------------- */
 
 static pl_status read_attribute(exr_context_t x, const char *path, const char *name, char *out, size_t size, pl_diag *diag)

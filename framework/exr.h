@@ -37,10 +37,7 @@ typedef struct {
  * The output module's encoder type: pl_status (*)(FILE *f, const void *user, pl_diag *diag). */
 pl_status exr_encode(FILE *f, const void *user, pl_diag *diag);
 
-/* exr_encode into path through a temporary file renamed into place. */
-pl_status exr_write(const char *path, const exr_image *img, pl_diag *diag);
-
-/* Reads a file exr_write wrote: the film (allocated here; film_free it) from the accumulator
+/* Reads a file exr_encode wrote: the film (allocated here; film_free it) from the accumulator
  * channels, and the header attributes. Errors name the file and what was wrong. */
 pl_status exr_read(const char *path, film *out, exr_info *info, pl_diag *diag);
 

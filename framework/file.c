@@ -2,6 +2,7 @@
 #include "file.h"
 #include <errno.h>
 #include <fcntl.h>
+#include <pthread.h>
 #include <signal.h>
 #include <stdbool.h>
 #include <stdio.h>
@@ -77,51 +78,56 @@ bool file_has_extension(const char *path, const char *ext)
 
 /* ---- writing --------------------------------------------------------------------------------- */
 
-/* Temporary files still to be removed if the process is told to stop. The table is fixed-size
- * and plain chars so the signal handler may walk it (async-signal-safe: no malloc, no stdio). */
-#define MAX_TEMPS 16
-static char temp_paths[MAX_TEMPS][4096];
-static volatile sig_atomic_t temp_used[MAX_TEMPS];
+/* Temporary files still to be removed if the process is told to stop. The handler may only walk
+ * plain memory (async-signal-safe: no malloc, no stdio, no locks), so an entry is a pointer to the
+ * file_temp's own name, published before its flag is set; any name the kernel accepts fits. The
+ * mutex orders registrations from the output module's encoder threads; a thread holds it only with
+ * the stop signals blocked, so the handler never interrupts its holder. */
+static const char *volatile temp_paths[FILE_MAX_TEMPS];
+static volatile sig_atomic_t temp_used[FILE_MAX_TEMPS];
 static bool cleanup_installed;
+static pthread_mutex_t temp_lock = PTHREAD_MUTEX_INITIALIZER;
 
 static void remove_temps_and_die(int sig)
 {
-    for (int i = 0; i < MAX_TEMPS; i++)
+    for (int i = 0; i < FILE_MAX_TEMPS; i++)
         if (temp_used[i]) unlink(temp_paths[i]);
     signal(sig, SIG_DFL);
     raise(sig);
 }
 
-/* Register and forget with the stop signals blocked, so the handler never sees half an entry. */
-static int temp_register(const char *path)
+static void block_stop_signals(sigset_t *old)
 {
-    sigset_t block, old;
+    sigset_t block;
     sigemptyset(&block);
     sigaddset(&block, SIGINT);
     sigaddset(&block, SIGTERM);
     sigaddset(&block, SIGHUP);
-    sigprocmask(SIG_BLOCK, &block, &old);
-    if (!cleanup_installed) {
-        struct sigaction sa, old_action;
-        memset(&sa, 0, sizeof sa);
-        sa.sa_handler = remove_temps_and_die;
-        static const int stops[3] = {SIGINT, SIGTERM, SIGHUP};
-        for (int i = 0; i < 3; i++) {
-            /* A signal the user chose to ignore (nohup, a background job's SIGINT) stays ignored. */
-            if (sigaction(stops[i], NULL, &old_action) == 0 && old_action.sa_handler == SIG_IGN) continue;
-            sigaction(stops[i], &sa, NULL);
-        }
-        cleanup_installed = true;
+    pthread_sigmask(SIG_BLOCK, &block, old);
+}
+
+/* Installs the handler once; called with the stop signals blocked and temp_lock held. */
+static void install_cleanup(void)
+{
+    if (cleanup_installed) return;
+    struct sigaction sa, old_action;
+    memset(&sa, 0, sizeof sa);
+    sa.sa_handler = remove_temps_and_die;
+    static const int stops[3] = {SIGINT, SIGTERM, SIGHUP};
+    for (int i = 0; i < 3; i++) {
+        /* A signal the user chose to ignore (nohup, a background job's SIGINT) stays ignored. */
+        if (sigaction(stops[i], NULL, &old_action) == 0 && old_action.sa_handler == SIG_IGN) continue;
+        sigaction(stops[i], &sa, NULL);
     }
-    int slot = -1;
-    for (int i = 0; i < MAX_TEMPS && slot < 0; i++)
-        if (!temp_used[i] && strlen(path) < sizeof temp_paths[i]) {
-            snprintf(temp_paths[i], sizeof temp_paths[i], "%s", path);
-            temp_used[i] = 1;
-            slot = i;
-        }
-    sigprocmask(SIG_SETMASK, &old, NULL);
-    return slot;
+    cleanup_installed = true;
+}
+
+/* A free slot, or -1 when the table is full; called with the stop signals blocked and temp_lock held. */
+static int temp_free_slot(void)
+{
+    for (int i = 0; i < FILE_MAX_TEMPS; i++)
+        if (!temp_used[i]) return i;
+    return -1;
 }
 
 static void temp_forget(int slot)
@@ -146,9 +152,26 @@ pl_status file_temp_create(const char *path, file_temp *t, pl_diag *diag)
         return pl_fail(diag, PL_ERR_NOMEM, "%s: out of memory", path);
     }
     snprintf(t->tmp, n, "%.*s.%s.XXXXXX", (int)dir_len, path, path + dir_len);
-    int fd = mkstemp(t->tmp);
+    /* Create and register with the stop signals blocked: a signal in between would find a file
+     * the handler does not know. One that arrives meanwhile is delivered at the unblock, and then
+     * removes this file too. A full table refuses rather than leave a file untracked. */
+    sigset_t old;
+    block_stop_signals(&old);
+    pthread_mutex_lock(&temp_lock);
+    install_cleanup();
+    int fd = -1, err = 0, slot = temp_free_slot();
+    if (slot >= 0 && (fd = mkstemp(t->tmp)) < 0) err = errno;
+    if (fd >= 0) {
+        temp_paths[slot] = t->tmp;  /* the name first, then the flag the handler reads */
+        temp_used[slot] = 1;
+        t->slot = slot;
+    }
+    pthread_mutex_unlock(&temp_lock);
+    pthread_sigmask(SIG_SETMASK, &old, NULL);
     if (fd < 0) {
-        pl_status st = pl_fail(diag, PL_ERR_IO, "%s: cannot write into its folder: %s", path, strerror(errno));
+        pl_status st = err ? pl_fail(diag, PL_ERR_IO, "%s: cannot write into its folder: %s", path, strerror(err))
+                           : pl_fail(diag, PL_ERR_IO, "%s: cannot write: already %d temporary files open (the most "
+                                     "one process tracks for cleanup)", path, FILE_MAX_TEMPS);
         free(t->tmp);
         t->tmp = NULL;
         file_temp_discard(t);
@@ -158,7 +181,6 @@ pl_status file_temp_create(const char *path, file_temp *t, pl_diag *diag)
     mode_t mask = umask(0);
     umask(mask);
     if (fchmod(fd, 0666 & ~mask) != 0) { /* keep 0600: still correct, only less shared */ }
-    t->slot = temp_register(t->tmp);
     t->f = fdopen(fd, "wb");
     if (!t->f) {
         close(fd);

@@ -28,7 +28,9 @@ bool file_has_extension(const char *path, const char *ext);
 
 /* A temporary file beside its final path, open for writing. It is created exclusively (a name an
  * attacker planted, even a symlink, is never opened), removed if the process gets SIGINT, SIGTERM
- * or SIGHUP, and becomes path only at file_temp_commit. */
+ * or SIGHUP, and becomes path only at file_temp_commit. At most FILE_MAX_TEMPS exist at once (more
+ * than every file one render writes): one more is refused, never left untracked. */
+#define FILE_MAX_TEMPS 16
 typedef struct {
     FILE *f;     /* write here */
     char *tmp;   /* its name, ".<name>.XXXXXX" in path's folder */

@@ -60,8 +60,9 @@ static void draw_legend(uint8_t *rgb8, int width, int height, int top, unsigned 
     draw_number(rgb8, width, height, width - margin, text_y, scale, 1);
 }
 
-pl_status render_heatmap(const struct render_ctx *ctx, const char *path, pl_diag *diag)
+pl_status heatmap_render(const struct render_ctx *ctx, const char *path, heatmap *out, pl_diag *diag)
 {
+    memset(out, 0, sizeof *out);
     if (!ctx->accel->use_bvh)
         return pl_fail(diag, PL_ERR_INVALID,
                        "%s: the heat map needs part 2's BVH (it is not implemented yet, or --no-bvh was given)", path);
@@ -101,8 +102,29 @@ pl_status render_heatmap(const struct render_ctx *ctx, const char *path, pl_diag
     unsigned scale = HEATMAP_SCALE;
     for (size_t i = 0; i < (size_t)w * h; i++) colormap_rate((float)visits[i] / (float)scale, rgb8 + 3 * i);
     draw_legend(rgb8, w, h + LEGEND_HEIGHT, h, scale);
-    pl_status st = image_write_png_rgb8(rgb8, w, h + LEGEND_HEIGHT, path, diag);
     free(visits);
-    free(rgb8);
+    *out = (heatmap){rgb8, w, h + LEGEND_HEIGHT};
+    return PL_OK;
+}
+
+pl_status heatmap_encode(FILE *f, const void *user, pl_diag *diag)
+{
+    const heatmap *map = user;
+    return image_encode_png_rgb8(f, map->rgb8, map->width, map->height, diag);
+}
+
+void heatmap_free(heatmap *map)
+{
+    if (!map) return;
+    free(map->rgb8);
+    memset(map, 0, sizeof *map);
+}
+
+pl_status render_heatmap(const struct render_ctx *ctx, const char *path, pl_diag *diag)
+{
+    heatmap map;
+    pl_status st = heatmap_render(ctx, path, &map, diag);
+    if (st == PL_OK) st = image_write_png_rgb8(map.rgb8, map.width, map.height, path, diag);
+    heatmap_free(&map);
     return st;
 }

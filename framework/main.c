@@ -57,12 +57,14 @@ static int run(const options *o, const char *prog)
     image img = {0};
     film fm = {0};
     int *samples = NULL;
+    heatmap heat = {0};
     accel a;
     memset(&a, 0, sizeof a);
 
     double t0 = now_seconds();
     dae_limits limits = dae_limits_default();
     limits.max_primitives = o->max_primitives;
+    limits.max_instances = o->max_instances;
     if (dae_load_limited(o->scene_path, &limits, &s, &diag) != PL_OK) {
         output_free(&out);
         return fail(prog, &diag, 2);
@@ -82,7 +84,8 @@ static int run(const options *o, const char *prog)
     render_ctx_init(&ctx, &s, &a, o);
     if (!o->quiet && isatty(STDERR_FILENO)) ctx.on_progress = print_progress;
 
-    if (o->heatmap && render_heatmap(&ctx, out.path[OUTPUT_HEATMAP], &diag) != PL_OK) { code = fail(prog, &diag, 1); goto done; }
+    /* The heat map is drawn now (it reads the BVH's visit counter) but written with the other files. */
+    if (o->heatmap && heatmap_render(&ctx, out.path[OUTPUT_HEATMAP], &heat, &diag) != PL_OK) { code = fail(prog, &diag, 1); goto done; }
 
     /* Every pixel's accumulators are kept only for an EXR, which stores them; other renders resolve
      * each pixel into the image as it finishes (render_image): same pixels, 144 bytes a pixel less. */
@@ -103,7 +106,8 @@ static int run(const options *o, const char *prog)
         fprintf(stderr, "%s: warning: %d pixels have NaN, infinite or negative radiance (first at x=%d y=%d, "
                         "counted from the bottom-left)\n", prog, stats.bad_pixels, stats.first_bad_x, stats.first_bad_y);
 
-    /* Image, rate map and sidecar: encoded in parallel, renamed into place together, or none. */
+    /* Image, rate map, heat map and sidecar: encoded in parallel, renamed into place together (the
+     * sidecar last), or none. */
     double t1 = now_seconds();
     rate_map rates = {samples, o->width, o->height, o->spp};
     sidecar_info info = {&ctx, load_seconds, a.build_seconds, &stats, o->adaptive ? samples : NULL};
@@ -116,8 +120,9 @@ static int run(const options *o, const char *prog)
                     exr ? (const void *)&exr_out : (const void *)&img);
         output_bind(&out, OUTPUT_RATE_MAP, rate_map_encode, &rates);
         output_bind(&out, OUTPUT_SIDECAR, sidecar_encode, &info);
-        if (output_write(&out, OUTPUT_IMAGE, OUTPUT_SIDECAR, &diag) != PL_OK) { code = fail(prog, &diag, 1); goto done; }
     }
+    if (o->heatmap) output_bind(&out, OUTPUT_HEATMAP, heatmap_encode, &heat);
+    if (output_write(&out, OUTPUT_IMAGE, OUTPUT_SIDECAR, &diag) != PL_OK) { code = fail(prog, &diag, 1); goto done; }
     if (!o->quiet) {
         double secs = stats.seconds > 0 ? stats.seconds : 1e-9;
         printf("[pathlab] %d primitives (%d triangles, %d spheres), %d lights; loaded in %.4f s\n",
@@ -135,11 +140,14 @@ static int run(const options *o, const char *prog)
                o->width, o->height, stats.seconds, o->threads, (unsigned long long)stats.rays, stats.rays / secs * 1e-6,
                (double)stats.samples / ((double)o->width * o->height));
         if (o->output)
-            printf("[pathlab] wrote %s, %s, %s in %.4f s\n", out.path[OUTPUT_IMAGE], out.path[OUTPUT_RATE_MAP],
-                   out.path[OUTPUT_SIDECAR], now_seconds() - t1);
+            printf("[pathlab] wrote %s, %s, %s%s%s in %.4f s\n", out.path[OUTPUT_IMAGE], out.path[OUTPUT_RATE_MAP],
+                   out.path[OUTPUT_SIDECAR], o->heatmap ? ", " : "", o->heatmap ? o->heatmap : "", now_seconds() - t1);
+        else if (o->heatmap)
+            printf("[pathlab] wrote %s\n", o->heatmap);
     }
 done:
     free(samples);
+    heatmap_free(&heat);
     image_free(&img);
     film_free(&fm);
     accel_free(&a);

@@ -33,6 +33,7 @@ typedef struct {
     bool linear_scan;         /* --no-bvh: skip part 2, intersect by linear scan */
     int max_leaf_size;        /* --leaf-size: BVH max primitives per leaf (4) */
     long max_primitives;      /* --max-primitives: the most triangles + spheres a scene may hold (2,000,000) */
+    long max_instances;       /* --max-instances: the most node instances a scene may expand to (1,000,000) */
     const char *heatmap;      /* --heatmap FILE.png: BVH nodes visited per pixel */
     bool verbose;             /* -v: print build and traversal statistics */
     bool quiet;               /* -q: no progress bar or summary */

@@ -10,7 +10,8 @@
 #include <sys/stat.h>
 #include <unistd.h>
 
-static const char *const flag_of[OUTPUT_KINDS] = {"-f", "-f (its rate map)", "-f (its sidecar)", "--heatmap"};
+static const char *const flag_of[OUTPUT_KINDS] = {"-f", "-f (its rate map)", "--heatmap", "-f (its sidecar)"};
+_Static_assert(FILE_MAX_TEMPS >= OUTPUT_KINDS, "a render's temporaries must all fit the cleanup table");
 
 /* "out.png" -> "out.json", "out.png" + "_rate" -> "out_rate.png": swaps or inserts before the extension. */
 static char *with_suffix(const char *path, const char *suffix, const char *extension)
@@ -62,6 +63,33 @@ static bool png_size_ok(int w, int h) { return ((long long)w * 3 + 1) * (long lo
  * the machine's memory: a size that cannot fit is refused before loading, not after rendering. */
 #define BYTES_PER_PIXEL 64
 
+/* Every output: a folder that takes it, not a directory, no other output's file, and not the file
+ * `input` (NULL: none; called once per input) names. */
+static pl_status check_paths(const output_set *set, const char *input, const char *input_flag, pl_diag *diag)
+{
+    char here[OUTPUT_KINDS][PATH_MAX * 2], in[PATH_MAX * 2];
+    if (input) canonical(input, in, sizeof in);
+    for (int k = 0; k < OUTPUT_KINDS; k++) {
+        if (!set->path[k]) continue;
+        pl_status st = check_folder(flag_of[k], set->path[k], diag);
+        if (st) return st;
+        canonical(set->path[k], here[k], sizeof here[k]);
+        for (int j = 0; j < k; j++)
+            if (set->path[j] && !strcmp(here[j], here[k]))
+                return pl_fail(diag, PL_ERR_INVALID, "%s %s and %s %s name the same file", flag_of[j], set->path[j],
+                               flag_of[k], set->path[k]);
+        if (input && !strcmp(in, here[k]))
+            return pl_fail(diag, PL_ERR_INVALID, "%s %s would overwrite %s (%s): choose another output name",
+                           flag_of[k], set->path[k], input_flag, input);
+    }
+    return PL_OK;
+}
+
+static bool image_extension_ok(const char *path)
+{
+    return file_has_extension(path, ".png") || file_has_extension(path, ".hdr") || file_has_extension(path, ".exr");
+}
+
 pl_status output_plan(output_set *set, const options *o, pl_diag *diag)
 {
     memset(set, 0, sizeof *set);
@@ -71,7 +99,7 @@ pl_status output_plan(output_set *set, const options *o, pl_diag *diag)
         return pl_fail(diag, PL_ERR_INVALID, "-r %d %d: %lld pixels need about %lld MB, more than half of this "
                        "machine's memory", o->width, o->height, pixels, pixels * BYTES_PER_PIXEL >> 20);
     if (o->output) {
-        if (!file_has_extension(o->output, ".png") && !file_has_extension(o->output, ".hdr") && !file_has_extension(o->output, ".exr"))
+        if (!image_extension_ok(o->output))
             return pl_fail(diag, PL_ERR_INVALID, "-f %s: expected a file name ending in .png, .hdr or .exr", o->output);
         set->path[OUTPUT_IMAGE] = strdup(o->output);
         set->path[OUTPUT_RATE_MAP] = with_suffix(o->output, "_rate", ".png");
@@ -87,32 +115,27 @@ pl_status output_plan(output_set *set, const options *o, pl_diag *diag)
         return pl_fail(diag, PL_ERR_INVALID, "-r %d %d: too large for a PNG file (the encoder's limit is about "
                        "715 million pixels)%s", o->width, o->height, png ? "" : "; the rate map is a PNG");
 
-    /* Every output: a folder that takes it, not a directory, and no other output's or input's file. */
     const char *inputs[2] = {o->scene_path, o->camera_file};
     const char *input_flag[2] = {"the scene", "the camera file (-c)"};
-    char here[OUTPUT_KINDS][PATH_MAX * 2];
-    for (int k = 0; k < OUTPUT_KINDS; k++) {
-        if (!set->path[k]) continue;
-        pl_status st = check_folder(flag_of[k], set->path[k], diag);
+    for (int i = 0; i < 2; i++) {
+        pl_status st = check_paths(set, inputs[i], input_flag[i], diag);
         if (st) return st;
-        canonical(set->path[k], here[k], sizeof here[k]);
-        for (int j = 0; j < k; j++)
-            if (set->path[j] && !strcmp(here[j], here[k]))
-                return pl_fail(diag, PL_ERR_INVALID, "%s %s and %s %s name the same file", flag_of[j], set->path[j],
-                               flag_of[k], set->path[k]);
-        for (int i = 0; i < 2; i++) {
-            char in[PATH_MAX * 2];
-            if (!inputs[i]) continue;
-            canonical(inputs[i], in, sizeof in);
-            if (!strcmp(in, here[k]))
-                return pl_fail(diag, PL_ERR_INVALID, "%s %s would overwrite %s (%s): choose another output name",
-                               flag_of[k], set->path[k], input_flag[i], inputs[i]);
-        }
     }
     for (int k = 0; k < OUTPUT_KINDS; k++)
         if (set->path[k] == NULL && ((k != OUTPUT_HEATMAP && o->output) || (k == OUTPUT_HEATMAP && o->heatmap)))
             return pl_fail(diag, PL_ERR_NOMEM, "out of memory");
     return PL_OK;
+}
+
+pl_status output_plan_merge(output_set *set, const char *output, const char *const *inputs, int count, pl_diag *diag)
+{
+    memset(set, 0, sizeof *set);
+    if (!image_extension_ok(output))
+        return pl_fail(diag, PL_ERR_INVALID, "-f %s: expected a file name ending in .png, .hdr or .exr", output);
+    if (!(set->path[OUTPUT_IMAGE] = strdup(output))) return pl_fail(diag, PL_ERR_NOMEM, "out of memory");
+    pl_status st = check_paths(set, NULL, NULL, diag);
+    for (int i = 0; i < count && !st; i++) st = check_paths(set, inputs[i], "an input of the merge", diag);
+    return st;
 }
 
 void output_bind(output_set *set, output_kind k, output_encode_fn encode, const void *user)
@@ -134,7 +157,15 @@ static void *encode_one(void *arg)
 {
     encode_job *j = arg;
     j->status = file_temp_create(j->set->path[j->kind], &j->temp, &j->diag);
-    if (!j->status) j->status = j->set->encode[j->kind](j->temp.f, j->set->user[j->kind], &j->diag);
+    if (!j->status && (j->status = j->set->encode[j->kind](j->temp.f, j->set->user[j->kind], &j->diag))) {
+        /* Encoders know bytes, not names ("could not encode or write a 800x600 PNG"): add the file's. */
+        const char *path = j->set->path[j->kind];
+        if (strncmp(j->diag.error, path, strlen(path)) != 0) {
+            char why[PL_DIAG_MSG_MAX];
+            snprintf(why, sizeof why, "%s", j->diag.error);
+            pl_fail(&j->diag, j->status, "%s: %s", path, why);
+        }
+    }
     if (!j->status) j->status = file_temp_close(&j->temp, &j->diag);
     return NULL;
 }
@@ -158,7 +189,7 @@ pl_status output_write(output_set *set, output_kind first, output_kind last, pl_
             pl_fail(diag, st, "%s", jobs[k].diag.error);
         }
     }
-    /* All or nothing: rename only when every file is complete; the sidecar, last in the kinds, last. */
+    /* All or nothing: rename only when every file is complete, in the kinds' order: the sidecar last. */
     for (int k = first; k <= (int)last; k++) {
         if (!set->path[k] || !set->encode[k]) continue;
         if (st) file_temp_discard(&jobs[k].temp);

@@ -20,7 +20,8 @@
 /* Writes one file's bytes to f; user is what output_bind was given. */
 typedef pl_status (*output_encode_fn)(FILE *f, const void *user, pl_diag *diag);
 
-typedef enum { OUTPUT_IMAGE, OUTPUT_RATE_MAP, OUTPUT_SIDECAR, OUTPUT_HEATMAP, OUTPUT_KINDS } output_kind;
+/* In the order output_write renames them: the sidecar last. */
+typedef enum { OUTPUT_IMAGE, OUTPUT_RATE_MAP, OUTPUT_HEATMAP, OUTPUT_SIDECAR, OUTPUT_KINDS } output_kind;
 
 typedef struct {
     char *path[OUTPUT_KINDS];              /* NULL: not written by this render (owned) */
@@ -30,6 +31,9 @@ typedef struct {
 
 /* Derives and checks every output path of o (see above). Exit-2 errors name the flag and path. */
 pl_status output_plan(output_set *set, const options *o, pl_diag *diag);
+/* The plan of `--merge -f output IN...`: output is the image alone, with the same checks (extension,
+ * not a directory, a folder that takes it, none of the inputs), made before any input is read. */
+pl_status output_plan_merge(output_set *set, const char *output, const char *const *inputs, int count, pl_diag *diag);
 /* Says how output kind k is encoded (before output_write). */
 void output_bind(output_set *set, output_kind k, output_encode_fn encode, const void *user);
 /* Writes the kinds in [first, last] as one unit: all renamed into place, sidecar last, or none. */

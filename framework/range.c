@@ -2,6 +2,7 @@
 #include "range.h"
 #include "file.h"
 #include "image.h"
+#include "output.h"
 #include "version.h"
 #include <inttypes.h>
 #include <stdlib.h>
@@ -113,25 +114,29 @@ static pl_status check_ranges(const range_input *in, int count, pl_diag *diag)
     return PL_OK;
 }
 
-/* Sums the checked inputs into in[0].film and writes it: EXR with the merged provenance, or the
- * image of the means through the same writer a single render uses. */
-static pl_status write_merged(const char *out, range_input *in, int count, pl_diag *diag)
+/* Sums the checked inputs into in[0].film and writes it through the planned output set (an
+ * exclusive temporary renamed into place, as a render's files): EXR with the merged provenance,
+ * or the image of the means through the encoder a single render uses. */
+static pl_status write_merged(output_set *out, range_input *in, int count, pl_diag *diag)
 {
     film *total = &in[0].film;
     long pixels = (long)total->width * total->height;
     for (int i = 1; i < count; i++)
         for (long p = 0; p < pixels; p++) film_pixel_merge(&total->pixels[p], &in[i].film.pixels[p]);
-    if (file_has_extension(out, ".exr")) {
+    const char *path = out->path[OUTPUT_IMAGE];
+    if (file_has_extension(path, ".exr")) {
         exr_info info = in[0].info;
         info.sample_begin = 0;
         info.sample_end = info.sample_total;
         exr_image img = {total, &info};
-        return exr_write(out, &img, diag);
+        output_bind(out, OUTPUT_IMAGE, exr_encode, &img);
+        return output_write(out, OUTPUT_IMAGE, OUTPUT_IMAGE, diag);
     }
     image img;
     if (image_alloc(&img, total->width, total->height) != PL_OK) return pl_fail(diag, PL_ERR_NOMEM, "out of memory");
     pl_status s = film_to_image(total, &img, NULL, diag);
-    if (s == PL_OK) s = image_write(&img, out, diag);
+    output_bind(out, OUTPUT_IMAGE, file_has_extension(path, ".hdr") ? image_encode_hdr : image_encode_png, &img);
+    if (s == PL_OK) s = output_write(out, OUTPUT_IMAGE, OUTPUT_IMAGE, diag);
     image_free(&img);
     return s;
 }
@@ -147,8 +152,15 @@ int range_merge_main(int argc, char **argv, const char *prog)
         fprintf(stderr, "%s: --merge: expected --merge -f OUT.exr|OUT.png|OUT.hdr IN1.exr [IN2.exr ...]\n", prog);
         return 2;
     }
+    /* The output is checked as a render's are, before a byte of any input is read. */
+    output_set plan;
+    if (output_plan_merge(&plan, out, (const char *const *)argv + first_input, count, &diag) != PL_OK) {
+        fprintf(stderr, "%s: --merge: %s\n", prog, diag.error);
+        output_free(&plan);
+        return 2;
+    }
     range_input *in = calloc((size_t)count, sizeof *in);
-    if (!in) { fprintf(stderr, "%s: out of memory\n", prog); return 1; }
+    if (!in) { fprintf(stderr, "%s: out of memory\n", prog); output_free(&plan); return 1; }
     pl_status s = PL_OK;
     int read = 0;
     for (; read < count && s == PL_OK; read++) {
@@ -161,9 +173,10 @@ int range_merge_main(int argc, char **argv, const char *prog)
         s = check_ranges(in, count, &diag);
     }
     int code = s == PL_OK ? 0 : 2;
-    if (s == PL_OK && write_merged(out, in, count, &diag) != PL_OK) code = 1;
+    if (s == PL_OK && write_merged(&plan, in, count, &diag) != PL_OK) code = 1;
     if (code) fprintf(stderr, "%s: --merge: %s\n", prog, diag.error);
     for (int i = 0; i < read; i++) film_free(&in[i].film);
     free(in);
+    output_free(&plan);
     return code;
 }

@@ -5,9 +5,9 @@
  *
  * Why so narrow: part code runs inside the grader's test and render processes, so any function it
  * can reach is a way to act outside its task. Files (exr_read, file_write_atomic, image_write...)
- * could read a reference or write a result; the counter resets (scene_take_prim_tests,
- * bvh_take_visits, accel_take_ray_count) could hide the work a BVH does from the work-per-ray
- * verdict; scene builders and the render loops are the framework's to drive, not a task's. What is
+ * could read a reference or write a result; the work counters' readers and resets (counters_take,
+ * counters_add_*, counters_trace_*: framework/counters.h) could hide the work a BVH does from the
+ * work-per-ray verdict; scene builders and the render loops are the framework's to drive, not a task's. What is
  * left is what the tasks need: math, random numbers, samplers, the scene, BVH, light and BSDF
  * accessors, the intersection entry points and the stub helpers. */
 #include "grade_inspect.h"
@@ -23,8 +23,8 @@ static const char *const allowed_framework[] = {
     "rng_for_sample", "rng_seeded", "rng_u32", "rng_uniform", "sample_cosine_hemisphere",
     "sample_cosine_hemisphere_pdf", "sample_uniform_disk", "sample_uniform_disk_pdf", "sample_uniform_hemisphere",
     "sample_uniform_hemisphere_pdf", "sample_uniform_sphere", "sample_uniform_sphere_pdf", "sample_uniform_triangle",
-    /* scene, BVH and light accessors; bvh_node_visits is the counter bvh_visit() (bvh.h) adds to */
-    "scene_bounds", "scene_prim_bounds", "scene_prim_centroid", "bvh_free", "bvh_node_visits", "light_is_delta",
+    /* scene, BVH and light accessors; bvh_visit reads a node and counts the visit (bvh.h) */
+    "scene_bounds", "scene_prim_bounds", "scene_prim_centroid", "bvh_free", "bvh_visit", "light_is_delta",
     "light_sample_L",
     /* the intersection entry points and the estimators a later part builds on */
     "scene_prim_intersect", "accel_intersect", "accel_occluded", "linear_intersect", "linear_occluded",

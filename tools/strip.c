@@ -98,36 +98,92 @@ static bool starts_word(const char *s, size_t len, const char *word)
     return len == n || !isalnum((unsigned char)s[n]);
 }
 
-/* A comment that a reader (or a careless edit) would take for a marker but the stripper would not:
- * a line comment instead of a block comment, a missing or doubled blank, another letter case. Such
- * a line would pass through a release with the solution under it, so it is an error, never plain
- * text. Looked for after every comment opener on the line: a BEGIN or END word followed by SOLUTION
- * (blanks, '_' or '-' between), or a comment whose first word is STUB followed by a colon or
- * nothing ("Stub bookkeeping" in prose is fine). */
-static bool near_miss(const line *l)
+/* Whether the ASCII word w[0..n) is one of the (lowercase) words in set, in any letter case. */
+static bool word_in(const char *w, size_t n, const char *const *set)
 {
-    for (size_t i = 0; i + 1 < l->len; i++) {
-        if (l->text[i] != '/' || (l->text[i + 1] != '*' && l->text[i + 1] != '/')) continue;
-        const char *c = l->text + i + 2, *end = l->text + l->len;
-        while (c < end && (*c == '*' || *c == '/' || isspace((unsigned char)*c))) c++;
-        if (starts_word(c, (size_t)(end - c), "stub")) {
-            const char *d = c + 4;
-            while (d < end && isspace((unsigned char)*d)) d++;
-            if (d == end || *d == ':' || (*d == '*' && d + 1 < end && d[1] == '/')) return true;
+    for (; *set; set++)
+        if (strlen(*set) == n && strncasecmp(w, *set, n) == 0) return true;
+    return false;
+}
+
+static const char *const EDGE_WORDS[] = {"begin", "end", NULL};
+static const char *const SOLUTION_WORDS[] = {"solution", "solutions", NULL};
+
+/* Whether w[0..n) is an edge word and a solution word glued together, in either order. */
+static bool glued(const char *w, size_t n)
+{
+    for (size_t k = 1; k < n; k++)
+        if ((word_in(w, k, EDGE_WORDS) && word_in(w + k, n - k, SOLUTION_WORDS)) ||
+            (word_in(w, k, SOLUTION_WORDS) && word_in(w + k, n - k, EDGE_WORDS)))
+            return true;
+    return false;
+}
+
+/* In comment text c[0..end): the first place where BEGIN or END and SOLUTION(S) stand side by side,
+ * in either order, in any case, with only blanks, '_' or '-' between (or glued into one word).
+ * Its start and length go to *at, *len. */
+static bool marker_words(const char *c, const char *end, const char **at, size_t *len)
+{
+    const char *prev = NULL;
+    size_t prev_len = 0;
+    bool prev_adjacent = false;  /* only blanks, '_' or '-' since the previous word */
+    for (const char *s = c; s < end;) {
+        if (!isalnum((unsigned char)*s)) {
+            if (!isblank((unsigned char)*s) && *s != '_' && *s != '-') prev_adjacent = false;
+            s++;
+            continue;
         }
-        for (; c < end; c++) {
-            size_t w = starts_word(c, (size_t)(end - c), "begin") ? 5 : starts_word(c, (size_t)(end - c), "end") ? 3 : 0;
-            if (w == 0 || (c > l->text && isalnum((unsigned char)c[-1]))) continue;
-            const char *d = c + w;
-            while (d < end && (isspace((unsigned char)*d) || *d == '_' || *d == '-')) d++;
-            if (starts_word(d, (size_t)(end - d), "solution")) return true;
+        const char *w = s;
+        while (s < end && isalnum((unsigned char)*s)) s++;
+        size_t n = (size_t)(s - w);
+        bool pair = prev && prev_adjacent &&
+                    ((word_in(prev, prev_len, EDGE_WORDS) && word_in(w, n, SOLUTION_WORDS)) ||
+                     (word_in(prev, prev_len, SOLUTION_WORDS) && word_in(w, n, EDGE_WORDS)));
+        if (pair || glued(w, n)) {
+            *at = pair ? prev : w;
+            *len = (size_t)(s - *at);
+            return true;
         }
+        prev = w;
+        prev_len = n;
+        prev_adjacent = true;
     }
     return false;
 }
 
-/* What a line is; a marker that shares its line with anything else is an error. */
-static pl_status classify(const pass *p, const line *l, line_kind *kind)
+/* A comment that a reader (or a careless edit) would take for a marker but the stripper would not:
+ * a line comment instead of a block comment, a missing or doubled blank, another letter case, the
+ * words swapped or plural, '_' or '-' between them. Such a line would pass through a release with
+ * the solution under it, so it is an error, never plain text. Looked for in every comment on the
+ * line (after each opener, and the whole line when it starts inside a block comment): BEGIN or END
+ * beside SOLUTION(S) (marker_words), or a comment whose first word is STUB followed by a colon or
+ * nothing ("Stub bookkeeping" in prose is fine; so is "the end of the solution"). On a hit, the
+ * words go to *at, *len. */
+static bool near_miss(const line *l, bool in_comment, const char **at, size_t *len)
+{
+    const char *end = l->text + l->len;
+    if (in_comment && marker_words(l->text, end, at, len)) return true;
+    for (size_t i = 0; i + 1 < l->len; i++) {
+        if (l->text[i] != '/' || (l->text[i + 1] != '*' && l->text[i + 1] != '/')) continue;
+        const char *c = l->text + i + 2;
+        while (c < end && (*c == '*' || *c == '/' || isspace((unsigned char)*c))) c++;
+        if (starts_word(c, (size_t)(end - c), "stub")) {
+            const char *d = c + 4;
+            while (d < end && isspace((unsigned char)*d)) d++;
+            if (d == end || *d == ':' || (*d == '*' && d + 1 < end && d[1] == '/')) {
+                *at = c;
+                *len = (size_t)(d - c);
+                return true;
+            }
+        }
+        if (marker_words(c, end, at, len)) return true;
+    }
+    return false;
+}
+
+/* What a line is; a marker that shares its line with anything else is an error. in_comment: the
+ * line starts inside a block comment. */
+static pl_status classify(const pass *p, const line *l, bool in_comment, line_kind *kind)
 {
     const char *s;
     size_t n;
@@ -148,10 +204,15 @@ static pl_status classify(const pass *p, const line *l, line_kind *kind)
         *kind = LINE_STUB;
         return PL_OK;
     }
-    if (near_miss(l))
-        return fail(p, l, "a comment that looks like a solution marker but is not spelt exactly `" MARK_BEGIN
-                          "`, `" MARK_END "` or `" MARK_STUB " <code> */`; expected the exact marker (the "
-                          "release would copy this line and the solution after it)");
+    const char *at;
+    size_t at_len;
+    if (near_miss(l, in_comment, &at, &at_len)) {
+        char msg[512];
+        snprintf(msg, sizeof msg, "`%.*s` looks like a solution marker but is not spelt exactly `" MARK_BEGIN
+                 "`, `" MARK_END "` or `" MARK_STUB " <code> */`; expected the exact marker (the release would "
+                 "copy this line and the solution after it)", (int)(at_len > 60 ? 60 : at_len), at);
+        return fail(p, l, msg);
+    }
     *kind = starts(s, n, MARK_BANNER) ? LINE_BANNER : LINE_PLAIN;
     return PL_OK;
 }
@@ -414,7 +475,7 @@ static pl_status run(pass *p, const char *in, size_t len)
     for (int number = 1; pos < len; number++) {
         line l = next_line(in, len, &pos, number);
         line_kind kind = LINE_PLAIN;
-        pl_status s = classify(p, &l, &kind);
+        pl_status s = classify(p, &l, in_comment, &kind);
         if (s == PL_OK && p->banners) s = track_task(p, &st, &l, kind, after_end);
         if (s != PL_OK) return s;
         if (after_end && kind != LINE_STUB && begin_depth > 0) return stubless_in_body(p, &begin_line);

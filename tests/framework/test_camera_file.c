@@ -94,6 +94,41 @@ static void test_camera_file_load__refuses_values_that_are_not_a_camera(void **s
     }
 }
 
+/* Regression (issue 7 audit): a finite but huge position (1e38 rendered all black, exit 0), a focal
+ * distance <= 0 and lines after the sixth were accepted. Each is refused with file:line. */
+static void test_camera_file_load__refuses_far_positions_bad_focus_and_trailing_lines(void **state)
+{
+    static const char *const lens = "50 40 1.333 0.1 100\n";
+    static const char *const middle = "0 0 3.7 0.1 10\n1 0 0 0 1 0 0 0 1\n800 600 1\n";
+    struct { const char *pose, *focus, *after, *expect; } cases[] = {
+        {"1e38 2 3  0 0 0", "4.7 0", "", ":2: expected coordinates within +-1e+18 (position xyz, target xyz), got 1e+38 as number 1"},
+        {"1 2 3  0 0 -2e18", "4.7 0", "", ":2: expected coordinates within +-1e+18 (position xyz, target xyz), got -2e+18 as number 6"},
+        {"1 2 3  0 0 0", "0 0", "", ":6: expected a focal distance in (0, 1e+18], got 0"},
+        {"1 2 3  0 0 0", "-4.7 0", "", ":6: expected a focal distance in (0, 1e+18], got -4.7"},
+        {"1 2 3  0 0 0", "1e30 0", "", ":6: expected a focal distance in (0, 1e+18], got 1e+30"},
+        {"1 2 3  0 0 0", "4.7 0", "7 8\n", ":7: expected the end of the file after six lines, found '7 8'"},
+        {"1 2 3  0 0 0", "4.7 0", "\n \r\n\tjunk", ":9: expected the end of the file after six lines, found 'junk'"},
+    };
+    for (size_t i = 0; i < sizeof cases / sizeof cases[0]; i++) {
+        char text[512];
+        snprintf(text, sizeof text, "%s%s\n%s%s\n%s", lens, cases[i].pose, middle, cases[i].focus, cases[i].after);
+        const char *path = write_file(text);
+        camera c;
+        pl_diag d = pl_diag_default();
+        pl_status s = camera_file_load(path, &c, &d);
+        if (s == PL_OK || !strstr(d.error, cases[i].expect) || !strstr(d.error, path))
+            fail_msg("case %zu: expected an error with '%s' and the path, got status %d: '%s'", i, cases[i].expect, s, d.error);
+        remove(path);
+    }
+    /* Blank lines (and CRLF endings) after the sixth are not junk; coordinates at the cap are fine. */
+    const char *path = write_file("50 40 1.333 0.1 100\r\n1e18 2 3  0 0 -1e18\r\n0 0 3.7 0.1 10\r\n"
+                                  "1 0 0 0 1 0 0 0 1\r\n800 600 1\r\n4.7 0\r\n\r\n  \n");
+    camera c;
+    pl_diag d = pl_diag_default();
+    if (camera_file_load(path, &c, &d) != PL_OK) fail_msg("expected the file to load: %s", d.error);
+    remove(path);
+}
+
 /* A rotation as CS184 saves it (6 significant digits) and one typed by hand (0.7071) are accepted. */
 static void test_camera_file_load__accepts_rounded_rotations(void **state)
 {
@@ -148,6 +183,7 @@ int camera_file_tests(void)
         cmocka_unit_test(test_camera_file_load__reads_pose_and_lens),
         cmocka_unit_test(test_camera_file_load__errors_name_file_line_and_field),
         cmocka_unit_test(test_camera_file_load__refuses_values_that_are_not_a_camera),
+        cmocka_unit_test(test_camera_file_load__refuses_far_positions_bad_focus_and_trailing_lines),
         cmocka_unit_test(test_camera_file_load__accepts_rounded_rotations),
         cmocka_unit_test(test_camera_file_load__refuses_non_regular_files),
         cmocka_unit_test(test_camera_file_load__refuses_files_over_the_cap),

@@ -47,7 +47,8 @@ static void test_cli__every_flag_is_read(void **state)
     assert_int_equal(PL_OK, parse(&o, &d, (const char *[]){"-s", "64", "-l", "4", "-t", "2", "-m", "5", "-o", "0", "-b", "0.1",
                                                            "-d", "3", "-f", "x.png", "-r", "480", "360", "-a", "16", "0.1",
                                                            "-H", "--seed", "99", "--normals", "--cs184-camera",
-                                                           "--no-bvh", "--no-rr", "--leaf-size", "8", "-v", "scene.dae", NULL}));
+                                                           "--no-bvh", "--no-rr", "--leaf-size", "8", "--max-primitives", "300",
+                                                           "--max-instances", "400", "-v", "scene.dae", NULL}));
     assert_int_equal(64, o.spp);
     assert_int_equal(4, o.light_samples);
     assert_int_equal(2, o.threads);
@@ -65,6 +66,8 @@ static void test_cli__every_flag_is_read(void **state)
     assert_true(o.hemisphere && o.normals && o.cs184_framing && o.linear_scan && o.no_roulette && o.verbose);
     assert_int_equal(99, (int)o.seed);
     assert_int_equal(8, o.max_leaf_size);
+    assert_int_equal(300, o.max_primitives);
+    assert_int_equal(400, o.max_instances);
     assert_non_null(strstr(o.command_line, "-r 480 360"));
     cli_free(&o);
 }
@@ -90,6 +93,7 @@ static void test_cli__bad_values_are_named(void **state)
     expect_error((const char *[]){"-o", "2", "s.dae", NULL}, "-o");
     expect_error((const char *[]){"-b", "-1", "s.dae", NULL}, "-b");
     expect_error((const char *[]){"--seed", "-3", "s.dae", NULL}, "--seed");
+    expect_error((const char *[]){"--max-instances", "0", "s.dae", NULL}, "--max-instances: expected an integer from 1");
     expect_error((const char *[]){"--bogus", "s.dae", NULL}, "unknown option '--bogus'");
     expect_error((const char *[]){NULL}, "expected a scene file");
     expect_error((const char *[]){"a.dae", "b.dae", NULL}, "expected one scene file");

@@ -168,6 +168,21 @@ static void test_dae_load__missing_file_is_io_error_naming_it(void **state)
     assert_scene_empty(&s);
 }
 
+/* The instance cap (1,000,000 by default) is a limit, not a wall: the message names the flag that
+ * raises it, and a raised cap loads the 101^3-node fan-out of the broken corpus. */
+static void test_dae_load__instance_cap_names_its_flag_and_can_be_raised(void **state)
+{
+    (void)state;
+    scene s;
+    pl_diag d = pl_diag_default();
+    assert_int_equal(PL_ERR_INVALID, dae_load(BROKEN "instance_fanout_nodes.dae", &s, &d));
+    if (!strstr(d.error, "--max-instances N raises it")) fail_msg("the message does not name the flag: %s", d.error);
+    dae_limits limits = dae_limits_default();
+    limits.max_instances = 2000000;
+    if (dae_load_limited(BROKEN "instance_fanout_nodes.dae", &limits, &s, &d) != PL_OK) fail_msg("%s", d.error);
+    scene_free(&s);
+}
+
 /* Reads "<!-- expect: STATUS LINE MESSAGE -->" from the file's first line. */
 static bool read_expectation(const char *path, pl_status *status, long *line, char *message, size_t size)
 {
@@ -740,6 +755,7 @@ int dae_tests(void)
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(test_dae_load__missing_file_is_io_error_naming_it),
         cmocka_unit_test(test_dae_load__every_broken_file_is_rejected_with_file_line_and_element),
+        cmocka_unit_test(test_dae_load__instance_cap_names_its_flag_and_can_be_raised),
         cmocka_unit_test(test_dae_load__numbers_match_strtof_exactly),
         cmocka_unit_test(test_dae_load__truncated_files_are_rejected_at_every_cut),
         cmocka_unit_test(test_dae_load__random_corruption_never_crashes),

@@ -6,6 +6,7 @@
 #include "../../framework/output.h"
 #include "../../framework/file.h"
 #include <dirent.h>
+#include <dlfcn.h>
 #include <jansson.h>
 #include <signal.h>
 #include <stdio.h>
@@ -19,6 +20,19 @@
 #define SCENE "scenes/cornell_spheres.dae"
 
 static char dir[64];
+
+/* file.c's mkstemp resolves to this one (defined in the executable): when a test sets
+ * raise_after_mkstemp, SIGTERM arrives right after the temporary exists, before anything else runs. */
+static volatile int raise_after_mkstemp;
+
+int mkstemp(char *template)
+{
+    static int (*real)(char *);
+    if (!real) *(void **)&real = dlsym(RTLD_NEXT, "mkstemp");
+    int fd = real(template);
+    if (fd >= 0 && raise_after_mkstemp) raise(SIGTERM);
+    return fd;
+}
 
 static int make_dir(void **state)
 {
@@ -223,20 +237,17 @@ static void test_output__signal_removes_temporaries(void **state)
     expect_files("");
 }
 
-/* A full disk (a 64 KB tmpfs, mounted when the tests run as root): a clear error and no file. */
-static void test_output__full_disk_leaves_nothing(void **state)
+/* Mounts a 64 KB tmpfs at <dir>/small and fills it to the last byte, so any output fails however
+ * well it compresses (a stubbed render is one flat colour). Skips the test unless run as root. */
+static void mount_full_disk(char *mnt, size_t size)
 {
-    (void)state;
-    char mnt[128];
-    snprintf(mnt, sizeof mnt, "%s/small", dir);
+    snprintf(mnt, size, "%s/small", dir);
     assert_int_equal(0, mkdir(mnt, 0755));
     if (geteuid() != 0 || mount("tmpfs", mnt, "tmpfs", 0, "size=64k") != 0) {
         print_message("skipped: mounting a small tmpfs needs root (run the tests as root to check full disks)\n");
         rmdir(mnt);
         skip();
     }
-    /* Fill it to the last byte first, so any output fails however well it compresses (a stubbed
-     * render is one flat colour). */
     char filler[160];
     snprintf(filler, sizeof filler, "%s/filler", mnt);
     FILE *f = fopen(filler, "w");
@@ -244,20 +255,66 @@ static void test_output__full_disk_leaves_nothing(void **state)
     static const char block[512];
     while (fwrite(block, 1, sizeof block, f) == sizeof block && fflush(f) == 0) {}
     fclose(f);
-    char fmt[256];
-    snprintf(fmt, sizeof fmt, "-t 2 -s 2 -r 400 300 -f %%s/small/x.png " SCENE);
-    int code = render(fmt);
-    char names[1024] = "";
+}
+
+/* Unmounts it; returns what it held besides the filler, space-separated. */
+static void unmount_full_disk(const char *mnt, char *names, size_t size)
+{
+    names[0] = '\0';
     DIR *d = opendir(mnt);
     for (struct dirent *e; d && (e = readdir(d));)
         if (strcmp(e->d_name, ".") && strcmp(e->d_name, "..") && strcmp(e->d_name, "filler"))
-            strncat(names, e->d_name, sizeof names - strlen(names) - 2);
+            strncat(names, e->d_name, size - strlen(names) - 2);
     if (d) closedir(d);
+    char filler[160];
+    snprintf(filler, sizeof filler, "%s/filler", mnt);
     unlink(filler);
     umount(mnt);
     rmdir(mnt);
+}
+
+static void read_stderr(char *err, size_t size)
+{
+    char path[128];
+    snprintf(path, sizeof path, "%s/stderr.txt", dir);
+    err[0] = '\0';
+    FILE *f = fopen(path, "r");
+    if (!f) return;
+    size_t n = fread(err, 1, size - 1, f);
+    err[n] = '\0';
+    fclose(f);
+}
+
+/* A full disk: a clear error naming the file, and no file. */
+static void test_output__full_disk_leaves_nothing(void **state)
+{
+    (void)state;
+    char mnt[128], names[1024], err[2048];
+    mount_full_disk(mnt, sizeof mnt);
+    int code = render("-t 2 -s 2 -r 400 300 -f %s/small/x.png " SCENE);
+    unmount_full_disk(mnt, names, sizeof names);
     assert_int_equal(1, code);
     if (names[0]) fail_msg("the full filesystem holds '%s', expected nothing", names);
+    read_stderr(err, sizeof err);
+    if (!strstr(err, "small/x.png")) fail_msg("the message does not name the file: '%s'", err);
+}
+
+/* The heat map is one of the render's outputs: when the image cannot be written, it is not either. */
+static void test_output__heatmap_commits_with_the_image(void **state)
+{
+    (void)state;
+    assert_int_equal(0, render("--normals -r 16 12 --heatmap %s/h.png -f %s/x.png " SCENE));
+    expect_files("h.png x.json x.png x_rate.png");
+    char cmd[256];
+    snprintf(cmd, sizeof cmd, "rm -f %s/*.png %s/*.json", dir, dir);
+    assert_int_equal(0, system(cmd));
+    char mnt[128], names[1024];
+    mount_full_disk(mnt, sizeof mnt);
+    int code = render("--normals -r 64 48 --heatmap %s/h.png -f %s/small/x.png " SCENE);
+    unmount_full_disk(mnt, names, sizeof names);
+    assert_int_equal(1, code);
+    if (names[0]) fail_msg("the full filesystem holds '%s', expected nothing", names);
+    expect_files("");
 }
 
 /* A path that is not UTF-8 still gives a sidecar that parses. */
@@ -274,6 +331,148 @@ static void test_output__non_utf8_path_gives_valid_json(void **state)
     json_decref(j);
 }
 
+/* ---- --merge writes through the same plan and temporaries as a render --------------------- */
+
+/* Renders samples 0:1 and 1:2 of a tiny render as <dir>/r0.exr and <dir>/r1.exr. */
+static void render_two_pieces(void)
+{
+    assert_int_equal(0, render("--normals -r 8 6 -s 2 --samples 0:1 -f %s/r0.exr " SCENE));
+    assert_int_equal(0, render("--normals -r 8 6 -s 2 --samples 1:2 -f %s/r1.exr " SCENE));
+    char cmd[256];
+    snprintf(cmd, sizeof cmd, "rm -f %s/*.json %s/*_rate.png", dir, dir);
+    assert_int_equal(0, system(cmd));
+}
+
+/* Runs a shell line (a format with %s for the scratch folder, up to six times); returns the exit code. */
+static int shell(const char *fmt)
+{
+    char line[1024], cmd[1200];
+    snprintf(line, sizeof line, fmt, dir, dir, dir, dir, dir, dir);
+    snprintf(cmd, sizeof cmd, "%s >/dev/null 2>%s/stderr.txt", line, dir);
+    int status = system(cmd);
+    return WIFEXITED(status) ? WEXITSTATUS(status) : 128 + WTERMSIG(status);
+}
+
+static void expect_text(const char *name, const char *want)
+{
+    char path[128], buf[64] = "";
+    snprintf(path, sizeof path, "%s/%s", dir, name);
+    FILE *f = fopen(path, "r");
+    assert_non_null(f);
+    if (!fgets(buf, sizeof buf, f)) buf[0] = '\0';
+    fclose(f);
+    assert_string_equal(want, buf);
+}
+
+/* The old merge wrote <out>.tmp.<pid> with fopen: a symlink planted under that name (the shell's
+ * pid, which exec hands on) made it overwrite the link's target. */
+static void test_output__merge_never_follows_a_planted_temp_name(void **state)
+{
+    (void)state;
+    render_two_pieces();
+    assert_int_equal(0, shell("echo precious > %s/victim.txt; ln -s %s/victim.txt %s/m.exr.tmp.$$; "
+                              "exec bin/pathtracer --merge -f %s/m.exr %s/r0.exr %s/r1.exr"));
+    expect_text("victim.txt", "precious\n");
+    char path[128];
+    snprintf(path, sizeof path, "%s/m.exr", dir);
+    struct stat st;
+    assert_int_equal(0, lstat(path, &st));
+    assert_true(S_ISREG(st.st_mode));
+}
+
+static void expect_merge_refused(const char *fmt, const char *message)
+{
+    int code = shell(fmt);
+    char err[2048];
+    read_stderr(err, sizeof err);
+    if (code != 2 || !strstr(err, message))
+        fail_msg("'%s': exit %d, stderr '%s'; expected exit 2 and '%s'", fmt, code, err, message);
+}
+
+/* Merge outputs are checked before any input is read: not an input, not a directory, a known
+ * extension, a folder that exists. The inputs here need not even exist. */
+static void test_output__merge_checks_its_output_first(void **state)
+{
+    (void)state;
+    render_two_pieces();
+    char sums[2][64];
+    for (int i = 0; i < 2; i++) {
+        char path[128];
+        snprintf(path, sizeof path, "%s/r%d.exr", dir, i);
+        struct stat st;
+        assert_int_equal(0, stat(path, &st));
+        snprintf(sums[i], sizeof sums[i], "%lld", (long long)st.st_size);
+    }
+    expect_merge_refused("bin/pathtracer --merge -f %s/r0.exr %s/r0.exr %s/r1.exr", "would overwrite");
+    expect_merge_refused("bin/pathtracer --merge -f %s/./r1.exr %s/r0.exr %s/r1.exr", "would overwrite");
+    expect_merge_refused("mkdir %s/d.exr && bin/pathtracer --merge -f %s/d.exr %s/no-such-input.exr", "is a directory");
+    expect_merge_refused("bin/pathtracer --merge -f %s/no/such/folder/m.exr %s/no-such-input.exr", "cannot write into");
+    expect_merge_refused("bin/pathtracer --merge -f %s/m.jpg %s/no-such-input.exr", "OUT.exr|OUT.png|OUT.hdr");
+    char sub[128];
+    snprintf(sub, sizeof sub, "%s/d.exr", dir);
+    rmdir(sub);
+    expect_files("r0.exr r1.exr");
+    for (int i = 0; i < 2; i++) {
+        char path[128];
+        snprintf(path, sizeof path, "%s/r%d.exr", dir, i);
+        struct stat st;
+        assert_int_equal(0, stat(path, &st));
+        char now[64];
+        snprintf(now, sizeof now, "%lld", (long long)st.st_size);
+        assert_string_equal(sums[i], now);
+    }
+}
+
+/* ---- the cleanup table ----------------------------------------------------------------------- */
+
+/* A stop signal between creating a temporary and registering it for cleanup must not leave it:
+ * mkstemp (above) raises SIGTERM the moment the file exists. */
+static void test_output__signal_right_after_create_leaves_nothing(void **state)
+{
+    (void)state;
+    pid_t pid = fork();
+    assert_true(pid >= 0);
+    if (pid == 0) {
+        char path[128];
+        snprintf(path, sizeof path, "%s/x.png", dir);
+        raise_after_mkstemp = 1;
+        file_temp t;
+        file_temp_create(path, &t, NULL);
+        _exit(4);  /* not reached: SIGTERM, at the latest when the signals are unblocked */
+    }
+    int status;
+    assert_int_equal(pid, waitpid(pid, &status, 0));
+    assert_true(WIFSIGNALED(status) && WTERMSIG(status) == SIGTERM);
+    expect_files("");
+}
+
+/* Every temporary is tracked: the table holds every file a render writes, and one more than it
+ * holds is refused, not created untracked. A stop signal then removes them all. */
+static void test_output__every_temporary_is_tracked_or_refused(void **state)
+{
+    (void)state;
+    assert_true(FILE_MAX_TEMPS >= OUTPUT_KINDS);
+    pid_t pid = fork();
+    assert_true(pid >= 0);
+    if (pid == 0) {
+        char path[128];
+        snprintf(path, sizeof path, "%s/x.png", dir);
+        file_temp t[FILE_MAX_TEMPS + 1];
+        for (int i = 0; i < FILE_MAX_TEMPS; i++)
+            if (file_temp_create(path, &t[i], NULL) != PL_OK) _exit(3);
+        pl_diag d = pl_diag_default();
+        if (file_temp_create(path, &t[FILE_MAX_TEMPS], &d) == PL_OK) _exit(5);
+        if (!strstr(d.error, "x.png")) _exit(6);
+        raise(SIGTERM);
+        _exit(4);
+    }
+    int status;
+    assert_int_equal(pid, waitpid(pid, &status, 0));
+    if (WIFEXITED(status)) fail_msg("the child exited %d instead of dying of SIGTERM", WEXITSTATUS(status));
+    assert_true(WIFSIGNALED(status) && WTERMSIG(status) == SIGTERM);
+    expect_files("");
+}
+
 int output_tests(void)
 {
     const struct CMUnitTest tests[] = {
@@ -285,6 +484,11 @@ int output_tests(void)
         cmocka_unit_test_setup_teardown(test_output__signal_removes_temporaries, make_dir, remove_dir),
         cmocka_unit_test_setup_teardown(test_output__full_disk_leaves_nothing, make_dir, remove_dir),
         cmocka_unit_test_setup_teardown(test_output__non_utf8_path_gives_valid_json, make_dir, remove_dir),
+        cmocka_unit_test_setup_teardown(test_output__heatmap_commits_with_the_image, make_dir, remove_dir),
+        cmocka_unit_test_setup_teardown(test_output__merge_never_follows_a_planted_temp_name, make_dir, remove_dir),
+        cmocka_unit_test_setup_teardown(test_output__merge_checks_its_output_first, make_dir, remove_dir),
+        cmocka_unit_test_setup_teardown(test_output__signal_right_after_create_leaves_nothing, make_dir, remove_dir),
+        cmocka_unit_test_setup_teardown(test_output__every_temporary_is_tracked_or_refused, make_dir, remove_dir),
     };
     return cmocka_run_group_tests_name("outputs", tests, NULL, NULL);
 }

@@ -175,6 +175,35 @@ static void test_strip__rejects_near_miss_markers(void **state)
                      "/* Stub bookkeeping: which tasks ran. */\n/* The end of the solution space. */\n");
 }
 
+/* Regression (issue 7 audit): the words swapped or plural, glued or joined by '_' or '-', in a line
+ * comment or on a block comment's inner line, passed the stripper and the solution under them was
+ * copied. Each is refused at its line, quoting the words. */
+static void test_strip__rejects_swapped_and_plural_markers(void **state)
+{
+    (void)state;
+    const char *near[] = {
+        "/* SOLUTION" " BEGIN */", "/* SOLUTION" " END */", "/* BEGIN" " SOLUTIONS */", "/* END" " SOLUTIONS */",
+        "// SOLUTION" " BEGIN", "// begin" " solutions", "/* solution" "_begin */", "/* Solutions" "-End */",
+        "/* BEGIN" "SOLUTION */", "/*SOLUTION" "END*/", "/* end" "_solution */", "int x; /* TODO: SOLUTION" " END */",
+    };
+    for (size_t i = 0; i < sizeof near / sizeof near[0]; i++) {
+        char in[256];
+        snprintf(in, sizeof in, "int f(void)\n{\n    %s\n    return 42;\n}\n", near[i]);
+        pl_diag diag = pl_diag_default();
+        char *out = NULL;
+        pl_status s = strip_text(in, strlen(in), "t.c", &out, &diag);
+        if (s != PL_ERR_PARSE || strncmp(diag.error, "t.c:3:", 6) != 0 || !strstr(diag.error, "looks like a solution marker"))
+            fail_msg("near miss %zu '%s': expected an error at t.c:3:, got status %d '%s'", i, near[i], s, diag.error);
+        free(out);
+    }
+    /* Inside a block comment the words need no opener on their line. */
+    assert_rejected("int f(void)\n{\n    /*\n     * SOLUTION" " BEGIN\n     */\n    return 42;\n}\n", "t.c:4:",
+                    "`SOLUTION" " BEGIN` looks like a solution marker");
+    /* Prose that only mentions the words, and code outside comments, are not markers. */
+    assert_strips_to("/* The solution, at the end. */\n/* solutions: begin with the tests */\nint end_" "solution;\n",
+                     "/* The solution, at the end. */\n/* solutions: begin with the tests */\nint end_" "solution;\n");
+}
+
 /* Regression (issue 7, defect 13): a region in a function body without a STUB used to vanish, leaving
  * the student a function with part of its body silently gone. */
 static void test_strip__rejects_region_in_function_body_without_stub(void **state)
@@ -301,6 +330,7 @@ int strip_tests(void)
         cmocka_unit_test(test_strip__rejects_marker_sharing_its_line),
         cmocka_unit_test(test_strip__rejects_empty_stub),
         cmocka_unit_test(test_strip__rejects_near_miss_markers),
+        cmocka_unit_test(test_strip__rejects_swapped_and_plural_markers),
         cmocka_unit_test(test_strip__rejects_region_in_function_body_without_stub),
         cmocka_unit_test(test_strip_tasks__lists_banners_in_order),
         cmocka_unit_test(test_strip_tasks__file_without_banners_has_no_tasks),
