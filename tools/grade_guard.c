@@ -1,8 +1,8 @@
 /* Grader machinery: not part of any assignment.
  * What keeps the answers from student code (DESIGN.md section 9), beside the child's own limits
  * (grade_run.c). Student code runs as `nobody` when the grader is root; then:
- * - the references and hidden cases, and the grader's own outputs (results.json, report/), sit in
- *   folders only root may enter (grade_guard_secrets);
+ * - the references, the hidden cases, the course's solutions (parts/) and the grader's own outputs
+ *   (results.json, report/) sit in folders only root may enter (grade_guard_secrets);
  * - the child writes only into folders made for it (grade_guard_child_dir), never into one that
  *   holds a log or a result, so it cannot plant a name the grader would later follow;
  * - a file the child wrote is opened by the grader without following a symlink and only when it is
@@ -30,7 +30,8 @@ static bool make_private(const char *path, const grade_sandbox *s)
 bool grade_guard_secrets(const char *root, const char *outdir, const grade_sandbox *s, char *why, size_t size)
 {
     if (!s->as_other_user) return true;  /* the child is the grader's own user: nothing a mode can hide */
-    static const char *const secrets[] = {"reference_images", "grading/hidden"};
+    /* parts/: the course's solutions, which a submission could otherwise #include or link to. */
+    static const char *const secrets[] = {"reference_images", "grading/hidden", "parts"};
     char path[4200];
     for (size_t k = 0; k < sizeof secrets / sizeof secrets[0]; k++) {
         snprintf(path, sizeof path, "%s/%s", root, secrets[k]);

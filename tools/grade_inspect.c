@@ -6,10 +6,16 @@
  *   (grade_allow.c: a narrow framework API, libm, memory, sorting and printing from libc);
  * - no constructors or destructors (.init_array, .fini_array, .ctors, .dtors, .preinit_array): code
  *   that runs before main could act before the grader's checks;
- * - no system call instruction in the machine code (inline assembly around the list).
+ * - no system call instruction in the machine code (inline assembly around the list);
+ * - no global function or variable that a library of the program already defines (a part that
+ *   defined cmocka's _assert_int_equal, or malloc, would replace it for the whole program);
+ * - every file the compiler read for it (the build's dependency file) is the part's own, a
+ *   framework header or a part header: `#include "/autograder/source/parts/part3_direct/direct.c"`
+ *   would compile the course's solution as the student's.
  * The first violation is reported naming the file and the symbol; the part then scores zero. */
 #include "grade_inspect.h"
 #include "grade.h"
+#include "../framework/file.h"
 #include <dirent.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -27,6 +33,25 @@ static bool run_to(char *const argv[], const char *cwd, const char *log, bool un
     return r.exited && r.status == 0;
 }
 
+/* The output of a shell command run on trusted tools, as text framed by newlines ("\nname\n..."),
+ * so defined_in can look a whole line up; NULL when it failed. */
+static char *command_lines(const char *cmd, const char *log)
+{
+    char *argv[] = {"sh", "-c", (char *)cmd, NULL};
+    if (!run_to(argv, NULL, log, false)) return NULL;
+    char *data = NULL, *text = NULL;
+    size_t len = 0;
+    pl_diag diag = pl_diag_default();
+    if (file_read_all(log, "symbol list", LOG_MAX, &data, &len, &diag) == PL_OK && (text = malloc(len + 3))) {
+        text[0] = '\n';
+        memcpy(text + 1, data, len);
+        text[len + 1] = '\n';
+        text[len + 2] = '\0';
+    }
+    free(data);
+    return text;
+}
+
 /* The functions the parts define, the submission's own files included: a part may call its own
  * functions, whatever their names, and the other parts' (the framework's are on the allow-list). */
 static char *defined_symbols(const char *tree, const char *log)
@@ -35,22 +60,19 @@ static char *defined_symbols(const char *tree, const char *log)
     snprintf(cmd, sizeof cmd,
              "cd '%s' && for o in " OBJ_DIR "/parts/*/*.o; do "
              "gcc-nm --defined-only --format=just-symbols \"$o\"; done", tree);
-    char *argv[] = {"sh", "-c", cmd, NULL};
-    if (!run_to(argv, NULL, log, false)) return NULL;
-    FILE *f = fopen(log, "r");
-    if (!f) return NULL;
-    fseek(f, 0, SEEK_END);
-    long size = ftell(f);
-    rewind(f);
-    char *text = malloc((size_t)size + 3);
-    if (text) {
-        text[0] = '\n';
-        size_t got = fread(text + 1, 1, (size_t)size, f);
-        text[got + 1] = '\n';
-        text[got + 2] = '\0';
-    }
-    fclose(f);
-    return text;
+    return command_lines(cmd, log);
+}
+
+/* Every name the shared libraries of the part's test program define (libc, libm, cmocka, ...),
+ * found from the program's NEEDED entries through the compiler's own library search path. */
+static char *library_symbols(const char *tree, int part, const char *log)
+{
+    char cmd[8192];
+    snprintf(cmd, sizeof cmd,
+             "for l in $(readelf -d '%s/bin/test-part%d' | sed -n 's/.*Shared library: \\[\\(.*\\)\\]/\\1/p'); do "
+             "nm -D --defined-only --format=just-symbols --without-symbol-versions \"$(gcc -print-file-name=$l)\"; "
+             "done", tree, part);
+    return command_lines(cmd, log);
 }
 
 static bool defined_in(const char *symbols, const char *name)
@@ -110,6 +132,80 @@ static bool bad_instruction(const char *line, const char *symbols, char *why, si
     return false;
 }
 
+static bool bad_definition(const char *line, const char *library, char *why, size_t size)
+{
+    const char *name = line;
+    while (*name == ' ') name++;
+    if (!*name || !defined_in(library, name)) return false;
+    snprintf(why, size, "defines `%s`, which a library of the program already defines: part code may not "
+                        "replace library functions (rename it, or make it static)", name);
+    return true;
+}
+
+/* One path the compiler read, relative to the tree (as the dependency file spells it), reduced to
+ * a canonical form by folding "x/../" away; false for an absolute path or one leaving the tree. */
+static bool tree_path(const char *dep, char *out, size_t size)
+{
+    if (dep[0] == '/' || strchr(dep, '\\') || strlen(dep) >= size) return false;
+    size_t n = 0;
+    for (const char *s = dep; *s;) {
+        const char *end = strchr(s, '/');
+        size_t len = end ? (size_t)(end - s) : strlen(s);
+        if (len == 2 && s[0] == '.' && s[1] == '.') {
+            if (n == 0) return false;  /* above the tree */
+            while (n > 0 && out[n - 1] != '/') n--;
+            if (n > 0) n--;            /* the slash before the dropped segment */
+        }
+        else if (len > 0 && !(len == 1 && s[0] == '.')) {
+            if (n > 0) out[n++] = '/';
+            memcpy(out + n, s, len);
+            n += len;
+        }
+        s += len + (end != NULL);
+    }
+    out[n] = '\0';
+    return n > 0;
+}
+
+/* The files the compiler read for obj's source, from the build's dependency file (-MMD lists every
+ * header outside the system's folders): each must be the part's own (parts/<folder>/), a framework
+ * header or a part's header. */
+static bool is_header(const char *path)
+{
+    size_t n = strlen(path);
+    return n > 2 && !strcmp(path + n - 2, ".h");
+}
+
+static bool bad_dependencies(const char *folder, const char *dep_file, char *why, size_t size)
+{
+    char *text = NULL;
+    size_t len = 0;
+    pl_diag diag = pl_diag_default();
+    if (file_read_all(dep_file, "dependency file", LOG_MAX, &text, &len, &diag) != PL_OK)
+        return snprintf(why, size, "the build left no dependency file (%s)", diag.error), true;
+    bool bad = false;
+    char own[300];
+    snprintf(own, sizeof own, "parts/%s/", folder);
+    for (char *save = NULL, *tok = strtok_r(text, " \t\r\n", &save); tok && !bad; tok = strtok_r(NULL, " \t\r\n", &save)) {
+        size_t n = strlen(tok);
+        if (!strcmp(tok, "\\") || tok[n - 1] == ':') continue;  /* a line continuation, or a rule's target */
+        char path[1024];
+        const char *slash;
+        bool ok = tree_path(tok, path, sizeof path) &&
+                  (!strncmp(path, own, strlen(own)) ||
+                   (!strncmp(path, "framework/", 10) && !strchr(path + 10, '/') && is_header(path)) ||
+                   (!strncmp(path, "parts/", 6) && (slash = strchr(path + 6, '/')) && !strncmp(slash + 1, "part", 4) &&
+                    !strchr(slash + 1, '/') && is_header(path)));
+        if (!ok) {
+            snprintf(why, size, "reads `%.300s` when compiled: part code may include only its own files and the "
+                                "framework's and parts' headers", tok);
+            bad = true;
+        }
+    }
+    free(text);
+    return bad;
+}
+
 bool grade_inspect_part(const char *tree, const char *folder, const char *work, bool untrusted, char *why,
                         size_t size)
 {
@@ -117,7 +213,13 @@ bool grade_inspect_part(const char *tree, const char *folder, const char *work, 
     snprintf(src_dir, sizeof src_dir, "%s/parts/%s", tree, folder);
     snprintf(log, sizeof log, "%s/inspect-symbols.txt", work);
     char *symbols = defined_symbols(tree, log);
-    if (!symbols) return snprintf(why, size, "cannot list the parts' symbols"), false;
+    snprintf(log, sizeof log, "%s/inspect-libraries.txt", work);
+    char *library = library_symbols(tree, atoi(folder + 4), log);  /* folder: "part<N>_name" */
+    if (!symbols || !library) {
+        free(symbols);
+        free(library);
+        return snprintf(why, size, "cannot list the parts' and the libraries' symbols"), false;
+    }
 
     /* Each .c of the part has its object, made by the build with the build's own flags. */
     bool ok = true;
@@ -137,13 +239,21 @@ bool grade_inspect_part(const char *tree, const char *folder, const char *work, 
         }
         /* The tools read hostile files: they run contained, like the code. */
         char *nm[] = {"nm", "-u", "--format=just-symbols", obj, NULL};
+        char *nm_defined[] = {"nm", "--defined-only", "--extern-only", "--format=just-symbols", obj, NULL};
         char *readelf[] = {"readelf", "-S", "-W", obj, NULL};
         char *objdump[] = {"objdump", "-d", obj, NULL};
-        struct { char **argv; line_check check; } steps[] = {{nm, bad_symbol}, {readelf, bad_section},
-                                                             {objdump, bad_instruction}};
+        struct { char **argv; line_check check; const char *names; } steps[] = {
+            {nm, bad_symbol, symbols}, {nm_defined, bad_definition, library}, {readelf, bad_section, NULL},
+            {objdump, bad_instruction, NULL}};
+        char dep[4400];
+        snprintf(dep, sizeof dep, "%s/" OBJ_DIR "/parts/%s/%.*s.d", tree, folder, (int)n - 2, e->d_name);
+        if (bad_dependencies(folder, dep, what, sizeof what)) {
+            snprintf(why, size, "parts/%s/%s: %s", folder, e->d_name, what);
+            ok = false;
+        }
         for (size_t k = 0; ok && k < sizeof steps / sizeof steps[0]; k++) {
             if (!run_to(steps[k].argv, NULL, tool_log, untrusted) ||
-                scan(tool_log, steps[k].check, symbols, what, sizeof what)) {
+                scan(tool_log, steps[k].check, steps[k].names, what, sizeof what)) {
                 snprintf(why, size, "parts/%s/%s: %s", folder, e->d_name, what[0] ? what : "could not be inspected "
                          "(not an object file: was it built with link-time optimisation?)");
                 ok = false;
@@ -152,5 +262,6 @@ bool grade_inspect_part(const char *tree, const char *folder, const char *work, 
     }
     if (d) closedir(d);
     free(symbols);
+    free(library);
     return ok;
 }

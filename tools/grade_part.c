@@ -3,6 +3,7 @@
 #include "grade_image.h"
 #include "grade_guard.h"
 #include "grade_inspect.h"
+#include "../framework/file.h"
 #include <dirent.h>
 #include <fcntl.h>
 #include <unistd.h>
@@ -45,6 +46,47 @@ static bool run_quiet(char *const argv[], const char *log)
     return r.exited && r.status == 0;
 }
 
+/* The submission's part folder into `to`: its regular files only, each read through the framework's
+ * file reader (regular files, a size cap) and written by this process. A symbolic link is refused,
+ * never copied: `direct.c -> /autograder/source/parts/part3_direct/direct.c` would otherwise build
+ * the course's solution as the student's. Subfolders are left out (the build reads none). */
+#define SUBMITTED_FILE_MAX (4L << 20)
+
+static bool copy_submitted_part(const char *from, const char *to, const char *folder, grade_part_result *r)
+{
+    DIR *d = opendir(from);
+    if (!d) {
+        snprintf(r->suite_reason, sizeof r->suite_reason, "cannot read the submission's parts/%s", folder);
+        return false;
+    }
+    bool ok = mkdir(to, 0755) == 0;
+    if (!ok) snprintf(r->suite_reason, sizeof r->suite_reason, "cannot create %s", to);
+    for (struct dirent *e; ok && (e = readdir(d));) {
+        if (e->d_name[0] == '.' && (!e->d_name[1] || (e->d_name[1] == '.' && !e->d_name[2]))) continue;
+        char src[4400], dst[4400];
+        struct stat st;
+        snprintf(src, sizeof src, "%s/%s", from, e->d_name);
+        snprintf(dst, sizeof dst, "%s/%s", to, e->d_name);
+        if (lstat(src, &st) != 0 || S_ISDIR(st.st_mode)) continue;
+        if (!S_ISREG(st.st_mode)) {
+            snprintf(r->suite_reason, sizeof r->suite_reason,
+                     "parts/%s/%.100s is %s, not a file: submit the file itself", folder, e->d_name,
+                     S_ISLNK(st.st_mode) ? "a symbolic link" : "a special file");
+            ok = false;
+            break;
+        }
+        char *data = NULL;
+        size_t len = 0;
+        pl_diag diag = pl_diag_default();
+        ok = file_read_all(src, "submitted file", SUBMITTED_FILE_MAX, &data, &len, &diag) == PL_OK &&
+             file_write_atomic(dst, data, len, &diag) == PL_OK;
+        if (!ok) snprintf(r->suite_reason, sizeof r->suite_reason, "%.250s", diag.error);
+        free(data);
+    }
+    closedir(d);
+    return ok;
+}
+
 /* With a submission: a fresh copy of the solution's tree with parts/<folder> taken from the
  * submission. Without: the tree itself (the student's own, graded cumulatively). The copy holds
  * what a build and its tests need, never grading/ or reference_images/; and the part's headers stay
@@ -84,8 +126,8 @@ static bool make_tree(const grade_env *env, int n, char *tree, size_t size, grad
     }
     char course_folder[4200];
     snprintf(course_folder, sizeof course_folder, "%s/parts/%s", env->root, folder);
-    char *rm_part[] = {"rm", "-rf", to, NULL}, *cp_part[] = {"cp", "-r", from, to, NULL};
-    if (!run_quiet(rm_part, NULL) || !run_quiet(cp_part, log)) return false;
+    char *rm_part[] = {"rm", "-rf", to, NULL};
+    if (!run_quiet(rm_part, NULL) || !copy_submitted_part(from, to, folder, r)) return false;
     char cmd[12800];
     snprintf(cmd, sizeof cmd, "for h in '%s'/*.h; do [ ! -e \"$h\" ] || cp -f \"$h\" '%s'/; done", course_folder, to);
     char *keep_headers[] = {"sh", "-c", cmd, NULL};

@@ -10,6 +10,9 @@
 #    the hidden cases, results.json or the report.
 # 5. As a user that is not root, untrusted children still get a process limit (the grader's suite
 #    run as nobody).
+# 6. A submission cannot take code that is not its own: an #include from outside its folder, a
+#    symbolic link in place of a file, or a function that replaces a library's (cmocka's assert)
+#    each scores zero for the part, the message naming it.
 set -eu
 cd "$(dirname "$0")/../.."
 out=out/sandbox-test
@@ -81,4 +84,20 @@ unit_output "$out/broken" | grep -q "undeclared_thing.*undeclared" ||
 page="$out/broken/report/index.html"
 grep -q "undeclared_thing" "$page" || fail "the HTML report does not carry the compiler's message"
 echo "  a part that does not build: the compiler's message is in results.json and the report"
+# 6. code that is not the submission's own
+refused() {  # $1: what; $2: the message results.json must carry
+    bin/grade --submission "$out/sub" --parts 1 --seed 1 --out "$out/taken" >"$out/taken.log" 2>&1 || true
+    unit_output "$out/taken" | grep -q -- "$2" || fail "$1 was not refused (see $out/taken/results.json)"
+    [ "$(part1_score "$out/taken")" = 0 ] || fail "$1 scored $(part1_score "$out/taken")"
+    echo "  $1: refused, part 1 scores 0"
+}
+printf 'static int outside_the_folder;\n' >"$out/outside.h"
+submission "#include \"$PWD/$out/outside.h\""
+refused "an #include from outside the part's folder" "outside.h. when compiled"
+submission ''
+rm "$out/sub/parts/part1_raygen/pixel.c"
+ln -s "$PWD/parts/part1_raygen/pixel.c" "$out/sub/parts/part1_raygen/pixel.c"
+refused "a symbolic link in place of a file" "is a symbolic link"
+submission 'void _assert_true(const unsigned long result, const char *const expression, const char *const file, const int line) { (void)result; (void)expression; (void)file; (void)line; }'
+refused "a function that replaces cmocka's _assert_true" 'defines `_assert_true`'
 echo "test-grader-process: passed"
