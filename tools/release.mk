@@ -31,7 +31,7 @@ release: $(BIN)/strip_solutions $(BIN)/release_points
 	$(Q)bash tools/make_release build $(BIN)/strip_solutions $(BIN)/release_points
 
 release-check: release $(BIN)/imgtool
-	$(Q)bash tools/make_release check $(BIN)/strip_solutions $(BIN)/imgtool
+	$(Q)bash tools/make_release check $(BIN)/strip_solutions $(BIN)/imgtool $(BIN)/release_points
 
 # Slow (about 10 minutes on 2 cores): the bundle graded in a temporary Gradescope root, as root.
 test-autograder: release
