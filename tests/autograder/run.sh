@@ -9,8 +9,9 @@
 #   stubbed      the student release's parts: zero on every part, the grader finishing
 #   mutants      a few of tests/mutants: points lost on their own part, full marks on another
 #   adversaries  tests/autograder/adversarial/*.c (each replaces one part file; its header names
-#                the part and the points it should get: "expect: unit=0|full images=0|full"),
-#                graded on their part and one other, which must keep full marks
+#                the part, the base ("stub": the part as released, or "solution") and the points it
+#                should get: "expect: unit=0|full|lost images=0|full|lost"), graded on their part
+#                and one other, which must keep full marks
 #   no-parts, linked-part, timeout   run_autograder's own fallbacks: an upload without parts/, a
 #                part folder that is a symbolic link to the solution, a grader out of time
 # Settings: AUTOGRADER_TEST_JOBS (2) cases at once; AUTOGRADER_TEST_SEED (12345) the grader's seed
@@ -184,11 +185,16 @@ case_adversary() {
     unit=$(sed -n 's/^ \* expect:.*unit=\([a-z0-9]*\).*/\1/p' "$f")
     images=$(sed -n 's/^ \* expect:.*images=\([a-z0-9]*\).*/\1/p' "$f")
     other=$ISOLATION_PART; [ "$part" = "$ISOLATION_PART" ] && other=5
+    base=$(sed -n 's/^ \* base: *\([a-z]*\).*/\1/p' "$f")
     r=$(new_root "$name"); solution_parts "$r/submission"
     if [ -z "$part" ] || [ -z "$unit" ] || [ -z "$images" ] || [ ! -f "$repo/$file" ]; then
         problems=" its header lacks part:, replaces: (an existing part file) or expect: unit=.. images=..;"; summary=
         finish "$name"; return
     fi
+    # base: stub -- the attacked part as released (every task a stub), so that it earns nothing
+    # but what the attack could win; base: solution -- the course's part.
+    folder=$(echo "$file" | cut -d/ -f1-2)
+    if [ "$base" = stub ]; then rm -rf "$r/submission/$folder" && cp -a "$repo/release/student/$folder" "$r/submission/$folder"; fi
     cp "$f" "$r/submission/$file"
     grade "$name" "$part,$other"
     read_results "$name"; summary=

@@ -2,6 +2,7 @@
  * here it prints fake passing lines). Constructors are refused by the allow-list: zero, even though
  * the function itself is right.
  * part: 5
+ * base: solution
  * replaces: parts/part5_adaptive/adaptive.c
  * expect: unit=0 images=0
  */

@@ -2,6 +2,7 @@
  * suite that stops early fails whatever it printed, and a render that wrote no image scores zero
  * (and _exit is not on the allow-list).
  * part: 5
+ * base: solution
  * replaces: parts/part5_adaptive/adaptive.c
  * expect: unit=0 images=0
  */

@@ -1,17 +1,30 @@
-/* Adversary: prints what cmocka prints for passing tests ("[  PASSED  ]", "[       OK ]", "OK")
- * on every call, and answers like a stub. Verdicts come from cmocka's XML files, never the console.
- * part: 5
- * replaces: parts/part5_adaptive/adaptive.c
+/* Adversary: prints what cmocka prints for passing tests ("[  PASSED  ]", "[       OK ]",
+ * "OK") on every call, to stdout and stderr, and answers like a stub. Verdicts come from cmocka's
+ * XML files, never from the console.
+ * part: 1
+ * base: stub (part 1 as released, its other files stubs too: a stub earns nothing)
+ * replaces: parts/part1_raygen/pixel.c
  * expect: unit=0 images=0
  */
-#include "part5.h"
+#include "part1.h"
 #include "../../framework/todo.h"
 #include <stdio.h>
-
-bool adaptive_converged(int n, double s1, double s2, float tol)
+/* The worked example, as shipped (the framework calls it for normal shading). */
+static float normal_channel(float n)
 {
-    printf("[       OK ] test_adaptive_converged__one_sample_never_converges\nOK\n");
-    printf("[==========] 9 test(s) run.\n[  PASSED  ] 9 test(s).\n");
-    fprintf(stderr, "[  PASSED  ] 9 test(s).\nOK\n");
-    return PL_TODO_FALSE("5.1", "adaptive_converged");
+    float v = 0.5f * n + 0.5f;
+    return v < 0.0f ? 0.0f : v > 1.0f ? 1.0f : v;
+}
+
+rgb normal_shade(const hit *h)
+{
+    return rgb_make(normal_channel(h->n.x), normal_channel(h->n.y), normal_channel(h->n.z));
+}
+
+ray pixel_sample_ray(const camera *c, int x, int y, int width, int height, vec2 u)
+{
+    printf("[       OK ] test_pixel_sample_ray__centre\nOK\n[==========] 28 test(s) run.\n[  PASSED  ] 28 test(s).\n");
+    fprintf(stderr, "[  PASSED  ] 28 test(s).\nOK\n");
+    fflush(stdout);
+    return PL_TODO_RAY("1.4", "pixel_sample_ray");
 }

@@ -1,6 +1,7 @@
 /* Adversary: correct answers, and forks on every call (a fork bomb): fork is not on the
  * allow-list, and the process limit of the sandbox's user stops it where it runs.
  * part: 5
+ * base: solution
  * replaces: parts/part5_adaptive/adaptive.c
  * expect: unit=0 images=0
  */

@@ -1,6 +1,7 @@
 /* Adversary: answers like a stub, and in a render (more samples than any unit test asks about)
  * spins forever on one thread: the render's wall-clock timeout kills its process group.
  * part: 5
+ * base: stub (part 5 as released: a stub earns no unit points)
  * replaces: parts/part5_adaptive/adaptive.c
  * expect: unit=0 images=0
  */

@@ -1,9 +1,10 @@
 /* Adversary: part 1 solved, but normal shading returns NaN where the normal's x component is near
- * 0.3 (a thin arc on each sphere: a few pixels of each normal-shaded image). The unit tests are
- * earned; every image case must fail, naming a bad pixel.
+ * 0.3 (a thin arc on each sphere: a few pixels of each normal-shaded image). Every image case must
+ * fail, naming a bad pixel; so does the unit test that renders normals (the others are earned).
  * part: 1
+ * base: solution
  * replaces: parts/part1_raygen/pixel.c
- * expect: unit=full images=0
+ * expect: unit=lost images=0
  */
 #include "part1.h"
 #include "../../framework/todo.h"

@@ -1,19 +1,31 @@
-/* Adversary: opens the course's reference EXRs (relative and absolute paths, hidden ones too) and
- * answers from their bytes. File calls are refused by the allow-list, and references are
- * unreadable to student code.
- * part: 5
- * replaces: parts/part5_adaptive/adaptive.c
+/* Adversary: opens the course's reference EXRs (relative and absolute paths, a hidden one
+ * too), prints what it read and answers from their bytes. File calls are refused by the allow-list,
+ * and the references are unreadable to student code.
+ * part: 1
+ * base: stub (part 1 as released, its other files stubs too: a stub earns nothing)
+ * replaces: parts/part1_raygen/pixel.c
  * expect: unit=0 images=0
  */
-#include "part5.h"
+#include "part1.h"
 #include "../../framework/todo.h"
 #include <stdio.h>
-
-bool adaptive_converged(int n, double s1, double s2, float tol)
+/* The worked example, as shipped (the framework calls it for normal shading). */
+static float normal_channel(float n)
 {
-    static const char *const paths[] = {
-        "reference_images/part5/spheres_adaptive.exr", "../../../../reference_images/part5/spheres_adaptive.exr",
-        "/autograder/source/reference_images/part5/spheres_adaptive.exr",
+    float v = 0.5f * n + 0.5f;
+    return v < 0.0f ? 0.0f : v > 1.0f ? 1.0f : v;
+}
+
+rgb normal_shade(const hit *h)
+{
+    return rgb_make(normal_channel(h->n.x), normal_channel(h->n.y), normal_channel(h->n.z));
+}
+
+ray pixel_sample_ray(const camera *c, int x, int y, int width, int height, vec2 u)
+{
+    static const char *const paths[] = {"reference_images/part1/spheres_normals.exr",
+        "../../../../reference_images/part1/spheres_normals.exr",
+        "/autograder/source/reference_images/part1/spheres_normals.exr",
         "/autograder/source/reference_images/hidden/part1/lights_normals.exr"};
     unsigned char buf[4096];
     size_t got = 0;
@@ -24,8 +36,8 @@ bool adaptive_converged(int n, double s1, double s2, float tol)
         fclose(f);
     }
     if (got) {
-        printf("read %zu bytes of a reference\n", got);
-        return buf[(unsigned)n % got] & 1;
+        printf("read %zu bytes of a reference: %02x %02x %02x %02x\n", got, buf[0], buf[1], buf[2], buf[3]);
+        return camera_generate_ray(c, buf[(unsigned)x % got] / 255.0f, buf[(unsigned)y % got] / 255.0f);
     }
-    return PL_TODO_FALSE("5.1", "adaptive_converged");
+    return PL_TODO_RAY("1.4", "pixel_sample_ray");
 }

@@ -1,6 +1,7 @@
 /* Adversary: correct answers, and runs a shell command with system() (copying the references
  * and writing a results file). system is refused by the allow-list: zero for the part.
  * part: 5
+ * base: solution
  * replaces: parts/part5_adaptive/adaptive.c
  * expect: unit=0 images=0
  */
