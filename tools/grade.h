@@ -19,6 +19,8 @@
 #define GRADE_MAX_CASES 16
 #define GRADE_MAX_FLAGS 16
 #define GRADE_NUM_PARTS 5
+#define GRADE_WORK_FACTOR 3.0     /* a BVH may do up to 3x the course's work per camera ray */
+#define GRADE_SPP_TOLERANCE 0.05  /* an adaptive render's mean samples per pixel: the course's +-5% */
 
 /* ---- cases (grading/cases.json) ------------------------------------------------------------ */
 
@@ -36,6 +38,7 @@ typedef struct {
     double points;
     bool hidden;
     bool work_per_ray;                  /* also judge BVH node visits per ray against the solution's */
+    bool known_variance;                /* "statistic": "known_variance" (verdict.h), else the paired t */
     char shows[160];                    /* what the case makes visible, for the report */
 } grade_case;
 
@@ -63,8 +66,11 @@ void grade_spec_free(grade_spec *s);
 typedef struct {
     const grade_case *spec;
     bool ran;                  /* the render finished and its file was read */
+    bool pass;                 /* it ran, its image matches and its figures are in bounds */
     char reason[256];          /* why it did not run or failed, when it did not pass */
     verdict v;                 /* the image verdict (when ran) */
+    double spp, course_spp;    /* adaptive cases: mean samples per pixel, the candidate's and the course's */
+    double work, course_work;  /* work_per_ray cases: node visits + primitive tests per camera ray */
     double score;
     char images[3][320];       /* candidate, reference, z-map PNGs, relative to the report folder */
 } grade_case_result;

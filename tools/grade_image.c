@@ -5,6 +5,7 @@
 #include "../framework/image.h"
 #include "../framework/exr.h"
 #include "../framework/film.h"
+#include <jansson.h>
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -17,24 +18,71 @@
 #define RENDER_MAX (256L << 20)    /* a candidate EXR: far above any case's size */
 #define SCENE_MAX (64L << 20)
 
-/* The mean image of an EXR the renderer wrote (R, G, B, top row first), read in this process. The
- * film adds a NaN, infinite or negative sample as black and counts it in `bad`: such a pixel is
- * made NaN here, so the verdict fails the case naming it. */
-static pl_status read_mean(const char *path, image *out, long *bad, pl_diag *diag)
+/* What the grader reads of an EXR the renderer wrote, in this process: the mean image (R, G, B,
+ * top row first), optionally each mean's variance (var: same layout; NULL to skip), the mean
+ * sample count per pixel, and the pixels with bad samples. The film adds a NaN, infinite or
+ * negative sample as black and counts it in `bad`: such a pixel is made NaN here, so the verdict
+ * fails the case naming it. */
+static pl_status read_film(const char *path, image *out, image *var, long *bad, double *mean_n, pl_diag *diag)
 {
     film f = {0};
     exr_info info;
     *bad = 0;
+    *mean_n = 0.0;
     pl_status st = exr_read(path, &f, &info, diag);
-    if (!st && image_alloc(out, f.width, f.height) != PL_OK) st = pl_fail(diag, PL_ERR_NOMEM, "%s: out of memory", path);
+    if (!st && (image_alloc(out, f.width, f.height) != PL_OK || (var && image_alloc(var, f.width, f.height) != PL_OK)))
+        st = pl_fail(diag, PL_ERR_NOMEM, "%s: out of memory", path);
     if (!st) st = film_to_image(&f, out, NULL, diag);
-    for (long i = 0; !st && i < (long)f.width * f.height; i++)
-        if (f.pixels[i].bad) {
+    long pixels = (long)f.width * f.height;
+    for (long i = 0; !st && i < pixels; i++) {
+        const film_pixel *p = &f.pixels[i];
+        *mean_n += (double)p->n / (double)pixels;
+        if (var)
+            var->pixels[i] = rgb_make((float)film_pixel_variance_of_mean(p, 0), (float)film_pixel_variance_of_mean(p, 1),
+                                      (float)film_pixel_variance_of_mean(p, 2));
+        if (p->bad) {
             out->pixels[i] = rgb_make(NAN, NAN, NAN);
             ++*bad;
         }
+    }
     film_free(&f);
     return st;
+}
+
+/* The course's figures for the case's own render (tools/references.c, probe_case): from the
+ * reference's provenance JSON, beside its EXR. */
+static void read_course_figures(const char *ref_exr, double *spp, double *work)
+{
+    char path[4200];
+    snprintf(path, sizeof path, "%.*s.json", (int)strlen(ref_exr) - 4, ref_exr);
+    json_t *j = json_load_file(path, 0, NULL), *r = json_object_get(j, "case_render");
+    *spp = json_number_value(json_object_get(r, "mean_samples_per_pixel"));
+    *work = json_number_value(json_object_get(r, "work_per_ray"));
+    json_decref(j);
+}
+
+/* The candidate's work per camera ray (framework-counted node visits plus primitive tests), from
+ * the JSON sidecar its render wrote: opened without following a link, read through that descriptor. */
+static double read_candidate_work(const char *exr)
+{
+    char path[4200];
+    snprintf(path, sizeof path, "%.*s.json", (int)strlen(exr) - 4, exr);
+    int fd = grade_guard_open_child_file(path, 1L << 20);
+    if (fd < 0) return -1.0;
+    json_t *j = json_loadfd(fd, 0, NULL);
+    close(fd);
+    double rays = json_number_value(json_object_get(j, "rays_traced"));
+    double work = json_number_value(json_object_get(j, "node_visits")) + json_number_value(json_object_get(j, "primitive_tests"));
+    json_decref(j);
+    return rays > 0 ? work / rays : -1.0;
+}
+
+/* An adaptive case: the candidate's flags hold -a. */
+static bool adaptive_case(const grade_case *k)
+{
+    for (int f = 0; f < k->num_flags; f++)
+        if (!strcmp(k->flags[f], "-a")) return true;
+    return false;
 }
 
 /* The signed t of every block, blue below the reference, red above, white at 0, at image size. */
@@ -118,13 +166,15 @@ void grade_image_case(const grade_env *env, const grade_spec *spec, const char *
     }
 
     /* The verdict, from the two files, in this process. */
-    image cand = {0}, refimg = {0};
+    image cand = {0}, refimg = {0}, refvar = {0};
     long bad;
-    if (read_mean(ref, &refimg, &bad, &diag) != PL_OK || bad) {
+    double cand_n, ref_n;
+    if (read_film(ref, &refimg, &refvar, &bad, &ref_n, &diag) != PL_OK || bad) {
         /* A broken reference is the course's fault, never the student's: say so, not "differs". */
         if (bad) snprintf(c->reason, sizeof c->reason, "the reference %s has %ld bad pixels (run make references)", ref, bad);
         else snprintf(c->reason, sizeof c->reason, "no reference: %s (run make references)", diag.error);
         image_free(&refimg);
+        image_free(&refvar);
         return;
     }
     /* The render's file, opened once without following a link (it could name a reference) and read
@@ -134,16 +184,19 @@ void grade_image_case(const grade_env *env, const grade_spec *spec, const char *
     snprintf(by_fd, sizeof by_fd, "/proc/self/fd/%d", fd);
     pl_status st = fd < 0 ? pl_fail(&diag, PL_ERR_IO, "%s: missing, a link, not a regular file, or over %ld MiB",
                                     out, RENDER_MAX >> 20)
-                          : read_mean(by_fd, &cand, &bad, &diag);
+                          : read_film(by_fd, &cand, NULL, &bad, &cand_n, &diag);
     if (fd >= 0) close(fd);
     if (st != PL_OK) {
         snprintf(c->reason, sizeof c->reason, "the render wrote no readable image: %s", diag.error);
         image_free(&refimg);
+        image_free(&refvar);
         return;
     }
-    verdict_image vc = {cand.width, cand.height, (const float *)cand.pixels};
-    verdict_image vr = {refimg.width, refimg.height, (const float *)refimg.pixels};
+    verdict_image vc = {cand.width, cand.height, (const float *)cand.pixels, NULL};
+    verdict_image vr = {refimg.width, refimg.height, (const float *)refimg.pixels, (const float *)refvar.pixels};
     verdict_params vp = verdict_params_default(k->samples);
+    vp.known_variance = k->known_variance;
+    vp.reference_spp = k->reference_samples;
     if (k->block_side > 0) {
         vp.min_block_pixels = k->block_side * k->block_side;
         vp.min_block_samples = 0;
@@ -154,7 +207,25 @@ void grade_image_case(const grade_env *env, const grade_spec *spec, const char *
     }
     else {
         c->ran = true;
-        c->score = c->v.pass ? k->points : 0.0;
+        /* The course's figures: an adaptive part 5 must spend about the samples the course's does
+         * (one that never stops renders the reference's image at full cost), and a part 2 BVH may
+         * do at most GRADE_WORK_FACTOR times the course's work per ray (a correct but degenerate
+         * tree, or none, loses its speed points). Both come from files, never from what code printed. */
+        double course_spp, course_work;
+        read_course_figures(ref, &course_spp, &course_work);
+        bool figures_ok = true;
+        if (adaptive_case(k) && course_spp > 0) {
+            c->spp = cand_n;
+            c->course_spp = course_spp;
+            figures_ok = fabs(cand_n / course_spp - 1.0) <= GRADE_SPP_TOLERANCE;
+        }
+        if (k->work_per_ray && course_work > 0) {
+            c->work = read_candidate_work(out);
+            c->course_work = course_work;
+            figures_ok = figures_ok && c->work >= 0 && c->work <= GRADE_WORK_FACTOR * course_work;
+        }
+        c->pass = c->v.pass && figures_ok;
+        c->score = c->pass ? k->points : 0.0;
         /* Pictures for the report: candidate, reference, z-map. */
         static const char *const kinds[3] = {"candidate", "reference", "z"};
         for (int i = 0; i < 3; i++) {
@@ -169,4 +240,5 @@ void grade_image_case(const grade_env *env, const grade_spec *spec, const char *
     }
     image_free(&cand);
     image_free(&refimg);
+    image_free(&refvar);
 }

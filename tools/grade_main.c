@@ -67,7 +67,7 @@ static int calibrate(const grade_env *base, const grade_spec *spec, const char *
                     fprintf(stderr, "grade: %s: %s\n", c.spec->name, c.reason);
                     return 1;
                 }
-                failures += !c.v.pass;
+                failures += !c.pass;
                 decile[c.v.p_value >= 1.0 ? 9 : (int)(c.v.p_value * 10)]++;
                 verdict_free(&c.v);
             }

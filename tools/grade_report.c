@@ -33,7 +33,26 @@ static void case_text(const grade_case_result *c, char *out, size_t size)
     else if (!v->pass)
         len += snprintf(out + len, size - len, " The whole image's %s channel is %s than the reference (t = %+.1f).",
                         channel_names[v->worst_channel], v->worst_t > 0 ? "brighter" : "darker", v->worst_t);
-    if (!v->pass && v->hint[0] && (size_t)len < size) snprintf(out + len, size - len, " Hint: %s.", v->hint);
+    if (!v->pass && v->hint[0] && (size_t)len < size) len += snprintf(out + len, size - len, " Hint: %s.", v->hint);
+    /* The course's figures for the case's own render, when the case judges them. */
+    if (c->course_spp > 0 && len >= 0 && (size_t)len < size) {
+        bool ok = fabs(c->spp / c->course_spp - 1.0) <= GRADE_SPP_TOLERANCE;
+        len += snprintf(out + len, size - len, " Samples per pixel: %.1f on average, the course's %.1f (%s %.0f%%).",
+                        c->spp, c->course_spp, ok ? "within" : "more than", 100.0 * GRADE_SPP_TOLERANCE);
+        if (!ok && (size_t)len < size)
+            len += snprintf(out + len, size - len, " %s", c->spp > c->course_spp
+                            ? "Pixels stop later than they should: does adaptive_converged ever say yes?"
+                            : "Pixels stop earlier than they should: check the confidence test.");
+    }
+    if (c->course_work > 0 && len >= 0 && (size_t)len < size) {
+        bool ok = c->work >= 0 && c->work <= GRADE_WORK_FACTOR * c->course_work;
+        len += snprintf(out + len, size - len, " Work per camera ray (node visits + primitive tests, counted by "
+                        "the framework): %.1f, the course's BVH %.1f (%s %.0fx).", c->work, c->course_work,
+                        ok ? "within" : "more than", GRADE_WORK_FACTOR);
+        if (!ok && (size_t)len < size)
+            snprintf(out + len, size - len, " The image is right, but the tree does not save work: check the SAH "
+                                            "split, the leaf size and the nearest-first traversal (task 2.2, 2.3).");
+    }
 }
 
 void grade_print_table(const grade_result *r, FILE *out)
@@ -43,7 +62,7 @@ void grade_print_table(const grade_result *r, FILE *out)
     for (int i = 0; i < r->num_parts; i++) {
         const grade_part_result *p = &r->parts[i];
         int passed = 0;
-        for (int k = 0; k < p->num_cases; k++) passed += p->cases[k].ran && p->cases[k].v.pass;
+        for (int k = 0; k < p->num_cases; k++) passed += p->cases[k].pass;
         char unit[32];
         if (p->suite_reason[0]) snprintf(unit, sizeof unit, "0 (see report)");
         else snprintf(unit, sizeof unit, "%d/%d passed", p->tests_run - p->tests_failed, p->tests_run);
@@ -88,7 +107,7 @@ pl_status grade_write_results_json(const grade_result *r, const char *path, pl_d
             const grade_case_result *c = &p->cases[k];
             snprintf(name, sizeof name, "Part %d: image %s%s", p->part, c->spec->name, c->spec->hidden ? " (hidden)" : "");
             case_text(c, text, sizeof text);
-            json_array_append_new(tests, test_entry(name, c->score, c->spec->points, c->ran && c->v.pass, text,
+            json_array_append_new(tests, test_entry(name, c->score, c->spec->points, c->pass, text,
                                                     c->spec->hidden));
         }
     }
@@ -155,7 +174,7 @@ pl_status grade_write_html(const grade_result *r, const char *folder, pl_diag *d
     for (int i = 0; i < r->num_parts; i++) {
         const grade_part_result *p = &r->parts[i];
         int passed = 0;
-        for (int k = 0; k < p->num_cases; k++) passed += p->cases[k].ran && p->cases[k].v.pass;
+        for (int k = 0; k < p->num_cases; k++) passed += p->cases[k].pass;
         fprintf(f, "<tr><td><a href=\"#part%d\">Part %d</a></td><td>%d/%d</td><td>%d/%d</td><td>%.1f / %.1f</td></tr>\n",
                 p->part, p->part, p->tests_run - p->tests_failed, p->tests_run, passed, p->num_cases, p->score,
                 p->max_score);
@@ -188,8 +207,8 @@ pl_status grade_write_html(const grade_result *r, const char *folder, pl_diag *d
             char text[2048];
             case_text(c, text, sizeof text);
             fprintf(f, "<div class=\"case\"><h3>%s%s: <span class=\"%s\">%s</span></h3><p><i>", c->spec->name,
-                    c->spec->hidden ? " (hidden)" : "", c->ran && c->v.pass ? "pass" : "fail",
-                    c->ran && c->v.pass ? "matches" : "differs");
+                    c->spec->hidden ? " (hidden)" : "", c->pass ? "pass" : "fail",
+                    c->pass ? "passes" : "fails");
             html_escape(f, c->spec->shows);
             fprintf(f, "</i></p><p>");
             html_escape(f, text);

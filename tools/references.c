@@ -3,7 +3,9 @@
  * solution, as sample ranges merged exactly (DESIGN.md sections 4 and 8), into
  *   reference_images/part<N>/<case>.exr   mean, variance of the mean, sample count, provenance
  *   reference_images/part<N>/<case>.png   a preview
- *   reference_images/part<N>/<case>.json  the provenance: the key it was made from, command, seed
+ *   reference_images/part<N>/<case>.json  the provenance: the key it was made from, command, seed,
+ *                                         and the course's figures for the case's own render
+ *                                         (samples per pixel, work per ray: probe_case)
  * (hidden cases under reference_images/hidden/, which the student release leaves out)
  * A case is rendered again only when its key changed: the scene file, the case's flags, resolution
  * and samples, or the code (framework/ and parts/ sources). Ranges are files of their own
@@ -116,7 +118,9 @@ static void case_key(const grade_case *c, uint64_t code, char out[17])
     int n;
     char *const *flags = ref_flags(c, &n);
     for (int i = 0; i < n; i++) h = fnv_str(h, flags[i]);
-    int numbers[3] = {c->width, c->height, c->reference_samples};
+    /* The case's own render too: the provenance records the course's figures for it (probe_case). */
+    for (int i = 0; i < c->num_flags; i++) h = fnv_str(h, c->flags[i]);
+    int numbers[4] = {c->width, c->height, c->reference_samples, c->samples};
     h = fnv(h, numbers, sizeof numbers);
     snprintf(out, 17, "%016llx", (unsigned long long)h);
 }
@@ -224,6 +228,42 @@ static bool reference_clean(const ref_case *rc, const char *path)
     return bad == 0;
 }
 
+/* The course's figures for the case's own render (its flags, resolution and samples, not the
+ * reference's): the mean samples per pixel (what an adaptive part 5 must spend) and the framework-
+ * counted work per camera ray, node visits plus primitive tests (what a part 2 BVH must not
+ * exceed by much). One render at the reference's seed, read from its JSON sidecar; the grader
+ * compares a candidate's with these. */
+static json_t *probe_case(const ref_case *rc)
+{
+    const grade_case *k = rc->spec;
+    char w[16], h[16], spp[16], seed[32], out[700], sidecar[700], log[700];
+    snprintf(w, sizeof w, "%d", k->width);
+    snprintf(h, sizeof h, "%d", k->height);
+    snprintf(spp, sizeof spp, "%d", k->samples);
+    snprintf(seed, sizeof seed, "%llu", rc->seed);
+    snprintf(out, sizeof out, "%s/probe.exr", rc->range_dir);
+    snprintf(sidecar, sizeof sidecar, "%s/probe.json", rc->range_dir);
+    snprintf(log, sizeof log, "%s/probe.log", rc->range_dir);
+    char *argv[GRADE_MAX_FLAGS + 20];
+    int n = 0;
+    argv[n++] = "bin/pathtracer";
+    for (int f = 0; f < k->num_flags; f++) argv[n++] = k->flags[f];
+    char *rest[] = {"-r", w, h, "-s", spp, "--seed", seed, "-t", "1", "-q", "-f", out, (char *)k->scene, NULL};
+    for (char **a = rest; *a; a++) argv[n++] = *a;
+    argv[n] = NULL;
+    if (!run_logged(argv, log)) return NULL;
+    json_t *s = json_load_file(sidecar, 0, NULL);
+    double rays = json_number_value(json_object_get(s, "rays_traced"));
+    double work = json_number_value(json_object_get(s, "node_visits")) +
+                  json_number_value(json_object_get(s, "primitive_tests"));
+    json_t *probe = s && rays > 0 ? json_pack("{s:f, s:f}", "mean_samples_per_pixel",
+                                              json_number_value(json_object_get(s, "mean_samples_per_pixel")),
+                                              "work_per_ray", work / rays)
+                                  : NULL;
+    json_decref(s);
+    return probe;
+}
+
 /* Merges the ranges into the EXR and the preview, then writes the provenance last. */
 static bool merge_case(const ref_case *rc)
 {
@@ -261,9 +301,16 @@ static bool merge_case(const ref_case *rc)
         strncat(line, *a, sizeof line - strlen(line) - 2);
         strcat(line, " ");
     }
-    json_t *j = json_pack("{s:s, s:s, s:i, s:i, s:I, s:s}", "key", rc->key, "case", rc->spec->name, "part", rc->part,
-                          "samples", rc->spec->reference_samples, "seed", (json_int_t)rc->seed,
-                          "command_of_the_first_range", line);  /* without -f */
+    json_t *probe = probe_case(rc);
+    if (!probe) {
+        fprintf(stderr, "references: %s: the probe render (the case's own flags) failed; see %s/probe.log\n",
+                rc->spec->name, rc->range_dir);
+        return false;
+    }
+    json_t *j = json_pack("{s:s, s:s, s:i, s:i, s:I, s:s, s:o}", "key", rc->key, "case", rc->spec->name, "part",
+                          rc->part, "samples", rc->spec->reference_samples, "seed", (json_int_t)rc->seed,
+                          "command_of_the_first_range", line,  /* without -f */
+                          "case_render", probe);
     char *text = json_dumps(j, JSON_INDENT(2) | JSON_SORT_KEYS);
     json_decref(j);
     snprintf(out, sizeof out, "%s.json", rc->out_base);

@@ -8,7 +8,7 @@
 
 verdict_params verdict_params_default(int candidate_spp)
 {
-    verdict_params p = {1e-3, candidate_spp > 0 ? candidate_spp : 1, 64, 8192};
+    verdict_params p = {1e-3, candidate_spp > 0 ? candidate_spp : 1, 64, 8192, false, 0};
     return p;
 }
 
@@ -21,15 +21,26 @@ void verdict_free(verdict *v)
 
 /* The differences of one test: n, and sums of d, d^2, d^3 (d is small, so plain sums lose nothing
  * that matters at the precision of a p-value). */
-typedef struct { long n; double s1, s2, s3, ref; } diff_acc;
+typedef struct { long n; double s1, s2, s3, ref, var; } diff_acc;
 
-static void diff_add(diff_acc *a, double d, double ref)
+static void diff_add(diff_acc *a, double d, double ref, double var)
 {
     a->n++;
     a->s1 += d;
     a->s2 += d * d;
     a->s3 += d * d * d;
     a->ref += ref;
+    a->var += var;
+}
+
+/* Known variance: z = sum(d) / sqrt(sum of the predicted variances of d). No predicted variance at
+ * all (every pixel of the block the same in every sample) asks for agreement up to rounding. */
+static double known_p(const diff_acc *a, double *t)
+{
+    *t = 0.0;
+    if (a->var <= 0.0) return fabs(a->s1) <= 1e-5 * (1.0 + fabs(a->ref)) ? 1.0 : 0.0;
+    *t = a->s1 / sqrt(a->var);
+    return erfc(fabs(*t) / M_SQRT2);
 }
 
 /* The p-value of one paired test: Johnson's t for skewed populations (N. J. Johnson, JASA 73, 1978),
@@ -131,11 +142,15 @@ pl_status verdict_compute(const verdict_image *cand, const verdict_image *ref, c
                 }
                 continue;
             }
+            const float *rv = ref->var ? ref->var + 3 * ((long)y * w + x) : NULL;
             for (int ch = 0; ch < 3; ch++) {
                 double d = (double)c[ch] - (double)r[ch];
+                /* Var(d) = Var(candidate) + Var(reference), the first from the reference's per-sample
+                 * variance (its variance of the mean times its samples) over the candidate's samples. */
+                double var = rv ? (double)rv[ch] * ((double)p->reference_spp / p->candidate_spp + 1.0) : 0.0;
                 long k = ((long)by * out->blocks_x + bx) * 3 + ch;
-                diff_add(&acc[k], d, r[ch]);
-                diff_add(&whole[ch], d, r[ch]);
+                diff_add(&acc[k], d, r[ch], var);
+                diff_add(&whole[ch], d, r[ch], var);
                 cand_total[ch] += c[ch];
                 se += d * d / ((double)r[ch] * r[ch] + 0.01);
             }
@@ -149,7 +164,7 @@ pl_status verdict_compute(const verdict_image *cand, const verdict_image *ref, c
     double p_min = 1.0;
     out->worst_block_x = out->worst_block_y = -1;
     for (long k = 0; k < (long)nblocks * 3 + 3; k++) {
-        double t, pk = paired_p(&acc[k], &t);
+        double t, pk = p->known_variance && ref->var ? known_p(&acc[k], &t) : paired_p(&acc[k], &t);
         if (k < (long)nblocks * 3) out->t[k] = (float)t;
         if (pk < p_min || k == 0) {
             p_min = pk;

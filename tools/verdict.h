@@ -16,6 +16,7 @@
  * - radiance at few samples is heavy-tailed and skewed (rare bright paths): a t test is trustworthy
  *   only when a block holds many samples, so blocks are sized to hold at least
  *   min_block_samples candidate samples (and min_block_pixels pixels), never a fixed 8x8.
+ * (With known_variance, a z test against the reference's variance instead: verdict_params.)
  * The p-values of all K tests are combined with Sidak: the case p-value is 1 - (1 - p_min)^K, uniform
  * on [0, 1] for a correct render, and the case fails when it is below family_alpha. */
 #ifndef PL_VERDICT_H
@@ -27,6 +28,7 @@
 typedef struct {
     int width, height;
     const float *rgb;  /* width * height * 3 linear means, top row first; not owned */
+    const float *var;  /* the same layout: each mean's variance (the reference's; NULL if unknown) */
 } verdict_image;
 
 typedef struct {
@@ -34,6 +36,13 @@ typedef struct {
     int candidate_spp;      /* samples per pixel of the candidate render (sizes the blocks) */
     int min_block_pixels;   /* at least this many pixels per block (64) */
     long min_block_samples; /* at least this many candidate samples per block (4096) */
+    /* Known variance: test each block's sum of differences against the variance the reference
+     * predicts (ref->var, scaled to the candidate's samples: reference_spp / candidate_spp + 1),
+     * a z test, instead of the paired t test's spread. For images whose differences are mostly
+     * exactly zero (normal shading: only edge pixels vary), where the spread of a few pixels makes
+     * a poor estimate and t with m - 1 degrees of freedom rejects far too often. */
+    bool known_variance;
+    int reference_spp;
 } verdict_params;
 
 verdict_params verdict_params_default(int candidate_spp);
