@@ -68,7 +68,7 @@ static int free_reference(void **state)
 
 static verdict judge(const float *cand)
 {
-    verdict_image c = {W, H, cand}, r = {W, H, reference};
+    verdict_image c = {W, H, cand, NULL}, r = {W, H, reference, NULL};
     verdict_params p = verdict_params_default(SPP);
     verdict v;
     assert_int_equal(verdict_compute(&c, &r, &p, &v, NULL), PL_OK);
@@ -171,9 +171,79 @@ static void test_verdict__identical_deterministic_images_pass(void **state)
     assert_true(v.pass);
     assert_true(v.p_value == 1.0);
     verdict_free(&v);
-    verdict_image c = {W, H - 1, reference}, r = {W, H, reference};
+    verdict_image c = {W, H - 1, reference, NULL}, r = {W, H, reference, NULL};
     verdict_params p = verdict_params_default(SPP);
     assert_int_equal(verdict_compute(&c, &r, &p, &v, NULL), PL_ERR_INVALID);
+}
+
+/* ---- known variance: an image like normal shading at jittered edges --------------------------- */
+
+/* Flat everywhere (every sample the same colour) but a band of edge pixels, where each sample is
+ * one of two colours with a coverage that varies along the band, as samples either side of a
+ * sphere's outline do. The paired t test misjudges such blocks (a few varying pixels among many
+ * exact zeros); the known-variance z test uses the reference's variance instead. */
+#define EDGE_REF_SPP 1024
+
+static float edge_coverage(int x, int y)
+{
+    if (x < 60 || x >= 100) return -1.0f;  /* flat: no edge here */
+    return (float)(x - 60) / 40.0f * (0.6f + 0.4f * sinf(0.2f * (float)y));
+}
+
+/* Means and variances of the means of an edge render at spp, the coverage shifted by bias. */
+static void render_edge(float *mean, float *var, int spp, uint64_t seed, float bias)
+{
+    static const float inside[3] = {0.8f, 0.2f, 0.5f}, outside[3] = {0.3f, 0.6f, 0.9f};
+    for (int y = 0; y < H; y++)
+        for (int x = 0; x < W; x++) {
+            float p = edge_coverage(x, y);
+            int k = 0;
+            if (p >= 0.0f) {
+                rng g = rng_for_sample(seed, (uint64_t)y * W + x, 0);
+                for (int s = 0; s < spp; s++) k += rng_uniform(&g) < p + bias;
+            }
+            for (int ch = 0; ch < 3; ch++) {
+                double a = inside[ch], b = outside[ch], f = (double)k / spp;
+                mean[3 * (y * W + x) + ch] = (float)(f * a + (1.0 - f) * b);
+                /* the sample variance of k values a and spp - k values b, over spp: the mean's */
+                var[3 * (y * W + x) + ch] = (float)((double)k * (spp - k) / ((double)spp * (spp - 1)) * (a - b) * (a - b) / spp);
+            }
+        }
+}
+
+/* The same false-failure bound as the t test's (at most 3 of RUNS); a coverage 0.05 off fails. */
+static void test_verdict__known_variance_passes_jittered_edges_at_its_alpha(void **state)
+{
+    (void)state;
+    float *ref = malloc(sizeof(float) * 3 * W * H), *ref_var = malloc(sizeof(float) * 3 * W * H);
+    float *cand = malloc(sizeof(float) * 3 * W * H), *cand_var = malloc(sizeof(float) * 3 * W * H);
+    assert_true(ref && ref_var && cand && cand_var);
+    render_edge(ref, ref_var, EDGE_REF_SPP, 777, 0.0f);
+    verdict_image r = {W, H, ref, ref_var};
+    verdict_params p = verdict_params_default(SPP);
+    p.known_variance = true;
+    p.reference_spp = EDGE_REF_SPP;
+    int failures = 0;
+    for (int run = 0; run < RUNS; run++) {
+        render_edge(cand, cand_var, SPP, base_seed() + (uint64_t)run, 0.0f);
+        verdict_image c = {W, H, cand, NULL};
+        verdict v;
+        assert_int_equal(verdict_compute(&c, &r, &p, &v, NULL), PL_OK);
+        failures += !v.pass;
+        verdict_free(&v);
+    }
+    print_message("known variance: %d of %d correct edge renders failed\n", failures, RUNS);
+    assert_in_range(failures, 0, 3);
+    render_edge(cand, cand_var, SPP, base_seed() + RUNS, 0.05f);
+    verdict_image c = {W, H, cand, NULL};
+    verdict v;
+    assert_int_equal(verdict_compute(&c, &r, &p, &v, NULL), PL_OK);
+    if (v.pass) fail_msg("a coverage 0.05 too high passed (p = %g)", v.p_value);
+    verdict_free(&v);
+    free(ref);
+    free(ref_var);
+    free(cand);
+    free(cand_var);
 }
 
 int verdict_tests(void)
@@ -184,6 +254,7 @@ int verdict_tests(void)
         cmocka_unit_test(test_verdict__local_bias_fails_at_its_block),
         cmocka_unit_test(test_verdict__black_where_lit_and_bad_pixels),
         cmocka_unit_test(test_verdict__identical_deterministic_images_pass),
+        cmocka_unit_test(test_verdict__known_variance_passes_jittered_edges_at_its_alpha),
     };
     return cmocka_run_group_tests_name("verdict", tests, make_reference, free_reference);
 }
