@@ -82,7 +82,7 @@ typedef struct {
     char build_output[4096];   /* its last lines, when the part does not build */
     int tests_run, tests_failed;
     char suite_reason[256];    /* why the suite scored zero (crash, timeout, no results), or "" */
-    char failures[2048];       /* names and messages of the failed tests, Markdown */
+    char failures[8192];       /* names and messages of the failed tests, Markdown */
     double unit_score, unit_max;
     grade_case_result cases[GRADE_MAX_CASES];
     int num_cases;
