@@ -14,6 +14,10 @@ $(BIN)/grade: $(GRADE_OBJ)
 	@mkdir -p $(dir $@)
 	$(Q)$(CC) $(LDFLAGS) -o $@ $^ $(LDLIBS) $(shell pkg-config --libs jansson)
 $(BUILD)/tools/grade%.o: CPPFLAGS += $(shell pkg-config --cflags jansson)
+# The grader's paths and messages live in fixed buffers on purpose: a long path is cut in a message
+# (or makes a file not found, which fails safe), never overflows. GCC's truncation analysis, which
+# sees more at -O1 (SAN=1) than at -O2, would make every such snprintf an error under WERROR=1.
+$(BUILD)/tools/grade%.o: CFLAGS += -Wno-format-truncation
 
 .PHONY: grade
 # A student's make grade: this tree as it is, public cases, the report under out/grade/
