@@ -124,6 +124,23 @@ pl_status grade_spec_load(const char *path, const char *hidden_path, grade_spec 
     return st;
 }
 
+void grade_case_command(const grade_case *k, const char *bin, const char *scene, const char *out,
+                        unsigned long long seed, int threads, grade_case_text *text, char **argv)
+{
+    snprintf(text->width, sizeof text->width, "%d", k->width);
+    snprintf(text->height, sizeof text->height, "%d", k->height);
+    snprintf(text->samples, sizeof text->samples, "%d", k->samples);
+    snprintf(text->seed, sizeof text->seed, "%llu", seed);
+    snprintf(text->threads, sizeof text->threads, "%d", threads);
+    int n = 0;
+    argv[n++] = (char *)bin;
+    for (int f = 0; f < k->num_flags; f++) argv[n++] = k->flags[f];
+    char *fixed[] = {"-r", text->width, text->height, "-s", text->samples, "--seed", text->seed, "-t",
+                     text->threads, "-q", "-f", (char *)out, (char *)scene, NULL};
+    for (char **f = fixed; *f; f++) argv[n++] = *f;
+    argv[n] = NULL;
+}
+
 void grade_spec_free(grade_spec *s)
 {
     if (!s) return;

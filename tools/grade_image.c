@@ -130,7 +130,7 @@ static bool scene_for_child(const grade_env *env, int part, const grade_case *k,
 void grade_image_case(const grade_env *env, const grade_spec *spec, const char *tree, int part, grade_case_result *c)
 {
     const grade_case *k = c->spec;
-    char out[4096], log[4096], bin[4096], scene[4096], ref[4096], seed[32], res_w[16], res_h[16], spp[16], thr[16];
+    char out[4096], log[4096], bin[4096], scene[4096], ref[4096];
     pl_diag diag = pl_diag_default();
     snprintf(out, sizeof out, "%s/part%d/renders/%s.exr", env->work, part, k->name);
     snprintf(log, sizeof log, "%s/part%d/%s.log", env->work, part, k->name);
@@ -141,20 +141,11 @@ void grade_image_case(const grade_env *env, const grade_spec *spec, const char *
     }
     snprintf(ref, sizeof ref, "%s/reference_images/%spart%d/%s.exr", env->root, k->hidden ? "hidden/" : "", part,
              k->name);
-    snprintf(seed, sizeof seed, "%llu", (unsigned long long)env->seed);
-    snprintf(res_w, sizeof res_w, "%d", k->width);
-    snprintf(res_h, sizeof res_h, "%d", k->height);
-    snprintf(spp, sizeof spp, "%d", k->samples);
-    snprintf(thr, sizeof thr, "%d", env->threads);
 
     /* The render, in a child: the student's code never runs in the grader's process. */
-    char *argv[GRADE_MAX_FLAGS + 20];
-    int n = 0;
-    argv[n++] = bin;
-    for (int f = 0; f < k->num_flags; f++) argv[n++] = k->flags[f];
-    char *fixed[] = {"-r", res_w, res_h, "-s", spp, "--seed", seed, "-t", thr, "-q", "-f", out, scene, NULL};
-    for (char **f = fixed; *f; f++) argv[n++] = *f;
-    argv[n] = NULL;
+    char *argv[GRADE_MAX_FLAGS + 16];
+    grade_case_text text;
+    grade_case_command(k, bin, scene, out, env->seed, env->threads, &text, argv);
     remove(out);
     grade_run_opts o = {RENDER_SECONDS, tree, log, LOG_MAX, NULL, env->submission != NULL};
     grade_run_result rr = grade_run(argv, &o);

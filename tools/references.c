@@ -235,22 +235,13 @@ static bool reference_clean(const ref_case *rc, const char *path)
  * compares a candidate's with these. */
 static json_t *probe_case(const ref_case *rc)
 {
-    const grade_case *k = rc->spec;
-    char w[16], h[16], spp[16], seed[32], out[700], sidecar[700], log[700];
-    snprintf(w, sizeof w, "%d", k->width);
-    snprintf(h, sizeof h, "%d", k->height);
-    snprintf(spp, sizeof spp, "%d", k->samples);
-    snprintf(seed, sizeof seed, "%llu", rc->seed);
+    char out[700], sidecar[700], log[700];
     snprintf(out, sizeof out, "%s/probe.exr", rc->range_dir);
     snprintf(sidecar, sizeof sidecar, "%s/probe.json", rc->range_dir);
     snprintf(log, sizeof log, "%s/probe.log", rc->range_dir);
-    char *argv[GRADE_MAX_FLAGS + 20];
-    int n = 0;
-    argv[n++] = "bin/pathtracer";
-    for (int f = 0; f < k->num_flags; f++) argv[n++] = k->flags[f];
-    char *rest[] = {"-r", w, h, "-s", spp, "--seed", seed, "-t", "1", "-q", "-f", out, (char *)k->scene, NULL};
-    for (char **a = rest; *a; a++) argv[n++] = *a;
-    argv[n] = NULL;
+    char *argv[GRADE_MAX_FLAGS + 16];
+    grade_case_text text;
+    grade_case_command(rc->spec, "bin/pathtracer", rc->spec->scene, out, rc->seed, 1, &text, argv);
     if (!run_logged(argv, log)) return NULL;
     json_t *s = json_load_file(sidecar, 0, NULL);
     double rays = json_number_value(json_object_get(s, "rays_traced"));
