@@ -1,5 +1,5 @@
 /* Grader machinery: not part of any assignment.
- * bin/grade: grades a submission part by part (DESIGN.md section 8). For each part N it builds a
+ * bin/grade: grades a submission part by part. For each part N it builds a
  * tree from the submission's part N and the solution's other parts, runs part N's unit-test suite
  * (verdicts read from cmocka's XML files, never from the console) and renders part N's image cases,
  * each judged against its reference by tools/verdict.c. In a student's own tree (--cumulative) it

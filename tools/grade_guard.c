@@ -1,5 +1,5 @@
 /* Grader machinery: not part of any assignment.
- * What keeps the answers from student code (DESIGN.md section 9), beside the child's own limits
+ * What keeps the answers from student code, beside the child's own limits
  * (grade_run.c). Student code runs as `nobody` when the grader is root; then:
  * - the references, the hidden cases, the course's solutions (parts/) and the grader's own outputs
  *   (results.json, report/) sit in folders only root may enter (grade_guard_secrets);

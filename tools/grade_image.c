@@ -49,7 +49,7 @@ static pl_status read_film(const char *path, image *out, image *var, long *bad, 
     return st;
 }
 
-/* The course's figures for the case's own render (tools/references.c, probe_case): from the
+/* The course's figures for the case's own render (recorded by make references): from the
  * reference's provenance JSON, beside its EXR. */
 static void read_course_figures(const char *ref_exr, double *spp, double *work)
 {

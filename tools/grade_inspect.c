@@ -1,5 +1,5 @@
 /* Grader machinery: not part of any assignment.
- * The link-time allow-list (DESIGN.md section 9): before any of a submission's code runs, the
+ * The link-time allow-list: before any of a submission's code runs, the
  * objects the build made from its part, the very files linked into bin/pathtracer and the test
  * suite (graded trees build without link-time optimisation, so they hold machine code), are read:
  * - every undefined symbol must be a part's own function or another part's, or on the allow-list

@@ -303,7 +303,16 @@ static void test_output__full_disk_leaves_nothing(void **state)
 static void test_output__heatmap_commits_with_the_image(void **state)
 {
     (void)state;
-    assert_int_equal(0, render("--normals -r 16 12 --heatmap %s/h.png -f %s/x.png " SCENE));
+    int first = render("--normals -r 16 12 --heatmap %s/h.png -f %s/x.png " SCENE);
+    char err[2048];
+    read_stderr(err, sizeof err);
+    if (first != 0 && strstr(err, "not implemented")) {
+        /* The heat map shows part 2's BVH: in a student's tree that is a stub until part 2 is done,
+         * and this framework test must not wait for it. */
+        print_message("skipped: part 2's BVH is still a stub, and the heat map needs it\n");
+        skip();
+    }
+    assert_int_equal(0, first);
     expect_files("h.png x.json x.png x_rate.png");
     char cmd[256];
     snprintf(cmd, sizeof cmd, "rm -f %s/*.png %s/*.json", dir, dir);

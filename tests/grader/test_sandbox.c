@@ -1,5 +1,5 @@
 /* Test machinery: not part of any assignment.
- * The grader's containment (DESIGN.md section 9), each audit finding with its proof:
+ * The grader's containment, each audit finding with its proof:
  * - the allow-list refuses the framework's files, images and counter resets, not only libc's exit;
  * - a suite's XML scores only when it holds exactly the tests the suite has (an early _exit does not);
  * - a child's log is the grader's own fresh file: a planted symlink is never followed, and a flood
