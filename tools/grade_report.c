@@ -163,7 +163,7 @@ pl_status grade_write_html(const grade_result *r, const char *folder, pl_diag *d
                "</style></head><body>\n<h1>pathlab grade</h1>\n");
     fprintf(f, "<p>Seed %llu, %.0f s. Each image case renders a scene with your part and compares it with the "
                "reference, block by block; a case fails only when the difference is too large to be noise (a "
-               "correct part fails a case about once in a thousand gradings).</p>\n",
+               "correct part fails a case less than once in a thousand gradings).</p>\n",
             (unsigned long long)r->seed, r->seconds);
     if (r->unprotected[0]) {
         fprintf(f, "<p class=\"fail\">Unavailable protections: ");
