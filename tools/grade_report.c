@@ -18,9 +18,9 @@ static void case_text(const grade_case_result *c, char *out, size_t size)
         snprintf(out, size, "**did not run**: %s", c->reason);
         return;
     }
-    int len = snprintf(out, size, "%s. p-value %.3g (fails below the case's alpha), relMSE %.4f, mean ratio "
+    int len = snprintf(out, size, "%s. p-value %.3g (the case fails below %.0e), relMSE %.4f, mean ratio "
                        "red %.3f green %.3f blue %.3f.",
-                       v->pass ? "**matches the reference**" : "**differs from the reference**", v->p_value,
+                       v->pass ? "**matches the reference**" : "**differs from the reference**", v->p_value, v->alpha,
                        v->rel_mse, v->ratio[0], v->ratio[1], v->ratio[2]);
     if (len < 0 || (size_t)len >= size) return;
     if (v->bad_pixels)

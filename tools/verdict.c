@@ -177,6 +177,7 @@ pl_status verdict_compute(const verdict_image *cand, const verdict_image *ref, c
     }
     free(acc);
     out->p_value = -expm1((double)out->num_tests * log1p(-fmin(p_min, 1.0)));
+    out->alpha = p->family_alpha;
     out->pass = out->bad_pixels == 0 && out->p_value >= p->family_alpha;
     find_hint(out, cand, ref);
     return PL_OK;

@@ -50,6 +50,7 @@ verdict_params verdict_params_default(int candidate_spp);
 typedef struct {
     bool pass;
     double p_value;              /* case p-value (Sidak-adjusted smallest test p-value) */
+    double alpha;                /* the case fails when p_value is below this (params' family_alpha) */
     int num_tests;               /* K: blocks x 3 channels + 3 whole-image tests */
     int blocks_x, blocks_y;      /* block grid; block (0, 0) is at the top-left */
     float *t;                    /* blocks_y * blocks_x * 3 signed t statistics, top row first (owned) */
