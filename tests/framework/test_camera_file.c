@@ -62,6 +62,21 @@ static void test_camera_file_load__errors_name_file_line_and_field(void **state)
 
 /* Regression (issue 7, defect 11): values that cannot make a picture are refused with file:line,
  * instead of rendering an all-black image and exiting 0. */
+
+/* Case i of a table: the camera file `text` must be refused with `expect` and its path in the
+ * message; a failure names the table's case and the test's line (PL_AT). */
+static void expect_refused(const char *text, const char *expect, size_t i)
+{
+    const char *path = write_file(text);
+    camera c;
+    pl_diag d = pl_diag_default();
+    pl_status s = camera_file_load(path, &c, &d);
+    if (s == PL_OK || !strstr(d.error, expect) || !strstr(d.error, path))
+        PL_FAIL("case %zu: expected an error with '%s' and the path, got status %d: '%s'", i, expect, s, d.error);
+    remove(path);
+}
+#define expect_refused(...) PL_AT(expect_refused(__VA_ARGS__))
+
 static void test_camera_file_load__refuses_values_that_are_not_a_camera(void **state)
 {
     static const char *const lines_after_1 = "1 2 3  0 0 0\n0 0 3.7 0.1 10\n";
@@ -84,13 +99,7 @@ static void test_camera_file_load__refuses_values_that_are_not_a_camera(void **s
         char text[512];
         snprintf(text, sizeof text, "%s\n%s%s\n800 600 1\n%s\n", cases[i].lens, lines_after_1, cases[i].rot,
                  cases[i].focus);
-        const char *path = write_file(text);
-        camera c;
-        pl_diag d = pl_diag_default();
-        pl_status s = camera_file_load(path, &c, &d);
-        if (s == PL_OK || !strstr(d.error, cases[i].expect) || !strstr(d.error, path))
-            fail_msg("case %zu: expected an error with '%s' and the path, got status %d: '%s'", i, cases[i].expect, s, d.error);
-        remove(path);
+        expect_refused(text, cases[i].expect, i);
     }
 }
 
@@ -112,13 +121,7 @@ static void test_camera_file_load__refuses_far_positions_bad_focus_and_trailing_
     for (size_t i = 0; i < sizeof cases / sizeof cases[0]; i++) {
         char text[512];
         snprintf(text, sizeof text, "%s%s\n%s%s\n%s", lens, cases[i].pose, middle, cases[i].focus, cases[i].after);
-        const char *path = write_file(text);
-        camera c;
-        pl_diag d = pl_diag_default();
-        pl_status s = camera_file_load(path, &c, &d);
-        if (s == PL_OK || !strstr(d.error, cases[i].expect) || !strstr(d.error, path))
-            fail_msg("case %zu: expected an error with '%s' and the path, got status %d: '%s'", i, cases[i].expect, s, d.error);
-        remove(path);
+        expect_refused(text, cases[i].expect, i);
     }
     /* Blank lines (and CRLF endings) after the sixth are not junk; coordinates at the cap are fine. */
     const char *path = write_file("50 40 1.333 0.1 100\r\n1e18 2 3  0 0 -1e18\r\n0 0 3.7 0.1 10\r\n"
