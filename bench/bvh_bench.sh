@@ -1,8 +1,9 @@
 #!/bin/sh
 # BVH benchmark driver (make bench-bvh): not a test. Runs bin/bvh_bench over the scenes given as
 # arguments, times the whole normal-shaded render of the 58,784-triangle bunny (bench/data: the npm
-# bunny subdivided twice by tools/bunny_to_dae.mjs, standing in for a ~50k scanned head), and rewrites the generated part of
-# bench/RESULTS.md (between the GENERATED markers; the hand-written analysis around it stays).
+# bunny subdivided twice by course/bunny_to_dae.mjs, standing in for a ~50k scanned head), and writes
+# build/bench/bvh/RESULTS.md: bench/RESULTS.md with its generated part (between the GENERATED
+# markers) replaced. It never writes a tracked file: copy it over bench/RESULTS.md to record it.
 # Environment: BIN (bin), RUNS (5: runs per figure, median taken).
 set -eu
 BIN=${BIN:-bin}
@@ -59,5 +60,5 @@ if [ -f "$results" ] && grep -q 'BEGIN GENERATED' "$results"; then
 else
     { echo "# BVH benchmark results"; echo; cat "$out/generated.md"; } > "$out/RESULTS.md.new"
 fi
-mv "$out/RESULTS.md.new" "$results"
-echo "bench-bvh: wrote $results"
+mv "$out/RESULTS.md.new" "$out/RESULTS.md"
+echo "bench-bvh: results in $out/RESULTS.md (cp $out/RESULTS.md $results to record them)"

@@ -1,6 +1,6 @@
 /* Test machinery: not part of any assignment. The run-time alpha budget (alpha.h). */
 #include "alpha.h"
-#include "stats.h"
+#include "../../framework/stats.h"
 #include <stdio.h>
 #include <stdlib.h>
 #include <unistd.h>

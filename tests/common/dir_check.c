@@ -2,7 +2,7 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include "test.h"
-#include "stats.h"
+#include "../../framework/stats.h"
 #include "mc_assert.h"
 #include "histogram_png.h"
 #include "dir_check.h"

@@ -6,7 +6,7 @@
 #define PL_MC_ASSERT_H
 
 #include <stdint.h>
-#include "stats.h"
+#include "../../framework/stats.h"
 #include "../../framework/render.h"
 
 typedef rgb (*mc_estimator)(const render_ctx *ctx, const ray *r, const hit *h, rng *g);

@@ -9,16 +9,13 @@ int camera_file_tests(void);
 int camera_tests(void);      /* the camera module: fov rule, framing, lens */
 int dae_tests(void);
 int scenes_tests(void);
-/* The release stripper's tests: weak, because the student release leaves the stripper and its
- * tests out. */
-int strip_tests(void) __attribute__((weak));
 int buf_tests(void);      /* the growable-array helper */
 int file_tests(void);     /* whole-file reads and their refusals */
 int bvh_tests(void);      /* the BVH validator (framework/bvh.c) */
 int output_tests(void);   /* a render's outputs as one unit */
 int lights_tests(void);
 int sampler_tests(void);
-int stats_tests(void);    /* the tests' own statistics (tests/common/stats.c) */
+int stats_tests(void);    /* the statistics the tests and the grader share (framework/stats.c) */
 
 int main(void)
 {
@@ -33,7 +30,6 @@ int main(void)
     failed += camera_tests();
     failed += dae_tests();
     failed += scenes_tests();
-    if (strip_tests) failed += strip_tests();
     failed += buf_tests();
     failed += file_tests();
     failed += output_tests();

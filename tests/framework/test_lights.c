@@ -5,7 +5,7 @@
  * alpha: statistical checks run at FRAMEWORK_CHECK_ALPHA (framework_alpha.h). Fixed seeds. */
 #include <stdio.h>
 #include "../common/test.h"
-#include "../common/stats.h"
+#include "../../framework/stats.h"
 #include "../common/mc_assert.h"
 #include "../../framework/light.h"
 #include "framework_alpha.h"

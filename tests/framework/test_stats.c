@@ -1,12 +1,12 @@
 /* Test machinery: not part of any assignment.
- * The special functions under every statistical test (tests/common/stats.c), checked against table
+ * The special functions under every statistical test (framework/stats.c), checked against table
  * values. Sources: the closed forms P(1, x) = 1 - e^-x, P(1/2, x) = erf(sqrt x),
  * I_x(1/2, 1/2) = (2 / pi) asin(sqrt x), and the finite sums for integer a, b (Abramowitz & Stegun
  * 6.5.13 and 26.5.4, evaluated in Python); the chi-square and Student t critical values of
  * Abramowitz & Stegun tables 26.8 and 26.10, to the digits scipy.stats gives (chi2.isf, t.isf,
  * norm.isf), re-checked with mpmath at 30 digits. */
 #include "../common/test.h"
-#include "../common/stats.h"
+#include "../../framework/stats.h"
 #include <math.h>
 
 static void test_stats_gamma_p__matches_closed_forms(void **state)
@@ -78,5 +78,5 @@ int stats_tests(void)
         cmocka_unit_test(test_stats_t__quantiles_match_the_table),
         cmocka_unit_test(test_stats_sidak__keeps_the_family_rate),
     };
-    return cmocka_run_group_tests_name("framework: test statistics (tests/common/stats.c)", tests, NULL, NULL);
+    return cmocka_run_group_tests_name("framework: test statistics (framework/stats.c)", tests, NULL, NULL);
 }

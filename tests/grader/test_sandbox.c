@@ -8,9 +8,9 @@
  * - as root, a child running as nobody cannot open a reference, a hidden case or the results;
  * - a failed build's message is its last lines. */
 #include "../common/test.h"
-#include "../../tools/grade.h"
-#include "../../tools/grade_guard.h"
-#include "../../tools/grade_inspect.h"
+#include "../../grader/grade.h"
+#include "../../grader/grade_guard.h"
+#include "../../grader/grade_inspect.h"
 #include <fcntl.h>
 #include <stdio.h>
 #include <stdlib.h>

@@ -1,10 +1,10 @@
 /* Test machinery: not part of any assignment.
- * The image verdict (tools/verdict.c) on synthetic renders whose truth is known: a smooth image
+ * The image verdict (grader/verdict.c) on synthetic renders whose truth is known: a smooth image
  * with a bright patch, each pixel the mean of spp heavy-tailed samples (most samples half the
  * truth, a rare one carrying the rest, as paths that find a small light do). A correct "render"
  * must pass at the stated rate; biased ones (a factor, a dark region, a NaN) must fail. */
 #include "../common/test.h"
-#include "../../tools/verdict.h"
+#include "../../grader/verdict.h"
 #include "../../framework/rng.h"
 #include <math.h>
 #include <stdio.h>

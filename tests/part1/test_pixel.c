@@ -9,7 +9,7 @@
  * changed by PL_TEST_SEED (mc_seed). */
 #include "../common/test.h"
 #include "../common/mc_assert.h"
-#include "../common/stats.h"
+#include "../../framework/stats.h"
 #include "part1_alpha.h"
 #include "../../parts/part1_raygen/part1.h"
 #include "../../framework/render.h"

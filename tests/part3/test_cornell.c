@@ -7,7 +7,7 @@
  * Seed fixed and printed. */
 #include <stdio.h>
 #include "../common/test.h"
-#include "../common/stats.h"
+#include "../../framework/stats.h"
 #include "../common/mc_assert.h"
 #include "../common/tiny_scenes.h"
 #include "../../parts/part1_raygen/part1.h"

@@ -8,7 +8,7 @@
  * Seeds are fixed and printed. */
 #include <stdio.h>
 #include "../common/test.h"
-#include "../common/stats.h"
+#include "../../framework/stats.h"
 #include "../common/mc_assert.h"
 #include "../common/tiny_scenes.h"
 #include "../../parts/part3_direct/part3.h"

@@ -5,7 +5,7 @@
  * PART3_FAMILY_ALPHA = 1e-3 (part3_alpha.h). Seeds are fixed and printed. */
 #include <stdio.h>
 #include "../common/test.h"
-#include "../common/stats.h"
+#include "../../framework/stats.h"
 #include "../common/mc_assert.h"
 #include "../common/dir_check.h"
 #include "../../parts/part3_direct/part3.h"

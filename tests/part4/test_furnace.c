@@ -14,7 +14,7 @@
  * Seeds fixed and printed. */
 #include <stdio.h>
 #include "../common/test.h"
-#include "../common/stats.h"
+#include "../../framework/stats.h"
 #include "../common/mc_assert.h"
 #include "../common/tiny_scenes.h"
 #include "../../parts/part4_global/part4.h"

@@ -16,7 +16,7 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include "../common/test.h"
-#include "../common/stats.h"
+#include "../../framework/stats.h"
 #include "../common/mc_assert.h"
 #include "../common/tiny_scenes.h"
 #include "part5_alpha.h"

@@ -1,0 +1,59 @@
+# Instructor-only targets: the release and its proof, the autograder bundle and its end-to-end test,
+# references (locally or on Slurm), mutants and calibration. The student release leaves course/ out,
+# and the Makefile includes this fragment only where it exists.
+.PHONY: release release-check test-autograder references test-slurm mutants grade-mutants calibrate
+
+COURSE_TOOL_OBJ := $(addprefix $(BUILD)/framework/,image.o file.o status.o) $(BUILD)/third_party/lodepng/lodepng.o
+
+# ---- the release: release/student (solutions -> stubs) and release/autograder.zip --------------
+# The stripper's rules are a library, so the course suite (course/release/test_strip.c) tests them.
+STRIP_OBJ := $(BUILD)/course/release/strip.o
+$(BIN)/strip_solutions: $(BUILD)/course/release/strip_solutions.o $(STRIP_OBJ) $(COURSE_TOOL_OBJ)
+	$(say) LD $@
+	@mkdir -p $(dir $@)
+	$(Q)$(CC) $(LDFLAGS) -o $@ $^ $(LDLIBS)
+$(BIN)/test-course: $(STRIP_OBJ)
+
+# bin/release_points: each part's points, read by the grader's own case loader (classroom.yml's steps).
+$(BIN)/release_points: $(BUILD)/course/release/release_points.o $(BUILD)/grader/grade_cases.o $(BUILD)/framework/status.o
+	$(say) LD $@
+	@mkdir -p $(dir $@)
+	$(Q)$(CC) $(LDFLAGS) -o $@ $^ $(LDLIBS)
+
+release: $(BIN)/strip_solutions $(BIN)/release_points  ## cut release/student and release/autograder.zip
+	$(Q)bash course/release/make_release build $(BIN)/strip_solutions $(BIN)/release_points
+
+release-check: release $(BIN)/imgtool  ## cut the release, then prove it sound (course/release/make_release says what)
+	$(Q)bash course/release/make_release check $(BIN)/strip_solutions $(BIN)/imgtool $(BIN)/release_points
+
+# Slow (about 10 minutes on 2 cores): the bundle graded in a temporary Gradescope root, as root.
+test-autograder: release  ## the autograder bundle end to end in Gradescope's layout (solution, stubs, mutants, adversaries)
+	$(Q)bash course/autograder/test.sh
+
+# ---- references: the solution's renders of every grading case, locally or as a Slurm job array ---
+REF_OBJ := $(BUILD)/course/references/references.o $(BUILD)/grader/grade_cases.o $(BUILD)/grader/grade_run.o $(LIB_OBJ)
+$(BIN)/references: $(REF_OBJ)
+	$(say) LD $@
+	@mkdir -p $(dir $@)
+	$(Q)$(CC) $(LDFLAGS) -o $@ $^ $(LDLIBS)
+
+references: $(BIN)/references $(BIN)/pathtracer  ## render the grading references (FORCE=1, CASES="part3 spot", SLURM=1 SBATCH="...")
+	$(Q)$(BIN)/references $(if $(FORCE),--force) $(if $(SLURM),--slurm $(if $(SBATCH),--sbatch "$(SBATCH)")) $(CASES)
+
+# A real single-node Slurm cluster; skips when not root.
+test-slurm:  ## references from a real Slurm job array equal the local ones, byte for byte
+	$(Q)sh course/references/slurm_test.sh
+
+# ---- mutants: realistic student bugs, kept as patches of the solution ---------------------------
+mutants: all  ## each catalogued student bug is caught by its own part's suite
+	@course/mutants/run.sh
+
+# Slow: one graded submission per mutant.
+grade-mutants: $(BIN)/grade $(BIN)/pathtracer  ## grade each catalogued bug: it must lose points on its own part only
+	$(Q)sh course/mutants/grade.sh
+
+# ---- calibration: each suite's false-failure rate over fresh seeds ------------------------------
+N ?= 200
+CALIBRATE_SUITES ?= $(filter-out course,$(SUITES))
+calibrate: $(addprefix $(BIN)/test-,$(CALIBRATE_SUITES)) $(BIN)/pathtracer  ## each suite's false-failure rate over N=200 fresh seeds, beside its alpha
+	$(Q)BIN=$(BIN) course/calibrate $(N) $(CALIBRATE_SUITES)

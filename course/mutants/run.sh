@@ -1,0 +1,39 @@
+#!/bin/sh
+# Test machinery: not part of any assignment.
+# Applies each course/mutants/*.patch to a scratch copy of the tree, builds and runs the suite its
+# "Caught by:" line names, and checks that the suite FAILS (the bug is caught). A mutant that does
+# not compile, or that the suite passes, is reported and makes the run fail.
+# Usage: course/mutants/run.sh [patch ...]     (default: every patch)
+set -u
+root=$(cd "$(dirname "$0")/../.." && pwd)
+scratch="$root/build/mutants"
+mkdir -p "$scratch"
+[ $# -gt 0 ] || set -- "$root"/course/mutants/*.patch
+caught=0; missed=0; broken=0
+for patch in "$@"; do
+    name=$(basename "$patch" .patch)
+    suite=$(sed -n 's/^Caught by: make \(test-[a-z0-9]*\).*/\1/p' "$patch" | head -n 1)
+    what=$(sed -n 's/^Mutant: //p' "$patch" | head -n 1)
+    dir="$scratch/$name"
+    rm -rf "$dir"
+    mkdir -p "$dir"
+    (cd "$root" && cp -a Makefile framework parts tests scenes third_party "$dir"/)
+    # Reuse the release objects: make rebuilds only what the patch touches.
+    [ -d "$root/build/release" ] && mkdir -p "$dir/build" && cp -a "$root/build/release" "$dir/build/"
+    if ! patch -s -p1 -d "$dir" < "$patch"; then
+        echo "BROKEN  $name: the patch no longer applies"; broken=$((broken + 1)); continue
+    fi
+    touch $(sed -n 's/^+++ b\///p' "$patch" | sed "s|^|$dir/|")
+    log="$dir/log.txt"
+    if ! make -C "$dir" --no-print-directory "bin/$suite" > "$log" 2>&1; then
+        echo "BROKEN  $name: does not build (see $log)"; broken=$((broken + 1)); continue
+    fi
+    if (cd "$dir" && "bin/$suite" >> "$log" 2>&1); then
+        echo "MISSED  $name: $suite passes with: $what"; missed=$((missed + 1))
+    else
+        first=$(grep -m 1 -E 'wrong|invalid|disagree|took|expected' "$log" | cut -c 1-150)
+        echo "caught  $name ($suite): $first"; caught=$((caught + 1))
+    fi
+done
+echo "mutants: $caught caught, $missed missed, $broken broken"
+[ $missed -eq 0 ] && [ $broken -eq 0 ]

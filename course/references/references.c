@@ -1,0 +1,554 @@
+/* Instructor tooling: not part of any assignment.
+ * bin/references: renders the reference image of every grading case (grading/cases.json) with the
+ * solution, as sample ranges merged exactly (DESIGN.md sections 4 and 8), into
+ *   reference_images/part<N>/<case>.exr   mean, variance of the mean, sample count, provenance
+ *   reference_images/part<N>/<case>.png   a preview
+ *   reference_images/part<N>/<case>.json  the provenance: the key it was made from, command, seed,
+ *                                         and the course's figures for the case's own render
+ *                                         (samples per pixel, work per ray: probe_case)
+ * (hidden cases under reference_images/hidden/, which the student release leaves out)
+ * A case is rendered again only when its key changed: the scene file, the case's flags, resolution
+ * and samples, or the code (framework/ and parts/ sources). Ranges are files of their own
+ * (build/references/part<N>/<case>/<A>-<B>.exr), each complete or absent, so an interrupted run
+ * resumes from the finished ranges, and the same ranges can run as a Slurm job array.
+ *
+ *   bin/references [--force] [--jobs N] [--range S] [CASE...]         render locally
+ *   bin/references --slurm [--range S] [--sbatch "ARGS"] [CASE...]   submit ranges + merge job
+ *   bin/references --status [CASE...]                                 what is done, missing, stale
+ *   bin/references --merge-only [CASE...]                             merge finished ranges (the
+ *                                                                     Slurm array's last job)
+ *   --out DIR (reference_images) and --work DIR (build/references) move the results and the ranges.
+ * CASE is a case name or part<N>; none means every case. */
+#include "../../grader/grade.h"
+#include "../../framework/exr.h"
+#include "../../framework/file.h"
+#include <dirent.h>
+#include <errno.h>
+#include <jansson.h>
+#include <pthread.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <sys/stat.h>
+#include <time.h>
+#include <unistd.h>
+
+#define RANGE_SAMPLES 256        /* samples per range: one range is a few seconds to a minute */
+#define REFERENCE_SEED 1000000000000ull  /* above every grading seed (grade draws them below 10^12) */
+#define RENDER_SECONDS 3600.0
+
+static double now(void)
+{
+    struct timespec ts;
+    clock_gettime(CLOCK_MONOTONIC, &ts);
+    return (double)ts.tv_sec + ts.tv_nsec * 1e-9;
+}
+
+/* ---- the key: what a reference was made from ------------------------------------------------ */
+
+static uint64_t fnv(uint64_t h, const void *data, size_t len)
+{
+    const unsigned char *p = data;
+    for (size_t i = 0; i < len; i++) h = (h ^ p[i]) * 1099511628211ull;
+    return h;
+}
+
+static uint64_t fnv_str(uint64_t h, const char *s) { return fnv(h, s, strlen(s) + 1); }
+
+static uint64_t fnv_file(uint64_t h, const char *path)
+{
+    char *data;
+    size_t len;
+    if (file_read_all(path, "file", (size_t)1 << 30, &data, &len, NULL) != PL_OK) return fnv_str(h, "missing");
+    h = fnv(fnv_str(h, path), data, len);
+    free(data);
+    return h;
+}
+
+static int compare_names(const void *a, const void *b) { return strcmp(*(char *const *)a, *(char *const *)b); }
+
+/* Every .c and .h under dir (one level of subfolders), in name order. */
+static uint64_t fnv_sources(uint64_t h, const char *dir)
+{
+    char *names[512];
+    int n = 0;
+    DIR *d = opendir(dir);
+    for (struct dirent *e; d && (e = readdir(d)) && n < 512;) {
+        if (e->d_name[0] == '.') continue;
+        char path[1024];
+        snprintf(path, sizeof path, "%s/%s", dir, e->d_name);
+        struct stat st;
+        if (stat(path, &st) == 0 && S_ISDIR(st.st_mode)) {
+            DIR *sub = opendir(path);
+            for (struct dirent *f; sub && (f = readdir(sub)) && n < 512;) {
+                size_t len = strlen(f->d_name);
+                if (len > 2 && (!strcmp(f->d_name + len - 2, ".c") || !strcmp(f->d_name + len - 2, ".h"))) {
+                    char sp[1300];
+                    snprintf(sp, sizeof sp, "%s/%s", path, f->d_name);
+                    names[n++] = strdup(sp);
+                }
+            }
+            if (sub) closedir(sub);
+        }
+        else {
+            size_t len = strlen(e->d_name);
+            if (len > 2 && (!strcmp(e->d_name + len - 2, ".c") || !strcmp(e->d_name + len - 2, ".h")))
+                names[n++] = strdup(path);
+        }
+    }
+    if (d) closedir(d);
+    qsort(names, (size_t)n, sizeof *names, compare_names);
+    for (int i = 0; i < n; i++) {
+        h = fnv_file(h, names[i]);
+        free(names[i]);
+    }
+    return h;
+}
+
+/* The flags a case's reference renders with. */
+static char *const *ref_flags(const grade_case *c, int *count)
+{
+    *count = c->num_reference_flags ? c->num_reference_flags : c->num_flags;
+    return c->num_reference_flags ? c->reference_flags : c->flags;
+}
+
+static void case_key(const grade_case *c, uint64_t code, char out[17])
+{
+    uint64_t h = fnv_file(code, c->scene);
+    int n;
+    char *const *flags = ref_flags(c, &n);
+    for (int i = 0; i < n; i++) h = fnv_str(h, flags[i]);
+    /* The case's own render too: the provenance records the course's figures for it (probe_case). */
+    for (int i = 0; i < c->num_flags; i++) h = fnv_str(h, c->flags[i]);
+    int numbers[4] = {c->width, c->height, c->reference_samples, c->samples};
+    h = fnv(h, numbers, sizeof numbers);
+    snprintf(out, 17, "%016llx", (unsigned long long)h);
+}
+
+/* ---- one case's jobs -------------------------------------------------------------------------- */
+
+typedef struct {
+    const grade_case *spec;
+    int part;
+    unsigned long long seed;   /* REFERENCE_SEED + a hash of the case's name: stable as cases come and go */
+    char key[17];
+    char range_dir[512];       /* build/references/part<N>/<case> */
+    char out_base[512];        /* reference_images/part<N>/<case> */
+    int num_ranges;
+} ref_case;
+
+static void range_path(const ref_case *rc, int r, char *out, size_t size)
+{
+    int a = r * RANGE_SAMPLES, b = a + RANGE_SAMPLES;
+    if (b > rc->spec->reference_samples) b = rc->spec->reference_samples;
+    snprintf(out, size, "%s/%06d-%06d.exr", rc->range_dir, a, b);
+}
+
+/* The command that renders range r, as an argv (owned strings in a static-lifetime buffer). */
+typedef struct { char *argv[GRADE_MAX_FLAGS + 24]; char buf[8][1100]; } command;
+
+static void range_command(const ref_case *rc, int r, command *cmd)
+{
+    int n = 0, nf;
+    char *const *flags = ref_flags(rc->spec, &nf);
+    int a = r * RANGE_SAMPLES, b = a + RANGE_SAMPLES;
+    if (b > rc->spec->reference_samples) b = rc->spec->reference_samples;
+    snprintf(cmd->buf[0], sizeof cmd->buf[0], "%d", rc->spec->width);
+    snprintf(cmd->buf[1], sizeof cmd->buf[1], "%d", rc->spec->height);
+    snprintf(cmd->buf[2], sizeof cmd->buf[2], "%d", rc->spec->reference_samples);
+    snprintf(cmd->buf[3], sizeof cmd->buf[3], "%d:%d", a, b);
+    snprintf(cmd->buf[4], sizeof cmd->buf[4], "%llu", rc->seed);
+    range_path(rc, r, cmd->buf[5], sizeof cmd->buf[5]);
+    cmd->argv[n++] = "bin/pathtracer";
+    for (int i = 0; i < nf; i++) cmd->argv[n++] = flags[i];
+    char *rest[] = {"-r", cmd->buf[0], cmd->buf[1], "-s", cmd->buf[2], "--samples", cmd->buf[3], "--seed", cmd->buf[4],
+                    "-t", "1", "-q", "-f", cmd->buf[5], (char *)rc->spec->scene, NULL};
+    for (char **p = rest; *p; p++) cmd->argv[n++] = *p;
+    cmd->argv[n] = NULL;
+}
+
+static bool exists(const char *path)
+{
+    struct stat st;
+    return stat(path, &st) == 0;
+}
+
+static int ranges_done(const ref_case *rc)
+{
+    int done = 0;
+    for (int r = 0; r < rc->num_ranges; r++) {
+        char path[1200];
+        range_path(rc, r, path, sizeof path);
+        done += exists(path);
+    }
+    return done;
+}
+
+/* The key recorded beside the reference, or "" when there is none. */
+static void recorded_key(const ref_case *rc, char out[17])
+{
+    char path[600];
+    snprintf(path, sizeof path, "%s.json", rc->out_base);
+    out[0] = '\0';
+    json_t *j = json_load_file(path, 0, NULL);
+    const char *k = json_string_value(json_object_get(j, "key"));
+    if (k) snprintf(out, 17, "%s", k);
+    json_decref(j);
+}
+
+static bool run_logged(char *const argv[], const char *log)
+{
+    grade_run_opts o = {RENDER_SECONDS, NULL, log, 1 << 20, NULL, false};
+    grade_run_result r = grade_run(argv, &o);
+    return r.exited && r.status == 0;
+}
+
+/* A reference must hold no bad sample (NaN, infinite or negative radiance): the grader would read
+ * such a pixel as a failure of every candidate. A bad sample is the solution's bug, so the merged
+ * file is removed and the pixel named, for the instructor to fix the solution. */
+static bool reference_clean(const ref_case *rc, const char *path)
+{
+    film f = {0};
+    exr_info info;
+    pl_diag d = pl_diag_default();
+    if (exr_read(path, &f, &info, &d) != PL_OK) {
+        fprintf(stderr, "references: %s: %s\n", rc->spec->name, d.error);
+        remove(path);
+        return false;
+    }
+    long bad = 0, first = -1;
+    for (long i = 0; i < (long)f.width * f.height; i++)
+        if (f.pixels[i].bad && bad++ == 0) first = i;
+    if (bad)
+        fprintf(stderr, "references: %s: the solution gave %ld pixels bad samples (NaN, infinite or negative "
+                        "radiance; the first at x=%ld y=%ld, counted from the bottom-left): fix the solution\n",
+                rc->spec->name, bad, first % f.width, f.height - 1 - first / f.width);
+    film_free(&f);
+    if (bad) remove(path);
+    return bad == 0;
+}
+
+/* The course's figures for the case's own render (its flags, resolution and samples, not the
+ * reference's): the mean samples per pixel (what an adaptive part 5 must spend) and the framework-
+ * counted work per camera ray, node visits plus primitive tests (what a part 2 BVH must not
+ * exceed by much). One render at the reference's seed, read from its JSON sidecar; the grader
+ * compares a candidate's with these. */
+static json_t *probe_case(const ref_case *rc)
+{
+    char out[700], sidecar[700], log[700];
+    snprintf(out, sizeof out, "%s/probe.exr", rc->range_dir);
+    snprintf(sidecar, sizeof sidecar, "%s/probe.json", rc->range_dir);
+    snprintf(log, sizeof log, "%s/probe.log", rc->range_dir);
+    char *argv[GRADE_MAX_FLAGS + 16];
+    grade_case_text text;
+    grade_case_command(rc->spec, "bin/pathtracer", rc->spec->scene, out, rc->seed, 1, &text, argv);
+    if (!run_logged(argv, log)) return NULL;
+    json_t *s = json_load_file(sidecar, 0, NULL);
+    double rays = json_number_value(json_object_get(s, "rays_traced"));
+    double work = json_number_value(json_object_get(s, "node_visits")) +
+                  json_number_value(json_object_get(s, "primitive_tests"));
+    json_t *probe = s && rays > 0 ? json_pack("{s:f, s:f}", "mean_samples_per_pixel",
+                                              json_number_value(json_object_get(s, "mean_samples_per_pixel")),
+                                              "work_per_ray", work / rays)
+                                  : NULL;
+    json_decref(s);
+    return probe;
+}
+
+/* Merges the ranges into the EXR and the preview, then writes the provenance last. */
+static bool merge_case(const ref_case *rc)
+{
+    char *argv[4096 / RANGE_SAMPLES * 64 + 8];
+    static char paths[1024][1200];
+    if (rc->num_ranges > 1024) return false;
+    for (int r = 0; r < rc->num_ranges; r++) range_path(rc, r, paths[r], sizeof paths[r]);
+    char out[600], log[600];
+    snprintf(log, sizeof log, "%s/merge.log", rc->range_dir);
+    static const char *const ext[2] = {".exr", ".png"};
+    for (int k = 0; k < 2; k++) {
+        int n = 0;
+        snprintf(out, sizeof out, "%s%s", rc->out_base, ext[k]);
+        argv[n++] = "bin/pathtracer";
+        argv[n++] = "--merge";
+        argv[n++] = "-f";
+        argv[n++] = out;
+        for (int r = 0; r < rc->num_ranges; r++) argv[n++] = paths[r];
+        argv[n] = NULL;
+        if (!run_logged(argv, log)) {
+            fprintf(stderr, "references: %s: the merge failed; see %s\n", rc->spec->name, log);
+            return false;
+        }
+        if (k == 0 && !reference_clean(rc, out)) return false;
+    }
+    command cmd;
+    range_command(rc, 0, &cmd);
+    /* The render's command without its output file: the same text wherever the ranges were kept. */
+    char line[4096] = "";
+    for (char **a = cmd.argv; *a; a++) {
+        if (!strcmp(*a, "-f") && a[1]) {
+            a++;
+            continue;
+        }
+        strncat(line, *a, sizeof line - strlen(line) - 2);
+        strcat(line, " ");
+    }
+    json_t *probe = probe_case(rc);
+    if (!probe) {
+        fprintf(stderr, "references: %s: the probe render (the case's own flags) failed; see %s/probe.log\n",
+                rc->spec->name, rc->range_dir);
+        return false;
+    }
+    json_t *j = json_pack("{s:s, s:s, s:i, s:i, s:I, s:s, s:o}", "key", rc->key, "case", rc->spec->name, "part",
+                          rc->part, "samples", rc->spec->reference_samples, "seed", (json_int_t)rc->seed,
+                          "command_of_the_first_range", line,  /* without -f */
+                          "case_render", probe);
+    char *text = json_dumps(j, JSON_INDENT(2) | JSON_SORT_KEYS);
+    json_decref(j);
+    snprintf(out, sizeof out, "%s.json", rc->out_base);
+    pl_diag d = pl_diag_default();
+    bool ok = text && file_write_atomic(out, text, strlen(text), &d) == PL_OK;
+    free(text);
+    return ok;
+}
+
+/* ---- local runs: a pool of workers over every missing range of every case --------------------- */
+
+typedef struct {
+    ref_case *cases;
+    int num_cases;
+    int next_case, next_range;  /* the queue */
+    int done, total;
+    double start;
+    bool failed;
+    pthread_mutex_t lock;
+} pool;
+
+static void *worker(void *arg)
+{
+    pool *p = arg;
+    for (;;) {
+        pthread_mutex_lock(&p->lock);
+        const ref_case *rc = NULL;
+        int r = -1;
+        while (p->next_case < p->num_cases && !rc) {
+            ref_case *c = &p->cases[p->next_case];
+            if (p->next_range >= c->num_ranges) {
+                p->next_case++;
+                p->next_range = 0;
+                continue;
+            }
+            char path[1200];
+            range_path(c, p->next_range, path, sizeof path);
+            if (!exists(path)) {
+                rc = c;
+                r = p->next_range;
+            }
+            p->next_range++;
+        }
+        pthread_mutex_unlock(&p->lock);
+        if (!rc) return NULL;
+        command cmd;
+        range_command(rc, r, &cmd);
+        char log[1300];
+        snprintf(log, sizeof log, "%s/%d.log", rc->range_dir, r);
+        bool ok = run_logged(cmd.argv, log);
+        pthread_mutex_lock(&p->lock);
+        p->done++;
+        if (!ok) {
+            p->failed = true;
+            fprintf(stderr, "\nreferences: %s range %d failed; see %s\n", rc->spec->name, r, log);
+        }
+        double elapsed = now() - p->start, eta = elapsed / p->done * (p->total - p->done);
+        fprintf(stderr, "\r  %d/%d ranges (%s), %.0f s, about %.0f s to go   ", p->done, p->total, rc->spec->name,
+                elapsed, eta);
+        pthread_mutex_unlock(&p->lock);
+    }
+}
+
+/* ---- Slurm ------------------------------------------------------------------------------------ */
+
+/* One task per missing range: the array's tasks read their command from tasks.txt. A dependent job
+ * merges when every task has succeeded. */
+static int submit_slurm(ref_case *cases, int n, const char *sbatch_args, const char *out_dir, const char *work_dir)
+{
+    char dir[600], tasks[700], script[700], cmdline[8192];
+    snprintf(dir, sizeof dir, "%s/slurm", work_dir);
+    snprintf(tasks, sizeof tasks, "%s/tasks.txt", dir);
+    snprintf(script, sizeof script, "%s/array.sh", dir);
+    snprintf(cmdline, sizeof cmdline, "mkdir -p '%s'", dir);
+    if (system(cmdline) != 0) return fprintf(stderr, "references: cannot create %s\n", dir), 1;
+    FILE *f = fopen(tasks, "w");
+    if (!f) return fprintf(stderr, "references: cannot write %s\n", tasks), 1;
+    int count = 0;
+    for (int i = 0; i < n; i++)
+        for (int r = 0; r < cases[i].num_ranges; r++) {
+            char path[1200];
+            range_path(&cases[i], r, path, sizeof path);
+            if (exists(path)) continue;
+            command cmd;
+            range_command(&cases[i], r, &cmd);
+            for (char **a = cmd.argv; *a; a++) fprintf(f, "'%s' ", *a);
+            fprintf(f, "\n");
+            count++;
+        }
+    fclose(f);
+    char names[4096] = "";
+    for (int i = 0; i < n; i++) {
+        strncat(names, " ", sizeof names - strlen(names) - 1);
+        strncat(names, cases[i].spec->name, sizeof names - strlen(names) - 1);
+    }
+    f = fopen(script, "w");
+    if (!f) return 1;
+    fprintf(f, "#!/bin/sh\n# One reference range per array task (written by bin/references --slurm).\n"
+               "line=$(sed -n \"$((SLURM_ARRAY_TASK_ID + 1))p\" %s)\neval \"exec $line\"\n", tasks);
+    fclose(f);
+    char cwd[1024];
+    if (!getcwd(cwd, sizeof cwd)) return 1;
+    char array_id[64] = "";
+    if (count > 0) {
+        snprintf(cmdline, sizeof cmdline,
+                 "sbatch --parsable --chdir=%s --job-name=pl-ref --array=0-%d --output=%s/task-%%a.log %s %s", cwd,
+                 count - 1, dir, sbatch_args, script);
+        FILE *p = popen(cmdline, "r");
+        if (!p || !fgets(array_id, sizeof array_id, p)) return fprintf(stderr, "references: sbatch failed\n"), 1;
+        pclose(p);
+        array_id[strcspn(array_id, ";\n")] = '\0';
+    }
+    snprintf(cmdline, sizeof cmdline,
+             "sbatch --parsable --chdir=%s --job-name=pl-ref-merge --output=%s/merge.log %s%s %s --wrap "
+             "'bin/references --merge-only --out %s --work %s%s'", cwd, dir, array_id[0] ? "--dependency=afterok:" : "",
+             array_id, sbatch_args, out_dir, work_dir, names);
+    FILE *p = popen(cmdline, "r");
+    char merge_id[64] = "";
+    if (!p || !fgets(merge_id, sizeof merge_id, p)) return fprintf(stderr, "references: sbatch failed\n"), 1;
+    pclose(p);
+    merge_id[strcspn(merge_id, ";\n")] = '\0';
+    printf("submitted %d range task(s) as job array %s, and the merge as job %s\n", count,
+           array_id[0] ? array_id : "(none)", merge_id);
+    printf("follow it with: bin/references --status\n");
+    return 0;
+}
+
+/* ---- main ------------------------------------------------------------------------------------- */
+
+static bool wanted(const grade_case *c, int part, int argc, char **names)
+{
+    if (argc == 0) return true;
+    for (int i = 0; i < argc; i++) {
+        char p[16];
+        snprintf(p, sizeof p, "part%d", part);
+        if (!strcmp(names[i], c->name) || !strcmp(names[i], p)) return true;
+    }
+    return false;
+}
+
+static int usage(void)
+{
+    fprintf(stderr, "usage: references [--force] [--jobs N] [--slurm [--sbatch \"ARGS\"]] [--status] [--merge-only] "
+                    "[CASE|partN ...]\n");
+    return 2;
+}
+
+int main(int argc, char **argv)
+{
+    bool force = false, slurm = false, status = false, merge_only = false;
+    int jobs = (int)sysconf(_SC_NPROCESSORS_ONLN);
+    const char *sbatch_args = "", *out_dir = "reference_images", *work_dir = "build/references";
+    int first = 1;
+    for (; first < argc && argv[first][0] == '-'; first++) {
+        const char *a = argv[first];
+        if (!strcmp(a, "--force")) force = true;
+        else if (!strcmp(a, "--slurm")) slurm = true;
+        else if (!strcmp(a, "--status")) status = true;
+        else if (!strcmp(a, "--merge-only")) merge_only = true;
+        else if (!strcmp(a, "--jobs") && first + 1 < argc) jobs = atoi(argv[++first]);
+        else if (!strcmp(a, "--sbatch") && first + 1 < argc) sbatch_args = argv[++first];
+        else if (!strcmp(a, "--out") && first + 1 < argc) out_dir = argv[++first];
+        else if (!strcmp(a, "--work") && first + 1 < argc) work_dir = argv[++first];
+        else return usage();
+    }
+    if (jobs < 1) jobs = 1;
+    pl_diag diag = pl_diag_default();
+    grade_spec spec;
+    if (grade_spec_load(GRADE_CASES, GRADE_HIDDEN_CASES, &spec, &diag) != PL_OK) {
+        fprintf(stderr, "references: %s\n", diag.error);
+        return 2;
+    }
+    uint64_t code = fnv_sources(fnv_sources(1469598103934665603ull, "framework"), "parts");
+
+    /* The cases asked for, with their keys; the ones up to date are left alone. */
+    ref_case cases[GRADE_NUM_PARTS * GRADE_MAX_CASES];
+    int n = 0;
+    for (int k = 0; k < GRADE_NUM_PARTS; k++)
+        for (int i = 0; i < spec.parts[k].num_cases; i++) {
+            const grade_case *c = &spec.parts[k].cases[i];
+            if (!wanted(c, k + 1, argc - first, argv + first)) continue;
+            ref_case *rc = &cases[n];
+            memset(rc, 0, sizeof *rc);
+            rc->spec = c;
+            rc->part = k + 1;
+            rc->seed = REFERENCE_SEED + fnv_str(1469598103934665603ull, c->name) % 1000000ull;
+            case_key(c, code, rc->key);
+            snprintf(rc->range_dir, sizeof rc->range_dir, "%s/part%d/%s/%s", work_dir, rc->part, c->name, rc->key);
+            snprintf(rc->out_base, sizeof rc->out_base, "%s/%spart%d/%s", out_dir, c->hidden ? "hidden/" : "",
+                     rc->part, c->name);
+            rc->num_ranges = (c->reference_samples + RANGE_SAMPLES - 1) / RANGE_SAMPLES;
+            char have[17];
+            recorded_key(rc, have);
+            if (status) {
+                printf("part%d/%-26s %s  ranges %d/%d\n", rc->part, c->name,
+                       !strcmp(have, rc->key) ? "up to date" : have[0] ? "stale     " : "missing   ", ranges_done(rc),
+                       rc->num_ranges);
+                continue;
+            }
+            if (!force && !strcmp(have, rc->key)) continue;
+            char mk[700];
+            snprintf(mk, sizeof mk, "mkdir -p '%s' '%s/%spart%d'", rc->range_dir, out_dir, c->hidden ? "hidden/" : "",
+                     rc->part);
+            if (system(mk) != 0) return 1;
+            n++;
+        }
+    if (status) {
+        /* On a cluster, what the scheduler still holds: pending or running range tasks and the merge.
+         * A range that is neither done nor queued has failed: --slurm submits it again. */
+        if (system("command -v squeue >/dev/null 2>&1") == 0) {
+            printf("queued on Slurm (job, task, state):\n");
+            fflush(stdout);
+            if (system("squeue -h -n pl-ref,pl-ref-merge -o '  %i %j %T' 2>/dev/null") != 0)
+                printf("  (squeue failed: no cluster reachable)\n");
+        }
+        return 0;
+    }
+    if (n == 0) {
+        printf("references: every reference is up to date (--force renders them again)\n");
+        return 0;
+    }
+    if (slurm) return submit_slurm(cases, n, sbatch_args, out_dir, work_dir);
+
+    int code_exit = 0;
+    if (!merge_only) {
+        pool p = {cases, n, 0, 0, 0, 0, now(), false, PTHREAD_MUTEX_INITIALIZER};
+        for (int i = 0; i < n; i++) p.total += cases[i].num_ranges - ranges_done(&cases[i]);
+        fprintf(stderr, "references: %d case(s), %d range(s) of %d samples to render on %d job(s)\n", n, p.total,
+                RANGE_SAMPLES, jobs);
+        pthread_t threads[64];
+        int started = 0;
+        for (; started < jobs && started < 64; started++)
+            if (pthread_create(&threads[started], NULL, worker, &p) != 0) break;
+        for (int i = 0; i < started; i++) pthread_join(threads[i], NULL);
+        fprintf(stderr, "\n");
+        if (p.failed) return 1;
+    }
+    for (int i = 0; i < n; i++) {
+        if (ranges_done(&cases[i]) != cases[i].num_ranges) {
+            fprintf(stderr, "references: %s: %d of %d ranges missing; not merged\n", cases[i].spec->name,
+                    cases[i].num_ranges - ranges_done(&cases[i]), cases[i].num_ranges);
+            code_exit = 1;
+            continue;
+        }
+        if (!merge_case(&cases[i])) code_exit = 1;
+        else printf("references: wrote %s.exr, .png, .json\n", cases[i].out_base);
+    }
+    grade_spec_free(&spec);
+    return code_exit;
+}

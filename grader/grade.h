@@ -1,0 +1,176 @@
+/* Grader machinery: not part of any assignment.
+ * bin/grade: grades a submission part by part. For each part N it builds a
+ * tree from the submission's part N and the solution's other parts, runs part N's unit-test suite
+ * (verdicts read from cmocka's XML files, never from the console) and renders part N's image cases,
+ * each judged against its reference by grader/verdict.c. In a student's own tree (--cumulative) it
+ * builds the tree as it is and grades the public cases, so a student sees the verdicts first.
+ *
+ * Modules: grade_cases.c (grading/cases.json), grade_run.c (children with limits and timeouts),
+ * grade_part.c (build, suite, cases of one part), grade_report.c (table, results.json, HTML). */
+#ifndef PL_GRADE_H
+#define PL_GRADE_H
+
+#include <stdbool.h>
+#include <stdint.h>
+#include <stdio.h>
+#include "../framework/status.h"
+#include "verdict.h"
+
+#define GRADE_MAX_CASES 16
+#define GRADE_MAX_FLAGS 16
+#define GRADE_NUM_PARTS 5
+#define GRADE_WORK_FACTOR 3.0     /* a BVH may do up to 3x the course's work per camera ray */
+#define GRADE_SPP_TOLERANCE 0.05  /* an adaptive render's mean samples per pixel: the course's +-5% */
+
+/* ---- cases (grading/cases.json) ------------------------------------------------------------ */
+
+typedef struct {
+    char name[64];
+    char scene[256];                    /* relative to the repository root */
+    char *flags[GRADE_MAX_FLAGS];       /* renderer flags, owned */
+    int num_flags;
+    int width, height, samples;         /* the candidate's render */
+    int block_side;                     /* verdict blocks of this many pixels square; 0: sized to hold
+                                           8192 candidate samples (verdict.h says why) */
+    int reference_samples;              /* the reference: the solution's render at this many samples */
+    char *reference_flags[GRADE_MAX_FLAGS];  /* its flags when they differ (adaptive cases), owned */
+    int num_reference_flags;            /* 0: the reference uses flags */
+    double points;
+    bool hidden;
+    bool work_per_ray;                  /* also judge BVH node visits per ray against the solution's */
+    bool known_variance;                /* "statistic": "known_variance" (verdict.h), else the paired t */
+    char shows[160];                    /* what the case makes visible, for the report */
+} grade_case;
+
+typedef struct {
+    int part;                           /* 1..5 */
+    double unit_points;
+    int unit_tests;                     /* the tests its suite runs to its end ("unit_tests" in cases.json) */
+    grade_case cases[GRADE_MAX_CASES];
+    int num_cases;
+} grade_part_spec;
+
+typedef struct {
+    double family_alpha;
+    grade_part_spec parts[GRADE_NUM_PARTS];
+} grade_spec;
+
+/* grading/cases.json, plus the hidden cases of hidden_path when that file exists (NULL: none). */
+#define GRADE_CASES "grading/cases.json"
+#define GRADE_HIDDEN_CASES "grading/hidden/cases.json"
+pl_status grade_spec_load(const char *path, const char *hidden_path, grade_spec *out, pl_diag *diag);
+void grade_spec_free(grade_spec *s);
+
+/* The command of case k's own render (its flags, resolution and samples; not the reference's):
+ * `bin flags... -r W H -s S --seed SEED -t THREADS -q -f out scene`, into argv (room for
+ * GRADE_MAX_FLAGS + 16 entries, NULL-terminated); the numbers are formatted into text. The grader
+ * renders a candidate with it, the reference maker the course's figures (probe_case). */
+typedef struct { char width[16], height[16], samples[16], seed[32], threads[16]; } grade_case_text;
+void grade_case_command(const grade_case *k, const char *bin, const char *scene, const char *out,
+                        unsigned long long seed, int threads, grade_case_text *text, char **argv);
+
+/* ---- results ------------------------------------------------------------------------------- */
+
+typedef struct {
+    const grade_case *spec;
+    bool ran;                  /* the render finished and its file was read */
+    bool pass;                 /* it ran, its image matches and its figures are in bounds */
+    char reason[256];          /* why it did not run or failed, when it did not pass */
+    verdict v;                 /* the image verdict (when ran) */
+    double spp, course_spp;    /* adaptive cases: mean samples per pixel, the candidate's and the course's */
+    double work, course_work;  /* work_per_ray cases: node visits + primitive tests per camera ray */
+    double score;
+    char images[3][320];       /* candidate, reference, z-map PNGs, relative to the report folder */
+} grade_case_result;
+
+typedef struct {
+    int part;
+    bool built;
+    char build_log[320];       /* path of the compiler's output */
+    char build_output[4096];   /* its last lines, when the part does not build */
+    int tests_run, tests_failed;
+    char suite_reason[256];    /* why the suite scored zero (crash, timeout, no results), or "" */
+    char failures[8192];       /* names and messages of the failed tests, Markdown */
+    double unit_score, unit_max;
+    grade_case_result cases[GRADE_MAX_CASES];
+    int num_cases;
+    double score, max_score;
+} grade_part_result;
+
+typedef struct {
+    uint64_t seed;             /* drawn at grading time, recorded */
+    char unprotected[256];     /* the protections this machine could not give student code, or "" */
+    double seconds;
+    grade_part_result parts[GRADE_NUM_PARTS];
+    int num_parts;
+} grade_result;
+
+/* ---- running children ---------------------------------------------------------------------- */
+
+typedef struct {
+    double wall_seconds;       /* kill the whole process group after this */
+    const char *cwd;           /* run in this folder */
+    const char *log_path;      /* stdout and stderr go here (a fresh file the grader writes, in a folder
+                                  the child cannot write), cut at log_max bytes; NULL: discarded */
+    long log_max;
+    char *const *env;          /* extra "NAME=value" entries, NULL-terminated, or NULL */
+    bool untrusted;            /* runs student code: limits, no network, an unprivileged user */
+} grade_run_opts;
+
+/* What grade_run can do to contain untrusted code on this machine: limits always; a network
+ * namespace and another user only as root. The report names what was unavailable. */
+typedef struct {
+    bool as_other_user;        /* runs as `nobody` (the grader is root) */
+    bool no_network;           /* a new network namespace */
+    unsigned uid, gid;         /* nobody's */
+    long process_limit;        /* RLIMIT_NPROC for untrusted children (counts the whole user's) */
+} grade_sandbox;
+
+/* Finds what this machine allows (call once, before any child runs). */
+grade_sandbox grade_sandbox_probe(void);
+/* The protections this machine could not give, in words for the report ("" when none is missing). */
+void grade_sandbox_describe(const grade_sandbox *s, char *out, size_t size);
+
+typedef struct {
+    bool exited;               /* ended by exit(), not by a signal or the timeout */
+    int status;                /* exit status when exited, else the signal */
+    bool timed_out;
+    double seconds;
+} grade_run_result;
+
+/* Runs argv as a child in its own process group; never reads what it prints except into the log. */
+grade_run_result grade_run(char *const argv[], const grade_run_opts *o);
+/* A one-line reason for a child that did not exit normally ("killed by signal 11", "timed out"). */
+void grade_run_describe(const grade_run_result *r, char *out, size_t size);
+
+/* ---- one part -------------------------------------------------------------------------------- */
+
+typedef struct {
+    const char *root;          /* the tree holding the other parts (the course's), or the student's tree */
+    const char *submission;    /* a folder holding the submission's parts/, or NULL (cumulative) */
+    const char *work;          /* scratch: build trees, renders, logs */
+    const char *report;        /* the report folder (images and index.html) */
+    bool public_only;
+    uint64_t seed;
+    int threads;
+    grade_sandbox sandbox;     /* what containment this machine allows */
+} grade_env;
+
+/* Builds (or reuses) the tree for part p, runs its suite and cases, and fills r. */
+void grade_part(const grade_env *env, const grade_spec *spec, const grade_part_spec *p, grade_part_result *r);
+/* Fresh scratch for part `part`: work/partN (the grader's: logs) and work/partN/renders (the child's). */
+bool grade_part_dirs(const grade_env *env, int part);
+/* Scores the cmocka XML files in dir: points times the share of tests passed, or zero with a reason
+ * in r->suite_reason when the results are missing or malformed, or hold other than `expected` tests
+ * (the suite stopped early, or the files are not its own), or disagree with the exit status. */
+void grade_suite_score(const char *dir, int expected, double points, int status, grade_part_result *r);
+/* The last `lines` lines of the log at path, less make's progress lines, at most size - 1 bytes ("" when unreadable). */
+void grade_log_tail(const char *path, int lines, char *out, size_t size);
+
+/* ---- reports --------------------------------------------------------------------------------- */
+
+void grade_print_table(const grade_result *r, FILE *out);
+pl_status grade_write_results_json(const grade_result *r, const char *path, pl_diag *diag);
+pl_status grade_write_html(const grade_result *r, const char *folder, pl_diag *diag);
+
+#endif

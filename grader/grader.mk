@@ -1,0 +1,33 @@
+# The grader (bin/grade) and its suite. It ships to students (make grade: their own tree, public
+# cases) and to the autograder (bin/grade --submission: each part on its own).
+
+GRADER_SRC := $(filter-out grader/grade_main.c,$(wildcard grader/*.c))
+GRADER_OBJ := $(patsubst %.c,$(BUILD)/%.o,$(GRADER_SRC))
+# bin/grade links the framework's file, image and statistics code, never a part: it must not run
+# student code in its own process.
+GRADER_FRAMEWORK_OBJ := $(addprefix $(BUILD)/framework/,image.o file.o exr.o film.o status.o stats.o) \
+                        $(BUILD)/third_party/lodepng/lodepng.o
+$(BIN)/grade: $(BUILD)/grader/grade_main.o $(GRADER_OBJ) $(GRADER_FRAMEWORK_OBJ)
+	$(say) LD $@
+	@mkdir -p $(dir $@)
+	$(Q)$(CC) $(LDFLAGS) -o $@ $^ $(LDLIBS)
+
+# The grader's suite (make test-grader) tests its modules, all but main, so it links them.
+$(BIN)/test-grader: $(GRADER_OBJ)
+# The grader's paths and messages live in fixed buffers on purpose: a long path is cut in a message
+# (or makes a file not found, which fails safe), never overflows. GCC's truncation analysis, which
+# sees more at -O1 (SAN=1) than at -O2, would make every such snprintf an error under WERROR=1.
+$(BUILD)/grader/%.o: CFLAGS += -Wno-format-truncation
+
+.PHONY: grade test-report test-grader-process
+grade: $(BIN)/grade  ## grade your parts on the public cases (PARTS=3: one part; SEED=N: repeat a run); report in out/grade/
+	$(Q)$(BIN)/grade --out out/grade $(if $(PARTS),--parts $(PARTS)) $(if $(SEED),--seed $(SEED))
+
+# The HTML report in a real browser: headless Chromium screenshots it.
+test-report: $(BIN)/grade $(BIN)/pathtracer $(BIN)/imgtool  ## the grader's HTML report, screenshotted in headless Chromium
+	$(Q)sh tests/grader/report.sh
+
+# The grader's containment at process level (tests/grader/sandbox.sh says what it proves): grades
+# part 1 of two hostile submissions; as root it also checks what nobody can read.
+test-grader-process: $(BIN)/grade $(BIN)/test-grader $(foreach n,1 2 3 4 5,$(BIN)/test-part$(n))  ## the grader's containment, at process level
+	$(Q)sh tests/grader/sandbox.sh
