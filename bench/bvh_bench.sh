@@ -1,7 +1,7 @@
 #!/bin/sh
 # BVH benchmark driver (make bench-bvh): not a test. Runs bin/bvh_bench over the scenes given as
 # arguments, times the whole normal-shaded render of the 58,784-triangle bunny (bench/data: the npm
-# bunny subdivided twice by course/bunny_to_dae.mjs, standing in for a ~50k scanned head), and writes
+# bunny subdivided twice by the course's bunny converter, standing in for a ~50k scanned head), and writes
 # build/bench/bvh/RESULTS.md: bench/RESULTS.md with its generated part (between the GENERATED
 # markers) replaced. It never writes a tracked file: copy it over bench/RESULTS.md to record it.
 # Environment: BIN (bin), RUNS (5: runs per figure, median taken).

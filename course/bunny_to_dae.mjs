@@ -146,7 +146,7 @@ const splice = (text, marker, insert) => {
   if (at < 0) throw new Error(`cornell_empty.dae has no ${marker}`);
   return text.slice(0, at) + insert + text.slice(at);
 };
-box = box.replace(/<!-- pathlab: an empty Cornell box,/, '<!-- pathlab: the Stanford bunny (npm package `bunny`, public domain; written by course/bunny_to_dae.mjs) in a Cornell box,');
+box = box.replace(/<!-- pathlab: an empty Cornell box,/, '<!-- pathlab: the Stanford bunny (npm package `bunny`, public domain; written by the course's converter) in a Cornell box,');
 box = splice(box, '  </library_geometries>', geometry);
 box = splice(box, '    </visual_scene>', node);
 const tmp = `${out}.tmp`;
