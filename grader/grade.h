@@ -1,12 +1,15 @@
 /* Grader machinery: not part of any assignment.
  * bin/grade: grades a submission part by part. For each part N it builds a
  * tree from the submission's part N and the solution's other parts, runs part N's unit-test suite
- * (verdicts read from cmocka's XML files, never from the console) and renders part N's image cases,
+ * (verdicts read from cmocka's XML files, never from the console; a submission's from the judge's
+ * only) and renders part N's image cases,
  * each judged against its reference by grader/verdict.c. In a student's own tree (--cumulative) it
  * builds the tree as it is and grades the public cases, so a student sees the verdicts first.
  *
  * Modules: grade_cases.c (grading/cases.json), grade_run.c (children with limits and timeouts),
- * grade_part.c (build, suite, cases of one part), grade_report.c (table, results.json, HTML). */
+ * grade_part.c (build, suite, cases of one part), grade_judge.c (a submission's suite, split into
+ * subject and judge processes per test: tests/seam/seam.h), grade_report.c (table, results.json,
+ * HTML). */
 #ifndef PL_GRADE_H
 #define PL_GRADE_H
 
