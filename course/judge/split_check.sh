@@ -12,17 +12,18 @@
 # Usage: course/judge/split_check.sh   (from the Makefile; prints one line a check, fails on any)
 set -u
 root=$(cd "$(dirname "$0")/../.." && pwd)
-work="$root/build/split-check"
+# The scratch tree lives outside build/: the Makefile includes every .d file under build/, and a
+# second tree's would slow every make in this one. It is removed when every check passes.
+work=$(mktemp -d "${TMPDIR:-/tmp}/split-check.XXXXXX")
 tree="$work/tree"
 problems=0
-rm -rf "$work"
 mkdir -p "$tree"
 (cd "$root" && cp -a Makefile framework parts tests scenes third_party "$tree"/)
 
 build() {
     make -C "$tree" -j2 --no-print-directory LTO=0 WERROR=1 SAN=0 "$@" > "$work/build.log" 2>&1 && return 0
     tail -n 20 "$work/build.log"
-    echo "FAIL  the scratch tree does not build: $*"
+    echo "FAIL  the scratch tree does not build: $* (see $work)"
     exit 1
 }
 
@@ -112,6 +113,10 @@ for attack in "$root"/course/judge/attacks/*.c; do
     cp "$root/parts/$folder"/*.c "$tree/parts/$folder/"
 done
 
-[ $problems -eq 0 ] && echo "test-judge: the split suites agree with test-partN and hold against every attack" && exit 0
-echo "test-judge: $problems problems"
+if [ $problems -eq 0 ]; then
+    rm -rf "$work"
+    echo "test-judge: the split suites agree with test-partN and hold against every attack"
+    exit 0
+fi
+echo "test-judge: $problems problems (the scratch tree is kept: $work)"
 exit 1

@@ -29,7 +29,7 @@ $(BIN)/subject-part$(1): $(call suite_obj,part$(1)) $(COMMON_OBJ) $(LIB_OBJ) $(c
 	$$(split_refuse)
 	$$(say) LD $$@
 	@mkdir -p $$(dir $$@)
-	$$(Q)$$(CC) $$(LDFLAGS) $(foreach f,$(call part_fns,$(1)),-Wl,--wrap=$(f)) -o $$@ $$^ $$(LDLIBS) $$(shell pkg-config --libs $(TPKGS))
+	$$(Q)$$(CC) $$(LDFLAGS) $$(foreach f,$$(call part_fns,$(1)),-Wl,--wrap=$$(f)) -o $$@ $$^ $$(LDLIBS) $$(shell pkg-config --libs $(TPKGS))
 
 $(BIN)/judge-part$(1): $(call suite_obj,part$(1)) $(COMMON_OBJ) $(filter-out $(call part_obj,$(1)),$(LIB_OBJ)) $(call seam_obj,judge,replay,$(1))
 	$$(say) LD $$@
