@@ -42,16 +42,27 @@ _Noreturn void seam_fail(seam_fn fn, const char *format, ...)
     _exit(3);
 }
 
-/* Reads exactly size bytes; false at the end of the stream (the subject crashed, exited or stopped). */
+/* Reads exactly size bytes through a buffer (a record is a few small reads, a trace many); false at
+ * the end of the stream (the subject crashed, exited or stopped). */
+static unsigned char in_buffer[64 * 1024];
+static size_t in_start, in_end;
+
 static bool read_all(void *data, size_t size)
 {
     unsigned char *p = data;
     while (size > 0) {
-        ssize_t n = read(in_fd, p, size);
-        if (n < 0 && errno == EINTR) continue;
-        if (n <= 0) return false;
-        p += n;
-        size -= (size_t)n;
+        if (in_start == in_end) {
+            ssize_t n = read(in_fd, in_buffer, sizeof in_buffer);
+            if (n < 0 && errno == EINTR) continue;
+            if (n <= 0) return false;
+            in_start = 0;
+            in_end = (size_t)n;
+        }
+        size_t k = in_end - in_start < size ? in_end - in_start : size;
+        memcpy(p, in_buffer + in_start, k);
+        in_start += k;
+        p += k;
+        size -= k;
     }
     return true;
 }
