@@ -18,6 +18,13 @@ static int in_fd;
 static pthread_t test_thread;       /* main's: the thread cmocka runs the tests on */
 static bool broken;                 /* the stream failed once: every later call fails too */
 static unsigned char *payload;      /* the last record's outputs (one test calls from one thread) */
+static _Thread_local int bound_nodes, bound_prims;  /* seam_trace_bounds, for the next replay */
+
+void seam_trace_bounds(int nodes, int prims)
+{
+    bound_nodes = nodes;
+    bound_prims = prims;
+}
 static size_t payload_room;
 
 __attribute__((constructor)) static void open_pipe(void)
@@ -84,7 +91,9 @@ static void replay_trace(seam_fn fn, const seam_header *h)
         read_or_fail(fn, &entry, sizeof entry);
         bool node = i < h->trace_nodes;
         int *list = node ? t->nodes : t->prims, *num = node ? &t->num_nodes : &t->num_prims;
-        int cap = node ? t->cap_nodes : t->cap_prims;
+        int cap = node ? t->cap_nodes : t->cap_prims, bound = node ? bound_nodes : bound_prims;
+        if (entry < 0 || entry >= bound)
+            seam_fail(fn, "it reports a visit to %s %d, of %d", node ? "node" : "primitive", entry, bound);
         if (*num < cap) list[(*num)++] = entry;
         else t->overflow = true;
     }
@@ -110,6 +119,7 @@ const void *seam_replay(seam_fn fn, uint64_t inputs, rng *g, size_t *size)
     if (h.inputs != inputs) seam_fail(fn, "the answer is for a call with other arguments than the test's");
     if (h.payload > SEAM_MAX_PAYLOAD) seam_fail(fn, "it sent %u bytes of outputs", h.payload);
     replay_trace(fn, &h);
+    seam_trace_bounds(0, 0);
     if (h.payload > payload_room) {
         free(payload);
         payload_room = h.payload;

@@ -117,6 +117,10 @@ const void *seam_replay(seam_fn fn, uint64_t inputs, rng *g, size_t *size);
 void seam_replay_fixed(seam_fn fn, uint64_t inputs, rng *g, void *out, size_t size);
 /* The judge's side of seam_end_hit. */
 bool seam_replay_hit(seam_fn fn, uint64_t inputs, ray *r, hit *h);
+/* Trace entries are indices the tests index arrays with: the next replay on this thread accepts node
+ * visits below `nodes` and primitive tests below `prims` (the BVH's queries set them from the tree
+ * and scene they were given); any other call may add no entry. */
+void seam_trace_bounds(int nodes, int prims);
 /* Fails the running test with the judge's message about a call to fn: through cmocka on the test's
  * thread; on another (a render's worker) it prints "seam: <message>" and ends the judge with status
  * 3, which the grader reads as that test's failure. Does not return. */

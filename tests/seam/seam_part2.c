@@ -132,13 +132,29 @@ pl_status bvh_build(bvh *out, const scene *s, int max_leaf_size)
     return PL_OK;
 }
 
+/* The tree and scene bound the trace; a hit names a primitive and material that the judge's own
+ * code (the renderer, the tests' messages) indexes its arrays with: a real hit came from
+ * scene_prim_intersect, which sets both from the scene. */
+static bool replay_traversal(seam_fn fn, const bvh *b, const scene *s, const ray *r, ray *r_out, hit *h)
+{
+    int prims = s ? scene_prim_count(s) : 0;
+    seam_trace_bounds(b ? b->num_nodes : 0, prims);
+    bool found = seam_replay_hit(fn, traverse_inputs(b, s, r, h), r_out, h);
+    if (!found || !h) return found;
+    bool real = h->prim >= 0 && h->prim < prims &&
+                h->material == (h->prim < s->num_triangles ? s->triangles[h->prim].material
+                                                           : s->spheres[h->prim - s->num_triangles].material);
+    if (!real) seam_fail(fn, "it found a hit on primitive %d (of %d) with material %d: not a primitive's own hit", h->prim, prims, h->material);
+    return found;
+}
+
 bool bvh_intersect(const bvh *b, const scene *s, ray *r, hit *h)
 {
-    return seam_replay_hit(SEAM_BVH_INTERSECT, traverse_inputs(b, s, r, h), r, h);
+    return replay_traversal(SEAM_BVH_INTERSECT, b, s, r, r, h);
 }
 
 bool bvh_occluded(const bvh *b, const scene *s, const ray *r)
 {
-    return seam_replay_hit(SEAM_BVH_OCCLUDED, traverse_inputs(b, s, r, NULL), NULL, NULL);
+    return replay_traversal(SEAM_BVH_OCCLUDED, b, s, r, NULL, NULL);
 }
 #endif

@@ -1,6 +1,8 @@
 /* Attack (course/judge/split_check.sh), on part 2: bvh_build answers with a record of its own that
  * claims a tree of 2^30 nodes (and sends 8 bytes of it), then exits; the other tasks are the stubs.
  * Expected: the judge refuses the size before allocating anything, and the tests fail.
+ * Graded on test_bvh_build* (the tests of the build alone).
+ * Replaces: bvh.c
  * Passes: 0 */
 #include "part2.h"
 #include "../../framework/todo.h"
