@@ -1,7 +1,7 @@
 # Instructor-only targets: the release and its proof, the autograder bundle and its end-to-end test,
 # references (locally or on Slurm), mutants and calibration. The student release leaves course/ out,
 # and the Makefile includes this fragment only where it exists.
-.PHONY: release release-check test-autograder references test-slurm mutants grade-mutants calibrate
+.PHONY: release release-check test-autograder references test-slurm mutants grade-mutants calibrate test-judge
 
 COURSE_TOOL_OBJ := $(addprefix $(BUILD)/framework/,image.o file.o status.o) $(BUILD)/third_party/lodepng/lodepng.o
 
@@ -25,6 +25,11 @@ release: $(BIN)/strip_solutions $(BIN)/release_points  ## cut release/student an
 
 release-check: release $(BIN)/imgtool  ## cut the release, then prove it sound (course/release/make_release says what)
 	$(Q)bash course/release/make_release check $(BIN)/strip_solutions $(BIN)/imgtool $(BIN)/release_points
+
+# The grader's split suites (tests/seam/seam.h) in a scratch tree: same verdicts as test-partN on the
+# solution and the stubs, and nothing gained by the attacks in course/judge/attacks/ (a few minutes).
+test-judge:  ## the split suites (subject | judge per test) agree with test-partN and shrug off attacks
+	$(Q)sh course/judge/split_check.sh
 
 # Slow (about 10 minutes on 2 cores): the bundle graded in a temporary Gradescope root, as root.
 test-autograder: release  ## the autograder bundle end to end in Gradescope's layout (solution, stubs, mutants, adversaries)

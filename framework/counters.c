@@ -13,6 +13,15 @@ work_counts counters_take(void)
     return c;
 }
 
+work_counts counters_peek(void) { return counts; }
+
+void counters_add(work_counts w)
+{
+    counts.rays += w.rays;
+    counts.node_visits += w.node_visits;
+    counts.prim_tests += w.prim_tests;
+}
+
 void counters_add_ray(void) { counts.rays++; }
 
 void counters_add_visit(int node)
@@ -43,3 +52,5 @@ void counters_trace_begin(counters_trace *t)
 }
 
 void counters_trace_end(void) { trace = NULL; }
+
+counters_trace *counters_trace_current(void) { return trace; }

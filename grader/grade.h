@@ -1,12 +1,15 @@
 /* Grader machinery: not part of any assignment.
  * bin/grade: grades a submission part by part. For each part N it builds a
  * tree from the submission's part N and the solution's other parts, runs part N's unit-test suite
- * (verdicts read from cmocka's XML files, never from the console) and renders part N's image cases,
+ * (verdicts read from cmocka's XML files, never from the console; a submission's from the judge's
+ * only) and renders part N's image cases,
  * each judged against its reference by grader/verdict.c. In a student's own tree (--cumulative) it
  * builds the tree as it is and grades the public cases, so a student sees the verdicts first.
  *
  * Modules: grade_cases.c (grading/cases.json), grade_run.c (children with limits and timeouts),
- * grade_part.c (build, suite, cases of one part), grade_report.c (table, results.json, HTML). */
+ * grade_part.c (build, suite, cases of one part), grade_judge.c (a submission's suite, split into
+ * subject and judge processes per test: tests/seam/seam.h), grade_report.c (table, results.json,
+ * HTML). */
 #ifndef PL_GRADE_H
 #define PL_GRADE_H
 
@@ -140,6 +143,9 @@ typedef struct {
 
 /* Runs argv as a child in its own process group; never reads what it prints except into the log. */
 grade_run_result grade_run(char *const argv[], const grade_run_opts *o);
+/* grade_run with pipe ends for the split suite (grade_judge.c): in_fd > 0 becomes the child's stdin
+ * (else /dev/null), fd3 > 0 its fd 3. */
+grade_run_result grade_run_piped(char *const argv[], const grade_run_opts *o, int in_fd, int fd3);
 /* A one-line reason for a child that did not exit normally ("killed by signal 11", "timed out"). */
 void grade_run_describe(const grade_run_result *r, char *out, size_t size);
 
@@ -164,6 +170,13 @@ bool grade_part_dirs(const grade_env *env, int part);
  * in r->suite_reason when the results are missing or malformed, or hold other than `expected` tests
  * (the suite stopped early, or the files are not its own), or disagree with the exit status. */
 void grade_suite_score(const char *dir, int expected, double points, int status, grade_part_result *r);
+/* Adds the tests of one cmocka XML file to r (tests_run, tests_failed, failures); false when the file
+ * is not cmocka's XML. */
+bool grade_suite_xml(const char *path, grade_part_result *r);
+/* The split suite (grade_judge.c): each of part p's tests run as the subject (tree's
+ * bin/subject-partN: the submission's code, contained) piped into the judge (the course's
+ * bin/judge-partN under env->root, trusted, no student code), scored from the judge's results only. */
+void grade_judge_suite(const grade_env *env, const char *tree, const grade_part_spec *p, grade_part_result *r);
 /* The last `lines` lines of the log at path, less make's progress lines, at most size - 1 bytes ("" when unreadable). */
 void grade_log_tail(const char *path, int lines, char *out, size_t size);
 

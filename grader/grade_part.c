@@ -144,14 +144,15 @@ static bool make_tree(const grade_env *env, int n, char *tree, size_t size, grad
 
 static bool build(const grade_env *env, const char *tree, int n, grade_part_result *r)
 {
-    char target[32];
+    char target[32], subject[32];
     snprintf(target, sizeof target, "bin/test-part%d", n);
+    snprintf(subject, sizeof subject, "bin/subject-part%d", n);  /* the split suite's half (grade_judge.c) */
     snprintf(r->build_log, sizeof r->build_log, "%s/part%d/build.log", env->work, n);
     /* LTO=0: the objects then hold machine code, and the allow-list reads the very files linked.
      * WERROR=0 SAN=0: the course's build whatever the grader's caller exported (CI exports
      * WERROR=1, which made a student's unused variable a part that does not build). */
     char *argv[] = {"make", "-C", (char *)tree, "-j2", "--no-print-directory", "LTO=0", "WERROR=0", "SAN=0",
-                    "bin/pathtracer", target, NULL};
+                    "bin/pathtracer", target, env->submission ? subject : NULL, NULL};
     /* The compiler reads student code too (#include, .incbin): it runs contained like the code. */
     grade_run_opts o = {BUILD_SECONDS, NULL, r->build_log, LOG_MAX, NULL, env->submission != NULL};
     grade_run_result rr = grade_run(argv, &o);
@@ -216,8 +217,7 @@ static void append(char *buf, size_t size, const char *text)
     if (len + 1 < size) snprintf(buf + len, size - len, "%s", text);
 }
 
-/* Adds the tests of one cmocka XML file to r; false when the file is not cmocka's XML. */
-static bool read_suite_xml(const char *path, grade_part_result *r)
+bool grade_suite_xml(const char *path, grade_part_result *r)
 {
     int fd = grade_guard_open_child_file(path, XML_MAX);  /* the suite's user wrote it: no links */
     xmlDocPtr doc = fd >= 0 ? xmlReadFd(fd, path, NULL, XML_PARSE_NONET | XML_PARSE_NOBLANKS | XML_PARSE_NOERROR | XML_PARSE_NOWARNING) : NULL;
@@ -264,7 +264,7 @@ void grade_suite_score(const char *dir, int expected, double points, int status,
         if (!strstr(e->d_name, ".xml")) continue;
         char path[4400];
         snprintf(path, sizeof path, "%s/%s", dir, e->d_name);
-        all_read = read_suite_xml(path, r) && all_read;
+        all_read = grade_suite_xml(path, r) && all_read;
     }
     if (d) closedir(d);
     /* The XML files are written group by group: a suite that stopped early (an _exit in a test, a
@@ -360,7 +360,10 @@ void grade_part(const grade_env *env, const grade_spec *spec, const grade_part_s
             return;
         }
     }
-    run_suite(env, tree, p, r);
+    /* A submission's verdicts come from the course's judge (grade_judge.c), never from a process its
+     * code ran in; a student's own tree runs its suite whole, which is faster and theirs to trust. */
+    if (env->submission) grade_judge_suite(env, tree, p, r);
+    else run_suite(env, tree, p, r);
     for (int i = 0; i < r->num_cases; i++) grade_image_case(env, spec, tree, p->part, &r->cases[i]);
     r->score = r->unit_score;
     for (int i = 0; i < r->num_cases; i++) r->score += r->cases[i].score;

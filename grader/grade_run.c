@@ -93,15 +93,17 @@ static void set_limit(int resource, rlim_t value)
 /* In the child, before exec: a group of its own (so the timeout kills every descendant), the pipe
  * to the grader as stdout and stderr (the grader writes the log, never the child), no stdin, and a
  * cap on every file it writes so a flood cannot fill the disk. */
-static void child_setup(const grade_run_opts *o, int out_fd)
+static void child_setup(const grade_run_opts *o, int out_fd, int in_fd, int fd3)
 {
     setpgid(0, 0);
     if (o->cwd && chdir(o->cwd) != 0) _exit(126);
     int in = open("/dev/null", O_RDONLY);
     if (in < 0 || out_fd < 0) _exit(126);
-    dup2(in, 0);
+    dup2(in_fd > 0 ? in_fd : in, 0);
     dup2(out_fd, 1);
     dup2(out_fd, 2);
+    /* The record pipe as fd 3; dup2 onto itself would keep close-on-exec, so clear it instead. */
+    if (fd3 > 0 && (fd3 == 3 ? fcntl(3, F_SETFD, 0) : dup2(fd3, 3)) < 0) _exit(126);
     set_limit(RLIMIT_FSIZE, LIMIT_FILE_BYTES);
     set_limit(RLIMIT_CORE, 0);
     for (char *const *e = o->env; e && *e; e++) putenv(*e);
@@ -147,7 +149,9 @@ static bool pump(int pipe_fd, int log_fd, long max, long *written, int ms)
     return true;
 }
 
-grade_run_result grade_run(char *const argv[], const grade_run_opts *o)
+grade_run_result grade_run(char *const argv[], const grade_run_opts *o) { return grade_run_piped(argv, o, 0, 0); }
+
+grade_run_result grade_run_piped(char *const argv[], const grade_run_opts *o, int in_fd, int fd3)
 {
     grade_run_result r = {false, -1, false, 0.0};
     double t0 = now();
@@ -162,7 +166,7 @@ grade_run_result grade_run(char *const argv[], const grade_run_opts *o)
         return r;
     }
     if (pid == 0) {
-        child_setup(o, fds[1]);
+        child_setup(o, fds[1], in_fd, fd3);
         execvp(argv[0], argv);
         _exit(127);
     }

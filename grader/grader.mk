@@ -31,3 +31,4 @@ test-report: $(BIN)/grade $(BIN)/pathtracer $(BIN)/imgtool  ## the grader's HTML
 # part 1 of two hostile submissions; as root it also checks what nobody can read.
 test-grader-process: $(BIN)/grade $(BIN)/test-grader $(foreach n,1 2 3 4 5,$(BIN)/test-part$(n))  ## the grader's containment, at process level
 	$(Q)sh tests/grader/sandbox.sh
+

@@ -133,6 +133,10 @@ void check_implemented(const char *file, int line)
     }
 }
 
+bool pl_test_split;
+
+int pl_test_threads(int wanted) { return pl_test_split ? 1 : wanted; }
+
 int test_setup(void **state)
 {
     (void)state;

@@ -51,4 +51,11 @@ void check_true(bool cond, const char *what, const char *file, int line);
 /* cmocka setup/teardown that reset and silence the stub counter; use for every student-code test. */
 int test_setup(void **state);
 
+/* The grader's split suites (tests/seam/seam.h) run the part's functions in one process and the test
+ * in another, which replays their answers in the order they were given: there a test calls part code
+ * from one thread at a time. pl_test_split is set before main in those binaries only. */
+extern bool pl_test_split;
+/* The threads a test may use to call part code: `wanted`, or 1 in a split suite. */
+int pl_test_threads(int wanted);
+
 #endif

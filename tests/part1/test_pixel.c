@@ -191,7 +191,7 @@ static void test_render__normal_image_matches_oracle(void **state)
     s.camera.znear = 1e-3f;
     s.camera.zfar = 100.0f;
     options o = options_default();
-    o.width = 64, o.height = 48, o.normals = true, o.threads = 2;
+    o.width = 64, o.height = 48, o.normals = true, o.threads = pl_test_threads(2);
     accel a;
     pl_diag d = pl_diag_default();
     assert_int_equal(PL_OK, accel_build(&a, &s, true, 4, &d));

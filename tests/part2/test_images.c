@@ -30,7 +30,7 @@ static pl_status render_normals(const scene *s, bool use_bvh, image *out)
 {
     options o = options_default();
     o.normals = true;
-    o.threads = 2;
+    o.threads = pl_test_threads(2);
     o.width = IMAGE_WIDTH;
     o.height = IMAGE_HEIGHT;
     pl_diag diag = pl_diag_default();

@@ -386,12 +386,13 @@ static void check_tree_against_oracle(const scene *s, const bvh *b, const char *
     }
     oracle_job jobs[ORACLE_THREADS];
     pthread_t threads[ORACLE_THREADS];
-    for (int k = 0; k < ORACLE_THREADS; k++) {
-        jobs[k] = (oracle_job){s, b, rays, verdicts, checks, begin + k, end, ORACLE_THREADS};
+    int workers = pl_test_threads(ORACLE_THREADS);
+    for (int k = 0; k < workers; k++) {
+        jobs[k] = (oracle_job){s, b, rays, verdicts, checks, begin + k, end, workers};
         if (k > 0 && pthread_create(&threads[k], NULL, oracle_worker, &jobs[k]) != 0) PL_FAIL("pthread_create failed");
     }
     oracle_worker(&jobs[0]);
-    for (int k = 1; k < ORACLE_THREADS; k++) pthread_join(threads[k], NULL);
+    for (int k = 1; k < workers; k++) pthread_join(threads[k], NULL);
 
     int wrong = 0, ties = 0, first = -1;
     for (int i = begin; i < end; i++) {

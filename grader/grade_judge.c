@@ -1,0 +1,179 @@
+/* Grader machinery: not part of any assignment. The split suite of one part (tests/seam/seam.h says
+ * how the two halves work): for each test, the subject runs the submission's code, contained, and
+ * writes its calls' answers to a pipe; the judge, the course's binary with no student code in it,
+ * runs the same test on those answers. Only the judge's results count: what the subject prints,
+ * exits with or writes to files is never read. One pair of processes per test, so a crash, a hang
+ * or a corrupted subject costs that test only. */
+#include "grade.h"
+#include <errno.h>
+#include <fcntl.h>
+#include <signal.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <sys/stat.h>
+#include <sys/wait.h>
+#include <time.h>
+#include <unistd.h>
+
+#define TEST_SECONDS 60      /* one test's subject; the slowest test takes about 8 s */
+#define JUDGE_SECONDS 90     /* its judge: it waits for the subject, so it gets longer */
+#define SPLIT_SECONDS 300    /* the whole suite */
+#define BUILD_SECONDS 300
+#define LOG_MAX (256 * 1024)
+#define MAX_TESTS 256
+#define NAME_MAX_LEN 128
+#define JUDGE_SEAM_STATUS 3  /* replay.c: the record stream failed on a render's worker thread */
+
+typedef struct {
+    char names[MAX_TESTS][NAME_MAX_LEN];
+    int count;
+} test_list;
+
+static double now(void)
+{
+    struct timespec ts;
+    clock_gettime(CLOCK_MONOTONIC, &ts);
+    return (double)ts.tv_sec + ts.tv_nsec * 1e-9;
+}
+
+/* The course's judge, built in the course's tree (never the grading tree, whose objects the
+ * submission's compiler run could have touched), with the grading tree's flags. */
+static bool build_judge(const grade_env *env, int n, const char *dir, char *judge, size_t size)
+{
+    char target[32], log[4200];
+    snprintf(target, sizeof target, "bin/judge-part%d", n);
+    snprintf(judge, size, "%s/%s", env->root, target);
+    snprintf(log, sizeof log, "%s/judge-build.log", dir);
+    char *argv[] = {"make", "-C", (char *)env->root, "-j2", "--no-print-directory", "LTO=0", "WERROR=0", "SAN=0", target, NULL};
+    grade_run_opts o = {BUILD_SECONDS, NULL, log, LOG_MAX, NULL, false};
+    grade_run_result rr = grade_run(argv, &o);
+    return rr.exited && rr.status == 0;
+}
+
+/* The judge's list of its tests (PL_TEST_LIST=1: "  name" lines under each group's). */
+static bool list_tests(const char *judge, const char *root, const char *dir, test_list *list)
+{
+    char log[4200];
+    snprintf(log, sizeof log, "%s/tests.list", dir);
+    char *envv[] = {"PL_TEST_LIST=1", NULL}, *argv[] = {(char *)judge, NULL};
+    grade_run_opts o = {JUDGE_SECONDS, root, log, LOG_MAX, envv, false};
+    grade_run_result rr = grade_run(argv, &o);
+    FILE *f = rr.exited && rr.status == 0 ? fopen(log, "r") : NULL;
+    list->count = 0;
+    char line[512];
+    while (f && fgets(line, sizeof line, f)) {
+        size_t len = strcspn(line, "\n");
+        line[len] = '\0';
+        if (strncmp(line, "  ", 2) || len - 2 >= NAME_MAX_LEN || strspn(line + 2, "abcdefghijklmnopqrstuvwxyzABCDEFGHIJKLMNOPQRSTUVWXYZ0123456789_") != len - 2)
+            continue;
+        if (list->count < MAX_TESTS) snprintf(list->names[list->count++], NAME_MAX_LEN, "%s", line + 2);
+    }
+    if (f) fclose(f);
+    return list->count > 0;
+}
+
+/* The judge's own message for a test it ended through the record stream ("seam: ..." in its log). */
+static void seam_message(const char *log, char *out, size_t size)
+{
+    snprintf(out, size, "the code under test stopped answering");
+    FILE *f = fopen(log, "r");
+    char line[1024];
+    while (f && fgets(line, sizeof line, f))
+        if (!strncmp(line, "seam: ", 6)) snprintf(out, size, "%.*s", (int)strcspn(line + 6, "\n"), line + 6);
+    if (f) fclose(f);
+}
+
+/* The subject, in a helper process (grade_run waits for its child, and the judge must read at the
+ * same time): the submission's code, contained, its records on fd 3, its output in its log only. */
+static pid_t start_subject(const char *tree, int n, const char *name, const char *dir, int k, int record_fd)
+{
+    pid_t helper = fork();
+    if (helper != 0) return helper;
+    char bin[4200], log[4200], filter[200];
+    snprintf(bin, sizeof bin, "%s/bin/subject-part%d", tree, n);
+    snprintf(log, sizeof log, "%s/subject-%d.log", dir, k);
+    snprintf(filter, sizeof filter, "PL_TEST_FILTER=%s", name);
+    char *envv[] = {filter, "PL_SEAM_FD=3", NULL}, *argv[] = {bin, NULL};
+    grade_run_opts o = {TEST_SECONDS, tree, log, LOG_MAX, envv, true};
+    grade_run_piped(argv, &o, 0, record_fd);
+    _exit(0);
+}
+
+/* One test, subject | judge; adds its verdict to r from the judge's results only. */
+static void run_test(const grade_env *env, const char *tree, const char *judge, int n, const char *name,
+                     const char *dir, int k, grade_part_result *r)
+{
+    char xml[4200], xml_env[4300], log[4200], filter[200], line[1024], why[700];
+    snprintf(xml, sizeof xml, "%s/judge-%d.xml", dir, k);
+    snprintf(xml_env, sizeof xml_env, "CMOCKA_XML_FILE=%s", xml);
+    snprintf(log, sizeof log, "%s/judge-%d.log", dir, k);
+    snprintf(filter, sizeof filter, "PL_TEST_FILTER=%s", name);
+    unlink(xml);  /* cmocka does not overwrite a results file */
+    int fds[2];
+    grade_run_result rr = {false, -1, false, 0.0};
+    if (pipe2(fds, O_CLOEXEC) == 0) {
+        pid_t helper = start_subject(tree, n, name, dir, k, fds[1]);
+        close(fds[1]);
+        char *envv[] = {filter, "PL_SEAM_FD=0", "CMOCKA_MESSAGE_OUTPUT=xml", xml_env, NULL}, *argv[] = {(char *)judge, NULL};
+        grade_run_opts o = {JUDGE_SECONDS, env->root, log, LOG_MAX, envv, false};
+        if (helper > 0) rr = grade_run_piped(argv, &o, fds[0], 0);
+        close(fds[0]);
+        if (helper > 0) waitpid(helper, NULL, 0);
+    }
+    /* Passed or failed by cmocka: its results file holds exactly this test. */
+    int run = r->tests_run, failed = r->tests_failed;
+    if (rr.exited && (rr.status == 0 || rr.status == 1) && grade_suite_xml(xml, r) && r->tests_run == run + 1 &&
+        r->tests_failed - failed == rr.status)
+        return;
+    r->tests_run = run + 1;
+    r->tests_failed = failed + 1;
+    if (rr.exited && rr.status == JUDGE_SEAM_STATUS) seam_message(log, why, sizeof why);
+    else {
+        char how[128];
+        grade_run_describe(&rr, how, sizeof how);
+        snprintf(why, sizeof why, "the course's judge of this test did not finish (%s): please tell the course staff", how);
+    }
+    snprintf(line, sizeof line, "- `%s`: %s\n", name, why);
+    size_t len = strlen(r->failures);
+    if (len + 1 < sizeof r->failures) snprintf(r->failures + len, sizeof r->failures - len, "%s", line);
+}
+
+void grade_judge_suite(const grade_env *env, const char *tree, const grade_part_spec *p, grade_part_result *r)
+{
+    char dir[4096], judge[4200];
+    r->tests_run = r->tests_failed = 0;
+    r->failures[0] = '\0';
+    snprintf(dir, sizeof dir, "%s/part%d/split", env->work, p->part);
+    /* The subjects' logs go here, written by the grader: the folder is the grader's own. */
+    if (mkdir(dir, 0755) != 0 && errno != EEXIST) {
+        snprintf(r->suite_reason, sizeof r->suite_reason, "cannot create %s", dir);
+        return;
+    }
+    static test_list list;
+    if (!build_judge(env, p->part, dir, judge, sizeof judge) || !list_tests(judge, env->root, dir, &list)) {
+        snprintf(r->suite_reason, sizeof r->suite_reason, "the course's judge of part %d does not build or run "
+                 "(see %s/judge-build.log): the course's problem, please tell the staff", p->part, dir);
+        return;
+    }
+    if (list.count != p->unit_tests) {
+        snprintf(r->suite_reason, sizeof r->suite_reason, "the course's suite has %d tests, grading/cases.json says "
+                 "%d: the course's problem, please tell the staff", list.count, p->unit_tests);
+        return;
+    }
+    double t0 = now();
+    for (int k = 0; k < list.count; k++) {
+        if (now() - t0 > SPLIT_SECONDS) {
+            snprintf(r->suite_reason, sizeof r->suite_reason, "the suite ran past %d s (%d of %d tests run)", SPLIT_SECONDS,
+                     k, list.count);
+            break;
+        }
+        run_test(env, tree, judge, p->part, list.names[k], dir, k, r);
+    }
+    if (r->suite_reason[0]) {
+        r->tests_run = r->tests_failed = 0;
+        r->failures[0] = '\0';
+        r->unit_score = 0;
+    } else
+        r->unit_score = p->unit_points * (double)(r->tests_run - r->tests_failed) / r->tests_run;
+}
