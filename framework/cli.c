@@ -60,7 +60,8 @@ void cli_print_usage(FILE *f, const char *prog)
             "  --max-instances N   refuse scenes whose nodes expand to more instances (1000000; guards time)\n"
             "  --heatmap FILE    write a PNG of BVH nodes visited per pixel\n"
             "  --samples A:B     render only samples A..B-1 of -s N (fixed rate; -f x.exr keeps what --merge needs)\n"
-            "  --merge -f OUT.(exr|png|hdr) IN.exr...  merge --samples ranges that tile 0..N into OUT\n",
+            "  --merge -f OUT.(exr|png|hdr) IN.exr...  merge --samples ranges that tile 0..N into OUT\n"
+            "                    (its options in any order: --merge IN.exr... -f OUT also works)\n",
             prog);
 }
 
