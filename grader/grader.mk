@@ -4,8 +4,10 @@
 GRADER_SRC := $(filter-out grader/grade_main.c,$(wildcard grader/*.c))
 GRADER_OBJ := $(patsubst %.c,$(BUILD)/%.o,$(GRADER_SRC))
 # bin/grade links the framework's file, image and statistics code, never a part: it must not run
-# student code in its own process.
-GRADER_FRAMEWORK_OBJ := $(addprefix $(BUILD)/framework/,image.o file.o exr.o film.o status.o stats.o) \
+# student code in its own process. The command line, the render key and the scene loader they
+# hash through come along for checking the references (grade_refs.c); none of them runs a part.
+GRADER_FRAMEWORK_OBJ := $(addprefix $(BUILD)/framework/,image.o file.o exr.o film.o status.o stats.o utf8.o cli.o \
+                          range.o output.o dae.o dae_xml.o dae_geometry.o dae_light.o dae_material.o scene.o mat4.o) \
                         $(BUILD)/third_party/lodepng/lodepng.o
 $(BIN)/grade: $(BUILD)/grader/grade_main.o $(GRADER_OBJ) $(GRADER_FRAMEWORK_OBJ)
 	$(say) LD $@
