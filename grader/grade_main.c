@@ -182,7 +182,10 @@ int main(int argc, char **argv)
         code = 1;
     }
     printf("results: %s\nreport:  %s/index.html\n", json, report);
-    for (int i = 0; i < result.num_parts; i++) code |= result.parts[i].score < result.parts[i].max_score;
+    for (int i = 0; i < result.num_parts; i++) {
+        code |= result.parts[i].score < result.parts[i].max_score;
+        for (int k = 0; k < result.parts[i].num_cases; k++) verdict_free(&result.parts[i].cases[k].v);  /* its t map */
+    }
     grade_spec_free(&spec);
     return code;
 }
