@@ -326,7 +326,6 @@ static pl_status open_checked(const char *path, exr_context_t *x, exr_info *info
 {
     exr_context_initializer_t init = EXR_DEFAULT_CONTEXT_INITIALIZER;
     init.error_handler_fn = quiet_errors;
-    init.max_image_width = init.max_image_height = EXR_MAX_SIDE;  /* OpenEXR's own check, while parsing */
     *x = NULL;
     exr_result_t r = exr_start_read(x, path, &init);
     if (r != EXR_ERR_SUCCESS)
