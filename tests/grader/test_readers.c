@@ -270,6 +270,30 @@ static void test_report__every_entry_present_for_hostile_messages(void **state)
     assert_int_equal(PL_OK, grade_write_html(&res, scratch, &d));
 }
 
+/* ---- the grader's own memory ---------------------------------------------------------------- */
+
+/* A clean grading run exits 0; in the sanitizer build (make test SAN=1: bin/san/grade) with leak
+ * detection on, so a leak fails it (each graded case once leaked its verdict's 180-byte t map). */
+static void test_grade__a_clean_run_exits_0_with_leak_detection(void **state)
+{
+    (void)state;
+#ifdef __SANITIZE_ADDRESS__
+    const char *grade = "ASAN_OPTIONS=detect_leaks=1 bin/san/grade";
+#else
+    const char *grade = "bin/grade";
+#endif
+    char cmd[512];
+    /* Without this suite's FILTER, which the graded suite would inherit and stop early on. */
+    snprintf(cmd, sizeof cmd, "env -u PL_TEST_FILTER -u PL_TEST_LIST -u PL_TEST_MATCHED %s --parts 1 --seed 1 --out "
+             "%s/grade >%s/grade.log 2>&1", grade, scratch, scratch);
+    int status = system(cmd);
+    if (status != 0) {
+        snprintf(cmd, sizeof cmd, "tail -20 %s/grade.log", scratch);
+        assert_int_equal(0, system(cmd));
+        fail_msg("%s exited with %d (its output above)", grade, status);
+    }
+}
+
 int readers_tests(void)
 {
     const struct CMUnitTest tests[] = {
@@ -280,6 +304,7 @@ int readers_tests(void)
         cmocka_unit_test(test_suite__only_the_files_the_suite_writes),
         cmocka_unit_test(test_suite__a_long_message_is_cut_between_characters),
         cmocka_unit_test(test_report__every_entry_present_for_hostile_messages),
+        cmocka_unit_test(test_grade__a_clean_run_exits_0_with_leak_detection),
     };
     return cmocka_run_group_tests_name("grader readers: references, suite results, results.json", tests, make_scratch,
                                        remove_scratch);
