@@ -144,6 +144,37 @@ static void test_refs__the_film_must_be_the_cases(void **state)
     assert_string_equal(check(root), "");
 }
 
+/* ---- the cases ----------------------------------------------------------------------------- */
+
+/* grading/cases.json with one edit (a sed expression): the error of loading it, or "". */
+static const char *load_edited(const char *sed)
+{
+    static pl_diag d;
+    char path[128], cmd[512];
+    snprintf(path, sizeof path, "%s/cases.json", scratch);
+    snprintf(cmd, sizeof cmd, "sed '%s' grading/cases.json > %s", sed, path);
+    assert_int_equal(0, system(cmd));
+    grade_spec spec;
+    d = pl_diag_default();
+    if (grade_spec_load(path, NULL, &spec, &d) != PL_OK) return d.error;
+    grade_spec_free(&spec);
+    return "";
+}
+
+/* A misspelt or mistyped member would skip the check it asks for in silence: each is refused. */
+static void test_cases__every_member_known_and_typed(void **state)
+{
+    (void)state;
+    assert_string_equal(load_edited("s/x/x/"), "");
+    assert_non_null(strstr(load_edited("s/\"work_per_ray\": true/\"work_per_rays\": true/"),
+                           "case bunny_normals: unknown member \"work_per_rays\""));
+    assert_non_null(strstr(load_edited("s/\"work_per_ray\": true/\"work_per_ray\": \"yes\"/"),
+                           "case bunny_normals: \"work_per_ray\" has the wrong type"));
+    assert_non_null(strstr(load_edited("s/\"unit_tests\": 23/\"unit_tests\": 23, \"unit_test\": 1/"), "unknown member"));
+    assert_non_null(strstr(load_edited("0,/\"points\": 4,/s///"), "case spheres_normals: expected \"points\""));
+    assert_non_null(strstr(load_edited("0,/160,/s//4096,/; 0,/120$/s//4096/"), "at most 2097152 pixels"));
+}
+
 /* ---- the suite's results ------------------------------------------------------------------- */
 
 static void suite_file(const char *dir, const char *name, const char *body)
@@ -300,6 +331,7 @@ int readers_tests(void)
         cmocka_unit_test(test_refs__the_course_references_pass),
         cmocka_unit_test(test_refs__the_json_a_check_needs_is_required),
         cmocka_unit_test(test_refs__the_film_must_be_the_cases),
+        cmocka_unit_test(test_cases__every_member_known_and_typed),
         cmocka_unit_test(test_suite__every_testcase_counted_and_skipped_is_not_passed),
         cmocka_unit_test(test_suite__only_the_files_the_suite_writes),
         cmocka_unit_test(test_suite__a_long_message_is_cut_between_characters),
