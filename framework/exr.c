@@ -348,7 +348,7 @@ pl_status exr_read_info(const char *path, exr_info *info, int *width, int *heigh
 
 /* Decodes the chunk starting at row y0 into the film's accumulators, after checking that the chunk
  * is the one expected there and decodes to exactly its rows (the decoded-bytes budget: no chunk
- * may decode to more than its rows of the 43 channels, nor hold more packed than unpacked). */
+ * may decode to more than its rows of the 41 channels, nor hold more packed than unpacked). */
 static pl_status read_chunk(exr_context_t x, const char *path, film *f, const channel *table, int y0, int lines,
                             uint32_t *buf, pl_diag *diag)
 {
