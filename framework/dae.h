@@ -24,7 +24,9 @@ typedef struct {
     long max_instances;   /* nodes visited, counting every <instance_node> expansion (1,000,000) */
 } dae_limits;
 
-dae_limits dae_limits_default(void);
+#define DAE_DEFAULT_MAX_PRIMITIVES 2000000L
+#define DAE_DEFAULT_MAX_INSTANCES 1000000L
+dae_limits dae_limits_default(void);  /* the two defaults above */
 
 /* Every vertex, sphere centre and radius must lie within +-DAE_MAX_COORD after its node
  * transforms: then every sum and product the BVH build forms of them (extents, centroids, surface

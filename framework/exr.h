@@ -19,6 +19,12 @@
 #include "status.h"
 
 #define EXR_TEXT_MAX 2048
+/* The films a reader accepts (checked from the header, before any pixel is allocated): -r's limit a
+ * side, and 2^21 pixels in all (1920x1080 fits; a film takes 144 bytes a pixel, so 302 MB, and a
+ * merge holds two); -s's limit of samples. */
+#define EXR_MAX_SIDE (1 << 15)
+#define EXR_MAX_PIXELS (1L << 21)
+#define EXR_MAX_SAMPLES (1 << 24)
 
 typedef struct {
     char command[EXR_TEXT_MAX];  /* normalised command line */
@@ -37,8 +43,17 @@ typedef struct {
  * The output module's encoder type: pl_status (*)(FILE *f, const void *user, pl_diag *diag). */
 pl_status exr_encode(FILE *f, const void *user, pl_diag *diag);
 
-/* Reads a file exr_encode wrote: the film (allocated here; film_free it) from the accumulator
- * channels, and the header attributes. Errors name the file and what was wrong. */
+/* Reads a file exr_encode wrote, and only such a file: one scanline part, ZIP, exactly the channels
+ * above with their types and no subsampling, a size within the caps, every pathlab.* attribute in
+ * the form the writer gives it, every chunk decoding to exactly its rows, and every pixel one a
+ * render of its sample range could give (film_check: B - A samples a pixel, or 1..N for an adaptive
+ * render). The film is allocated here (film_free it). Errors name the file and the field. */
 pl_status exr_read(const char *path, film *out, exr_info *info, pl_diag *diag);
+
+/* The same checks of the header alone (nothing allocated for pixels): the provenance and size. */
+pl_status exr_read_info(const char *path, exr_info *info, int *width, int *height, pl_diag *diag);
+
+/* Whether the render was adaptive (-a in its command): its pixels hold from 1 to N samples. */
+bool exr_info_adaptive(const exr_info *info);
 
 #endif

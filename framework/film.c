@@ -1,6 +1,7 @@
 /* The film: fixed-point per-pixel accumulators (see film.h for why fixed point). */
 #include "film.h"
 #include <math.h>
+#include <stdio.h>
 #include <stdlib.h>
 
 pl_status film_alloc(film *f, int width, int height)
@@ -52,14 +53,54 @@ bool film_pixel_add(film_pixel *p, rgb L)
     return true;
 }
 
-void film_pixel_merge(film_pixel *into, const film_pixel *from)
+bool film_pixel_merge(film_pixel *into, const film_pixel *from)
 {
+    if (from->n > UINT32_MAX - into->n || from->bad > UINT32_MAX - into->bad) return false;
     for (int c = 0; c < 4; c++) {
         into->sum[c] += from->sum[c];
         into->sum_sq[c] += from->sum_sq[c];
     }
     into->n += from->n;
     into->bad += from->bad;
+    return true;
+}
+
+/* What is wrong with channel c of a pixel with `good` good samples, or NULL. */
+static const char *channel_impossible(const film_pixel *p, int c, uint32_t good)
+{
+    /* A good value q is below 2^63 units (FILM_MAX_VALUE = 2^31), its rounded square below 2^94. */
+    if (good == 0) return p->sum[c] || p->sum_sq[c] ? "sums without a good sample" : NULL;
+    if (p->sum[c] >> 63 >= good) return "a sum above good samples times the largest value";
+    if (p->sum_sq[c] >> 94 >= good) return "a sum of squares above good samples times the largest square";
+    /* Cauchy-Schwarz: (sum q)^2 <= good * sum q^2, and sum q^2 <= 2^32 (sum_sq + good / 2) (each
+     * square was rounded to nearest 2^32 units); in double with a margin far above its rounding. */
+    double s = (double)p->sum[c], sq = (double)p->sum_sq[c] + 0.5 * good;
+    return s * s <= (double)good * 4294967296.0 * sq * (1.0 + 1e-9) ? NULL : "a sum too large for its sum of squares";
+}
+
+pl_status film_check(const film *f, uint32_t n_min, uint32_t n_max, const char *what, pl_diag *diag)
+{
+    static const char *const names[4] = {"R", "G", "B", "Y"};
+    long count = (long)f->width * f->height;
+    for (long i = 0; i < count; i++) {
+        const film_pixel *p = &f->pixels[i];
+        int x = (int)(i % f->width), y = (int)(i / f->width);
+        if (p->n < n_min || p->n > n_max) {
+            char want[64];
+            if (n_min == n_max) snprintf(want, sizeof want, "%u, the size of its sample range", n_min);
+            else snprintf(want, sizeof want, "%u to %u", n_min, n_max);
+            return pl_fail(diag, PL_ERR_PARSE, "%s: pixel (%d, %d): n = %u samples, expected %s", what, x, y, p->n, want);
+        }
+        if (p->bad > p->n)
+            return pl_fail(diag, PL_ERR_PARSE, "%s: pixel (%d, %d): bad = %u, more than its n = %u samples", what, x, y,
+                           p->bad, p->n);
+        for (int c = 0; c < 4; c++) {
+            const char *why = channel_impossible(p, c, p->n - p->bad);
+            if (why) return pl_fail(diag, PL_ERR_PARSE, "%s: pixel (%d, %d): acc.sum.%s / acc.sq.%s: %s (n = %u, bad = %u)",
+                                    what, x, y, names[c], names[c], why, p->n, p->bad);
+        }
+    }
+    return PL_OK;
 }
 
 double film_sum_value(film_sum s) { return ldexp((double)s, -FILM_FRAC_BITS); }

@@ -53,8 +53,15 @@ bool film_quantise(float v, uint64_t *q);
 /* Adds one sample's radiance; false (and p->bad counted) when any channel is bad. */
 bool film_pixel_add(film_pixel *p, rgb L);
 
-/* into += from: the pixel of both sample sets (exact, in any order). */
-void film_pixel_merge(film_pixel *into, const film_pixel *from);
+/* into += from: the pixel of both sample sets (exact, in any order); false, and into unchanged,
+ * when the counts would overflow (no render of at most 2^24 samples comes near). */
+bool film_pixel_merge(film_pixel *into, const film_pixel *from);
+
+/* Checks that every pixel of f (read from `what`) is one a render could give: n_min <= n <= n_max,
+ * bad <= n, and in each channel the sums of the n - bad good samples possible: zero without one,
+ * each value below FILM_MAX_VALUE, and sum^2 <= good * sum_sq (Cauchy-Schwarz) allowing each
+ * square's rounding. The error names the first pixel (from the top-left) and the field. */
+pl_status film_check(const film *f, uint32_t n_min, uint32_t n_max, const char *what, pl_diag *diag);
 
 /* A sum back in radiance units, as a double. */
 double film_sum_value(film_sum s);

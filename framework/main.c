@@ -159,7 +159,8 @@ done:
 int main(int argc, char **argv)
 {
     const char *prog = "pathtracer";
-    if (argc > 1 && !strcmp(argv[1], "--merge")) return range_merge_main(argc, argv, prog);
+    for (int i = 1; i < argc; i++)  /* a mode of its own, wherever its flag is */
+        if (!strcmp(argv[i], "--merge")) return range_merge_main(argc, argv, prog);
     options o;
     cli_action action;
     pl_diag diag = pl_diag_default();

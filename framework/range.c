@@ -49,14 +49,19 @@ static void image_flags(const options *o, char *out, size_t size)
 
 pl_status range_info(const options *o, exr_info *info, pl_diag *diag)
 {
+    return range_info_as(o, PL_VERSION, info, diag);
+}
+
+pl_status range_info_as(const options *o, const char *version, exr_info *info, pl_diag *diag)
+{
     memset(info, 0, sizeof *info);
     char flags[512];
     image_flags(o, flags, sizeof flags);
     snprintf(info->command, sizeof info->command, "pathtracer %s%s%s %s", flags, o->camera_file ? " -c " : "",
              o->camera_file ? o->camera_file : "", o->scene_path);
-    snprintf(info->version, sizeof info->version, "%s", PL_VERSION);
+    snprintf(info->version, sizeof info->version, "%s", version);
     uint64_t h = 0xcbf29ce484222325ull;
-    h = fnv1a(h, PL_VERSION, sizeof PL_VERSION);
+    h = fnv1a(h, version, strlen(version) + 1);
     h = fnv1a(h, flags, strlen(flags) + 1);
     pl_status s = hash_file(&h, o->scene_path, "scene", diag);
     if (s == PL_OK && o->camera_file) s = hash_file(&h, o->camera_file, "camera settings", diag);
@@ -73,8 +78,8 @@ pl_status range_info(const options *o, exr_info *info, pl_diag *diag)
 
 typedef struct {
     const char *path;
-    film film;
     exr_info info;
+    int width, height;
 } range_input;
 
 static int by_begin(const void *a, const void *b)
@@ -83,20 +88,42 @@ static int by_begin(const void *a, const void *b)
     return (x->info.sample_begin > y->info.sample_begin) - (x->info.sample_begin < y->info.sample_begin);
 }
 
+/* The first provenance field in which b differs from a, as "field: A vs B" in out; false when none.
+ * The render key comes last: it hashes the others, so a field named first says more; a key that
+ * alone differs means the scene or camera file's contents did. */
+static bool first_difference(const range_input *a, const range_input *b, char *out, size_t size)
+{
+    static const char *const names[6] = {"command", "seed", "version", "size", "sample total",
+                                         "render key (the scene or camera file's contents)"};
+    char fa[6][EXR_TEXT_MAX], fb[6][EXR_TEXT_MAX];
+    const range_input *in[2] = {a, b};
+    for (int k = 0; k < 2; k++) {
+        char (*f)[EXR_TEXT_MAX] = k ? fb : fa;
+        const exr_info *i = &in[k]->info;
+        snprintf(f[0], EXR_TEXT_MAX, "%s", i->command);
+        snprintf(f[1], EXR_TEXT_MAX, "%" PRIu64, i->seed);
+        snprintf(f[2], EXR_TEXT_MAX, "%s", i->version);
+        snprintf(f[3], EXR_TEXT_MAX, "%dx%d", in[k]->width, in[k]->height);
+        snprintf(f[4], EXR_TEXT_MAX, "%d", i->sample_total);
+        snprintf(f[5], EXR_TEXT_MAX, "%s", i->render_key);
+    }
+    for (int f = 0; f < 6; f++)
+        if (strcmp(fa[f], fb[f])) {
+            snprintf(out, size, "%s: '%.300s' vs '%.300s'", names[f], fa[f], fb[f]);
+            return true;
+        }
+    return false;
+}
+
 /* Checks that the inputs (sorted by first sample) are pieces of one render tiling 0..N. */
 static pl_status check_ranges(const range_input *in, int count, pl_diag *diag)
 {
-    const exr_info *a = &in[0].info;
-    for (int i = 1; i < count; i++) {
-        const exr_info *b = &in[i].info;
-        if (strcmp(a->render_key, b->render_key) || a->sample_total != b->sample_total ||
-            in[0].film.width != in[i].film.width || in[0].film.height != in[i].film.height)
-            return pl_fail(diag, PL_ERR_INVALID, "%s and %s are not pieces of the same render: render key %s vs %s "
-                           "(scene, flags, resolution, seed or code version differ)\n  %s: %s, version %s, %d samples\n  %s: %s, version %s, %d samples",
-                           in[0].path, in[i].path, a->render_key, b->render_key, in[0].path, a->command, a->version,
-                           a->sample_total, in[i].path, b->command, b->version, b->sample_total);
-    }
-    int next = 0;
+    char diff[800];
+    for (int i = 1; i < count; i++)
+        if (first_difference(&in[0], &in[i], diff, sizeof diff))
+            return pl_fail(diag, PL_ERR_INVALID, "%s and %s are not pieces of the same render: their %s", in[0].path,
+                           in[i].path, diff);
+    int next = 0, total = in[0].info.sample_total;
     for (int i = 0; i < count; i++) {
         const exr_info *b = &in[i].info;
         if (b->sample_begin < next)
@@ -105,27 +132,50 @@ static pl_status check_ranges(const range_input *in, int count, pl_diag *diag)
                            in[i - 1].info.sample_begin, in[i - 1].info.sample_end);
         if (b->sample_begin > next)
             return pl_fail(diag, PL_ERR_INVALID, "samples %d:%d are missing (before %s, which starts at %d): the ranges "
-                           "must tile 0:%d", next, b->sample_begin, in[i].path, b->sample_begin, b->sample_total);
+                           "must tile 0:%d", next, b->sample_begin, in[i].path, b->sample_begin, total);
         next = b->sample_end;
     }
-    if (next != a->sample_total)
+    if (next != total)
         return pl_fail(diag, PL_ERR_INVALID, "samples %d:%d are missing (after %s): the ranges must tile 0:%d", next,
-                       a->sample_total, in[count - 1].path, a->sample_total);
+                       total, in[count - 1].path, total);
     return PL_OK;
 }
 
-/* Sums the checked inputs into in[0].film and writes it through the planned output set (an
- * exclusive temporary renamed into place, as a render's files): EXR with the merged provenance,
- * or the image of the means through the encoder a single render uses. */
-static pl_status write_merged(output_set *out, range_input *in, int count, pl_diag *diag)
+/* Adds the films of the checked inputs into total, one file at a time (so a merge holds two films,
+ * whatever the number of pieces); each file is read whole and checked again, pixel by pixel. */
+static pl_status merge_films(const range_input *in, int count, film *total, pl_diag *diag)
 {
-    film *total = &in[0].film;
+    if (film_alloc(total, in[0].width, in[0].height) != PL_OK)
+        return pl_fail(diag, PL_ERR_NOMEM, "out of memory for a %dx%d film", in[0].width, in[0].height);
     long pixels = (long)total->width * total->height;
-    for (int i = 1; i < count; i++)
-        for (long p = 0; p < pixels; p++) film_pixel_merge(&total->pixels[p], &in[i].film.pixels[p]);
+    for (int i = 0; i < count; i++) {
+        range_input again;
+        memset(&again, 0, sizeof again);
+        again.path = in[i].path;
+        film piece;
+        char diff[800];
+        pl_status s = exr_read(in[i].path, &piece, &again.info, diag);
+        again.width = piece.width, again.height = piece.height;
+        if (s == PL_OK && (first_difference(&in[i], &again, diff, sizeof diff) ||
+                           again.info.sample_begin != in[i].info.sample_begin || again.info.sample_end != in[i].info.sample_end))
+            s = pl_fail(diag, PL_ERR_INVALID, "%s changed while it was merged", in[i].path);
+        for (long p = 0; s == PL_OK && p < pixels; p++)
+            if (!film_pixel_merge(&total->pixels[p], &piece.pixels[p]))
+                s = pl_fail(diag, PL_ERR_INVALID, "%s: pixel %ld: the merged sample count overflows", in[i].path, p);
+        film_free(&piece);
+        if (s != PL_OK) return s;
+    }
+    return PL_OK;
+}
+
+/* Writes the merged film through the planned output set (an exclusive temporary renamed into place,
+ * as a render's files): EXR with the merged provenance, or the image of the means through the
+ * encoder a single render uses. */
+static pl_status write_merged(output_set *out, const film *total, const exr_info *first, pl_diag *diag)
+{
     const char *path = out->path[OUTPUT_IMAGE];
     if (file_has_extension(path, ".exr")) {
-        exr_info info = in[0].info;
+        exr_info info = *first;
         info.sample_begin = 0;
         info.sample_end = info.sample_total;
         exr_image img = {total, &info};
@@ -141,42 +191,74 @@ static pl_status write_merged(output_set *out, range_input *in, int count, pl_di
     return s;
 }
 
+/* --merge's options, in any order around the inputs: -f OUT (once), -q (accepted: a merge prints
+ * only errors), -h; any other option is refused by name. Fills inputs (pointers into argv). */
+static pl_status merge_args(int argc, char **argv, const char **out, const char **inputs, int *count, bool *help,
+                            pl_diag *diag)
+{
+    *out = NULL, *count = 0, *help = false;
+    for (int i = 1; i < argc; i++) {
+        const char *a = argv[i];
+        if (!strcmp(a, "--merge") || !strcmp(a, "-q")) continue;
+        if (!strcmp(a, "-h") || !strcmp(a, "--help")) *help = true;
+        else if (!strcmp(a, "-f")) {
+            if (*out || i + 1 >= argc) return pl_fail(diag, PL_ERR_INVALID, "-f: expected one output file name");
+            *out = argv[++i];
+        }
+        else if (a[0] == '-' && a[1]) return pl_fail(diag, PL_ERR_INVALID, "%s: not an option of --merge", a);
+        else inputs[(*count)++] = a;
+    }
+    if (*help) return PL_OK;
+    if (!*out || !(file_has_extension(*out, ".exr") || file_has_extension(*out, ".png") || file_has_extension(*out, ".hdr")))
+        return pl_fail(diag, PL_ERR_INVALID, "expected -f OUT.exr, OUT.png or OUT.hdr");
+    return *count >= 1 ? PL_OK : pl_fail(diag, PL_ERR_INVALID, "expected at least one range file (IN.exr)");
+}
+
+/* Reads and checks the headers of every input (no pixel yet): provenance, size, tiling. */
+static pl_status read_headers(range_input *in, const char **paths, int count, pl_diag *diag)
+{
+    pl_status s = PL_OK;
+    for (int i = 0; i < count && s == PL_OK; i++) {
+        in[i].path = paths[i];
+        s = exr_read_info(paths[i], &in[i].info, &in[i].width, &in[i].height, diag);
+    }
+    if (s != PL_OK) return s;
+    qsort(in, (size_t)count, sizeof *in, by_begin);
+    return check_ranges(in, count, diag);
+}
+
 int range_merge_main(int argc, char **argv, const char *prog)
 {
     pl_diag diag = pl_diag_default();
-    const char *out = NULL;
-    int first_input = 2;
-    if (argc >= 4 && !strcmp(argv[2], "-f")) out = argv[3], first_input = 4;
-    int count = argc - first_input;
-    if (!out || count < 1 || !(file_has_extension(out, ".exr") || file_has_extension(out, ".png") || file_has_extension(out, ".hdr"))) {
-        fprintf(stderr, "%s: --merge: expected --merge -f OUT.exr|OUT.png|OUT.hdr IN1.exr [IN2.exr ...]\n", prog);
-        return 2;
+    const char *out = NULL, **inputs = calloc((size_t)argc, sizeof *inputs);
+    range_input *in = calloc((size_t)argc, sizeof *in);
+    int count = 0, code = 2;
+    bool help = false;
+    output_set plan = {0};
+    film total = {0};
+    if (!inputs || !in) {
+        fprintf(stderr, "%s: out of memory\n", prog);
+        code = 1;
+    }
+    else if (merge_args(argc, argv, &out, inputs, &count, &help, &diag) != PL_OK)
+        fprintf(stderr, "%s: --merge: %s\nusage: %s --merge -f OUT.exr|OUT.png|OUT.hdr IN1.exr [IN2.exr ...]\n", prog,
+                diag.error, prog);
+    else if (help) {
+        printf("usage: %s --merge -f OUT.exr|OUT.png|OUT.hdr IN1.exr [IN2.exr ...] (options in any order)\n", prog);
+        code = 0;
     }
     /* The output is checked as a render's are, before a byte of any input is read. */
-    output_set plan;
-    if (output_plan_merge(&plan, out, (const char *const *)argv + first_input, count, &diag) != PL_OK) {
+    else if (output_plan_merge(&plan, out, inputs, count, &diag) != PL_OK || read_headers(in, inputs, count, &diag) != PL_OK ||
+             merge_films(in, count, &total, &diag) != PL_OK)
         fprintf(stderr, "%s: --merge: %s\n", prog, diag.error);
-        output_free(&plan);
-        return 2;
+    else if (write_merged(&plan, &total, &in[0].info, &diag) != PL_OK) {
+        fprintf(stderr, "%s: --merge: %s\n", prog, diag.error);
+        code = 1;
     }
-    range_input *in = calloc((size_t)count, sizeof *in);
-    if (!in) { fprintf(stderr, "%s: out of memory\n", prog); output_free(&plan); return 1; }
-    pl_status s = PL_OK;
-    int read = 0;
-    for (; read < count && s == PL_OK; read++) {
-        in[read].path = argv[first_input + read];
-        s = exr_read(in[read].path, &in[read].film, &in[read].info, &diag);
-        if (s != PL_OK) read--;
-    }
-    if (s == PL_OK) {
-        qsort(in, (size_t)count, sizeof *in, by_begin);
-        s = check_ranges(in, count, &diag);
-    }
-    int code = s == PL_OK ? 0 : 2;
-    if (s == PL_OK && write_merged(&plan, in, count, &diag) != PL_OK) code = 1;
-    if (code) fprintf(stderr, "%s: --merge: %s\n", prog, diag.error);
-    for (int i = 0; i < read; i++) film_free(&in[i].film);
-    free(in);
+    else code = 0;
+    film_free(&total);
     output_free(&plan);
+    free(in);
+    free(inputs);
     return code;
 }

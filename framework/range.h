@@ -17,8 +17,15 @@
  * and the sample range. Reads the scene (and camera) file to hash them. */
 pl_status range_info(const options *o, exr_info *info, pl_diag *diag);
 
-/* `pathtracer --merge -f OUT IN1.exr IN2.exr ...`: argv[1] is "--merge". Returns the exit status
- * (0 merged, 2 refused: bad arguments, unreadable, mismatched, overlapping or missing ranges). */
+/* The same with another code version in the key and the record: the grader recomputes a
+ * reference's key from the version the reference records (grader/grade_refs.c says why). */
+pl_status range_info_as(const options *o, const char *version, exr_info *info, pl_diag *diag);
+
+/* `pathtracer --merge -f OUT IN1.exr IN2.exr ...`, its options in any order (argv holds "--merge"
+ * somewhere). Every input is checked as exr_read does (exr.h), the headers of all of them first; the
+ * pieces must agree on every provenance field (command, seed, version, size, sample total, render
+ * key; the first that differs is named) and tile 0..N. Returns the exit status (0 merged, 2
+ * refused: bad arguments, unreadable, malformed, mismatched, overlapping or missing ranges). */
 int range_merge_main(int argc, char **argv, const char *prog);
 
 #endif

@@ -170,9 +170,6 @@ bool grade_part_dirs(const grade_env *env, int part);
  * in r->suite_reason when the results are missing or malformed, or hold other than `expected` tests
  * (the suite stopped early, or the files are not its own), or disagree with the exit status. */
 void grade_suite_score(const char *dir, int expected, double points, int status, grade_part_result *r);
-/* Adds the tests of one cmocka XML file to r (tests_run, tests_failed, failures); false when the file
- * is not cmocka's XML. */
-bool grade_suite_xml(const char *path, grade_part_result *r);
 /* The split suite (grade_judge.c): each of part p's tests run as the subject (tree's
  * bin/subject-partN: the submission's code, contained) piped into the judge (the course's
  * bin/judge-partN under env->root, trusted, no student code), scored from the judge's results only. */

@@ -1,5 +1,6 @@
 /* Grader machinery: not part of any assignment. Reads grading/cases.json (jansson). */
 #include "grade.h"
+#include "../framework/exr.h"
 #include <jansson.h>
 #include <stdlib.h>
 #include <string.h>
@@ -19,6 +20,46 @@ static pl_status read_flags(const char *path, const char *name, json_t *array, c
     return PL_OK;
 }
 
+/* The members an object may have, with their types ('s' string, 'i' integer, 'n' number, 'b' true or
+ * false, 'a' array, 'o' object). */
+typedef struct { const char *name; char type; } member;
+
+static const member case_members[] = {
+    {"name", 's'}, {"scene", 's'}, {"flags", 'a'}, {"resolution", 'a'}, {"samples", 'i'}, {"reference_samples", 'i'},
+    {"reference_flags", 'a'}, {"points", 'n'}, {"visibility", 's'}, {"shows", 's'}, {"block_side", 'i'},
+    {"work_per_ray", 'b'}, {"statistic", 's'}, {NULL, 0}};
+static const member part_members[] = {{"part", 'i'}, {"unit_points", 'n'}, {"unit_tests", 'i'}, {"cases", 'a'}, {NULL, 0}};
+static const member root_members[] = {{"about", 's'}, {"family_alpha", 'n'}, {"parts", 'a'}, {NULL, 0}};
+
+static bool has_type(json_t *v, char type)
+{
+    switch (type) {
+    case 's': return json_is_string(v);
+    case 'i': return json_is_integer(v);
+    case 'n': return json_is_number(v);
+    case 'b': return json_is_boolean(v);
+    case 'a': return json_is_array(v);
+    default: return json_is_object(v);
+    }
+}
+
+/* Every member of obj is a known one of its type: a misspelt key ("work_per_rays") would otherwise be
+ * ignored and the check it asks for skipped in silence, and "work_per_ray": "yes" read as false. */
+static pl_status check_members(const char *path, const char *where, json_t *obj, const member *known, pl_diag *diag)
+{
+    if (!json_is_object(obj)) return pl_fail(diag, PL_ERR_PARSE, "%s: %s: expected an object", path, where);
+    const char *key;
+    json_t *v;
+    json_object_foreach(obj, key, v) {
+        const member *m = known;
+        while (m->name && strcmp(m->name, key)) m++;
+        if (!m->name) return pl_fail(diag, PL_ERR_PARSE, "%s: %s: unknown member \"%.40s\"", path, where, key);
+        if (!has_type(v, m->type))
+            return pl_fail(diag, PL_ERR_PARSE, "%s: %s: \"%s\" has the wrong type", path, where, key);
+    }
+    return PL_OK;
+}
+
 /* Every field is checked, with the case named: a typo in a case must not become a silent 0. */
 static pl_status read_case(const char *path, int part, json_t *j, grade_case *c, pl_diag *diag)
 {
@@ -28,6 +69,12 @@ static pl_status read_case(const char *path, int part, json_t *j, grade_case *c,
         return pl_fail(diag, PL_ERR_PARSE, "%s: part %d: a case needs a \"name\" of [a-z0-9_], under %zu characters",
                        path, part, sizeof c->name);
     snprintf(c->name, sizeof c->name, "%s", name);
+    char where[96];
+    snprintf(where, sizeof where, "case %s", c->name);
+    pl_status checked = check_members(path, where, j, case_members, diag);
+    if (checked != PL_OK) return checked;
+    if (!json_is_number(json_object_get(j, "points")))
+        return pl_fail(diag, PL_ERR_PARSE, "%s: case %s: expected \"points\"", path, c->name);
     const char *scene = json_string_value(json_object_get(j, "scene"));
     const char *vis = json_string_value(json_object_get(j, "visibility"));
     json_t *res = json_object_get(j, "resolution"), *flags = json_object_get(j, "flags");
@@ -56,11 +103,13 @@ static pl_status read_case(const char *path, int part, json_t *j, grade_case *c,
 
     const char *shows = json_string_value(json_object_get(j, "shows"));
     snprintf(c->shows, sizeof c->shows, "%s", shows ? shows : "");
-    if (c->width < 1 || c->height < 1 || c->width > 4096 || c->height > 4096 || c->samples < 1 || c->points < 0 ||
-        c->reference_samples < c->samples || c->block_side < 0)
+    /* The films of a case must be ones the film reader accepts (exr.h's caps). */
+    if (c->width < 1 || c->height < 1 || c->width > 4096 || c->height > 4096 ||
+        (long)c->width * c->height > EXR_MAX_PIXELS || c->samples < 1 || c->points < 0 ||
+        c->reference_samples < c->samples || c->reference_samples > EXR_MAX_SAMPLES || c->block_side < 0)
         return pl_fail(diag, PL_ERR_PARSE,
-                       "%s: case %s: expected a resolution in 1..4096, samples >= 1, points >= 0 and "
-                       "reference_samples >= samples", path, c->name);
+                       "%s: case %s: expected a resolution in 1..4096 of at most %ld pixels, samples >= 1, points >= 0 "
+                       "and samples <= reference_samples <= %d", path, c->name, EXR_MAX_PIXELS, EXR_MAX_SAMPLES);
     pl_status st = read_flags(path, c->name, flags, c->flags, &c->num_flags, diag);
     json_t *ref_flags = json_object_get(j, "reference_flags");
     if (!st && ref_flags) st = read_flags(path, c->name, ref_flags, c->reference_flags, &c->num_reference_flags, diag);
@@ -70,12 +119,17 @@ static pl_status read_case(const char *path, int part, json_t *j, grade_case *c,
 /* Adds the cases of one file's "parts" to out; base says whether parts must list all five. */
 static pl_status read_parts(const char *path, json_t *root, bool base, grade_spec *out, pl_diag *diag)
 {
+    pl_status checked = check_members(path, "the top level", root, root_members, diag);
+    if (checked != PL_OK) return checked;
     json_t *parts = json_object_get(root, "parts");
     if (!json_is_array(parts) || (base && json_array_size(parts) != GRADE_NUM_PARTS))
         return pl_fail(diag, PL_ERR_PARSE, "%s: expected \"parts\": %s", path,
                        base ? "one entry per part, 1 to 5" : "an array");
     for (size_t k = 0; k < json_array_size(parts); k++) {
         json_t *pj = json_array_get(parts, k), *cases = json_object_get(pj, "cases");
+        char where[32];
+        snprintf(where, sizeof where, "parts[%zu]", k);
+        if ((checked = check_members(path, where, pj, part_members, diag)) != PL_OK) return checked;
         int part = (int)json_integer_value(json_object_get(pj, "part"));
         if (part < 1 || part > GRADE_NUM_PARTS || (base && part != (int)k + 1) || !json_is_array(cases))
             return pl_fail(diag, PL_ERR_PARSE, "%s: parts[%zu]: expected \"part\" 1..5 (in order) and \"cases\"",

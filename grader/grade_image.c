@@ -1,6 +1,7 @@
 /* Grader machinery: not part of any assignment. One image case. */
 #include "grade_image.h"
 #include "grade_guard.h"
+#include "grade_refs.h"
 #include "../framework/file.h"
 #include "../framework/image.h"
 #include "../framework/exr.h"
@@ -49,18 +50,6 @@ static pl_status read_film(const char *path, image *out, image *var, long *bad, 
     return st;
 }
 
-/* The course's figures for the case's own render (recorded by make references): from the
- * reference's provenance JSON, beside its EXR. */
-static void read_course_figures(const char *ref_exr, double *spp, double *work)
-{
-    char path[4200];
-    snprintf(path, sizeof path, "%.*s.json", (int)strlen(ref_exr) - 4, ref_exr);
-    json_t *j = json_load_file(path, 0, NULL), *r = json_object_get(j, "case_render");
-    *spp = json_number_value(json_object_get(r, "mean_samples_per_pixel"));
-    *work = json_number_value(json_object_get(r, "work_per_ray"));
-    json_decref(j);
-}
-
 /* The candidate's work per camera ray (framework-counted node visits plus primitive tests), from
  * the JSON sidecar its render wrote: opened without following a link, read through that descriptor. */
 static double read_candidate_work(const char *exr)
@@ -69,7 +58,7 @@ static double read_candidate_work(const char *exr)
     snprintf(path, sizeof path, "%.*s.json", (int)strlen(exr) - 4, exr);
     int fd = grade_guard_open_child_file(path, 1L << 20);
     if (fd < 0) return -1.0;
-    json_t *j = json_loadfd(fd, 0, NULL);
+    json_t *j = json_loadfd(fd, JSON_REJECT_DUPLICATES, NULL);  /* a second "node_visits": 0 is refused */
     close(fd);
     double rays = json_number_value(json_object_get(j, "rays_traced"));
     double work = json_number_value(json_object_get(j, "node_visits")) + json_number_value(json_object_get(j, "primitive_tests"));
@@ -139,8 +128,7 @@ void grade_image_case(const grade_env *env, const grade_spec *spec, const char *
         snprintf(c->reason, sizeof c->reason, "the course's scene: %s", diag.error);
         return;
     }
-    snprintf(ref, sizeof ref, "%s/reference_images/%spart%d/%s.exr", env->root, k->hidden ? "hidden/" : "", part,
-             k->name);
+    grade_refs_path(env->root, k, part, ref, sizeof ref);
 
     /* The render, in a child: the student's code never runs in the grader's process. */
     char *argv[GRADE_MAX_FLAGS + 16];
@@ -163,7 +151,8 @@ void grade_image_case(const grade_env *env, const grade_spec *spec, const char *
     if (read_film(ref, &refimg, &refvar, &bad, &ref_n, &diag) != PL_OK || bad) {
         /* A broken reference is the course's fault, never the student's: say so, not "differs". */
         if (bad) snprintf(c->reason, sizeof c->reason, "the reference %s has %ld bad pixels (run make references)", ref, bad);
-        else snprintf(c->reason, sizeof c->reason, "no reference: %s (run make references)", diag.error);
+        else snprintf(c->reason, sizeof c->reason, "the course's reference: %s (run make references FORCE=1 CASES=%s)",
+                      diag.error, k->name);
         image_free(&refimg);
         image_free(&refvar);
         return;
@@ -202,9 +191,9 @@ void grade_image_case(const grade_env *env, const grade_spec *spec, const char *
          * (one that never stops renders the reference's image at full cost), and a part 2 BVH may
          * do at most GRADE_WORK_FACTOR times the course's work per ray (a correct but degenerate
          * tree, or none, loses its speed points). Both come from files, never from what code printed. */
-        double course_spp, course_work;
-        read_course_figures(ref, &course_spp, &course_work);
-        bool figures_ok = true;
+        double course_spp = 0, course_work = 0;
+        bool figures_ok = grade_refs_figures(ref, k, &course_spp, &course_work, &diag) == PL_OK;  /* checked before */
+        if (!figures_ok) snprintf(c->reason, sizeof c->reason, "the course's reference: %s", diag.error);
         if (adaptive_case(k) && course_spp > 0) {
             c->spp = cand_n;
             c->course_spp = course_spp;

@@ -6,10 +6,12 @@
  *   --out DIR         where results.json, the report (DIR/report/index.html) and scratch go (out/grade)
  *   --calibrate N     render every case of this tree N times with fresh seeds and print, per case, how
  *                     often it failed beside the alpha it claims, and the deciles of its p-values
- * Exit status: 0 when every graded part got full marks, 1 otherwise, 2 for bad arguments. */
+ * Exit status: 0 when every graded part got full marks, 1 otherwise, 2 for bad arguments or a course's
+ * file that is not usable (grading/cases.json, a reference: grade_refs.h), before anyone is graded. */
 #include "grade.h"
 #include "grade_guard.h"
 #include "grade_image.h"
+#include "grade_refs.h"
 #include <errno.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -131,6 +133,13 @@ int main(int argc, char **argv)
         fprintf(stderr, "grade: %s\n", diag.error);
         return 2;
     }
+    /* The course's references, before anyone is graded: a broken one stops the run as the course's
+     * error (exit 2), never a check skipped or a student's 0. */
+    if (grade_refs_check(root, &spec, parts, public_only, &diag) != PL_OK) {
+        fprintf(stderr, "grade: %s\n", diag.error);
+        grade_spec_free(&spec);
+        return 2;
+    }
     grade_result result;
     memset(&result, 0, sizeof result);
     result.seed = seed_given ? seed : fresh_seed();
@@ -173,7 +182,10 @@ int main(int argc, char **argv)
         code = 1;
     }
     printf("results: %s\nreport:  %s/index.html\n", json, report);
-    for (int i = 0; i < result.num_parts; i++) code |= result.parts[i].score < result.parts[i].max_score;
+    for (int i = 0; i < result.num_parts; i++) {
+        code |= result.parts[i].score < result.parts[i].max_score;
+        for (int k = 0; k < result.parts[i].num_cases; k++) verdict_free(&result.parts[i].cases[k].v);  /* its t map */
+    }
     grade_spec_free(&spec);
     return code;
 }

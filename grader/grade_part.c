@@ -3,6 +3,7 @@
 #include "grade_image.h"
 #include "grade_guard.h"
 #include "grade_inspect.h"
+#include "grade_suite.h"
 #include "../framework/file.h"
 #include <dirent.h>
 #include <fcntl.h>
@@ -211,65 +212,17 @@ void grade_log_tail(const char *path, int lines, char *out, size_t size)
 
 /* ---- the suite: verdicts from cmocka's XML files, one per test group ------------------------- */
 
-static void append(char *buf, size_t size, const char *text)
-{
-    size_t len = strlen(buf);
-    if (len + 1 < size) snprintf(buf + len, size - len, "%s", text);
-}
-
-bool grade_suite_xml(const char *path, grade_part_result *r)
-{
-    int fd = grade_guard_open_child_file(path, XML_MAX);  /* the suite's user wrote it: no links */
-    xmlDocPtr doc = fd >= 0 ? xmlReadFd(fd, path, NULL, XML_PARSE_NONET | XML_PARSE_NOBLANKS | XML_PARSE_NOERROR | XML_PARSE_NOWARNING) : NULL;
-    if (fd >= 0) close(fd);
-    if (!doc) return false;
-    xmlNodePtr root = xmlDocGetRootElement(doc);
-    /* cmocka writes no DTD: one here could only declare entities to expand (amplification). */
-    bool ok = root && !doc->intSubset && !xmlStrcmp(root->name, (const xmlChar *)"testsuites");
-    for (xmlNodePtr s = ok ? root->children : NULL; s; s = s->next) {
-        if (s->type != XML_ELEMENT_NODE || xmlStrcmp(s->name, (const xmlChar *)"testsuite")) continue;
-        for (xmlNodePtr t = s->children; t; t = t->next) {
-            if (t->type != XML_ELEMENT_NODE || xmlStrcmp(t->name, (const xmlChar *)"testcase")) continue;
-            r->tests_run++;
-            for (xmlNodePtr f = t->children; f; f = f->next) {
-                if (f->type != XML_ELEMENT_NODE ||
-                    (xmlStrcmp(f->name, (const xmlChar *)"failure") && xmlStrcmp(f->name, (const xmlChar *)"error")))
-                    continue;
-                r->tests_failed++;
-                xmlChar *name = xmlGetProp(t, (const xmlChar *)"name");
-                xmlChar *msg = xmlNodeGetContent(f);
-                /* cmocka ends every failure with "<file>:<line>: error: Failure!": keep the place. */
-                char *tail = msg ? strstr((char *)msg, ": error: Failure!") : NULL;
-                if (tail) *tail = '\0';
-                char line[1024];
-                snprintf(line, sizeof line, "- `%s`: %.700s\n", name ? (char *)name : "?", msg ? (char *)msg : "");
-                append(r->failures, sizeof r->failures, line);
-                xmlFree(name);
-                xmlFree(msg);
-                break;
-            }
-        }
-    }
-    xmlFreeDoc(doc);
-    return ok;
-}
-
 void grade_suite_score(const char *dir, int expected, double points, int status, grade_part_result *r)
 {
     r->tests_run = r->tests_failed = 0;
     r->failures[0] = '\0';
-    DIR *d = opendir(dir);
-    bool all_read = d != NULL;
-    for (struct dirent *e; d && (e = readdir(d));) {
-        if (!strstr(e->d_name, ".xml")) continue;
-        char path[4400];
-        snprintf(path, sizeof path, "%s/%s", dir, e->d_name);
-        all_read = grade_suite_xml(path, r) && all_read;
-    }
-    if (d) closedir(d);
+    char why[200] = "";
+    bool all_read = grade_suite_read(dir, r, why, sizeof why);  /* grade_suite.h says what it accepts */
     /* The XML files are written group by group: a suite that stopped early (an _exit in a test, a
      * crash the suite survived) left fewer tests than it has; one with more was not the suite. */
-    if (!all_read || r->tests_run == 0)
+    if (!all_read)
+        snprintf(r->suite_reason, sizeof r->suite_reason, "the suite's results are not what it writes: %s", why);
+    else if (r->tests_run == 0)
         snprintf(r->suite_reason, sizeof r->suite_reason, "the suite wrote no readable test results");
     else if (r->tests_run < expected)
         snprintf(r->suite_reason, sizeof r->suite_reason, "the suite stopped after %d of %d tests", r->tests_run,

@@ -2,6 +2,7 @@
  * table, results.json in Gradescope's format, and a static HTML report. */
 #include "grade.h"
 #include "../framework/file.h"
+#include "../framework/utf8.h"
 #include <jansson.h>
 #include <math.h>
 #include <stdio.h>
@@ -75,19 +76,44 @@ void grade_print_table(const grade_result *r, FILE *out)
     if (r->unprotected[0]) fprintf(out, "unavailable protections: %s\n", r->unprotected);
 }
 
+/* ---- one function for every string shown -------------------------------------------------------- */
+
+/* Every string results.json and the HTML report show goes through here: test messages, reasons and
+ * paths hold whatever bytes a test or a file held, and jansson refuses a string that is not UTF-8
+ * (its entry would vanish from results.json). A valid copy (utf8_sanitize: bad bytes as \xNN, no
+ * character cut), malloc'd; NULL when out of memory. */
+static char *report_text(const char *s)
+{
+    size_t size = 4 * strlen(s) + 1;
+    char *out = malloc(size);
+    return out ? utf8_sanitize(s, out, size) : NULL;
+}
+
 /* ---- results.json: Gradescope's format ------------------------------------------------------- */
 
 static json_t *test_entry(const char *name, double score, double max, bool passed, const char *output, bool hidden)
 {
-    return json_pack("{s:s, s:f, s:f, s:s, s:s, s:s, s:s}", "name", name, "score", score, "max_score", max, "status",
-                     passed ? "passed" : "failed", "output", output, "output_format", "md", "visibility",
-                     hidden ? "after_published" : "visible");
+    char *n = report_text(name), *o = report_text(output);
+    json_t *e = n && o ? json_pack("{s:s, s:f, s:f, s:s, s:s, s:s, s:s}", "name", n, "score", score, "max_score", max,
+                                   "status", passed ? "passed" : "failed", "output", o, "output_format", "md",
+                                   "visibility", hidden ? "after_published" : "visible")
+                       : NULL;
+    free(n);
+    free(o);
+    return e;
+}
+
+/* Appends an entry; false when it could not be made (never a silently missing test). */
+static bool append_entry(json_t *tests, json_t *entry)
+{
+    return entry && json_array_append_new(tests, entry) == 0;
 }
 
 pl_status grade_write_results_json(const grade_result *r, const char *path, pl_diag *diag)
 {
     json_t *tests = json_array();
     double total = 0;
+    bool complete = tests != NULL;
     for (int i = 0; i < r->num_parts; i++) {
         const grade_part_result *p = &r->parts[i];
         char name[128], text[sizeof p->build_output + 1024];
@@ -101,24 +127,27 @@ pl_status grade_write_results_json(const grade_result *r, const char *path, pl_d
         else
             snprintf(text, sizeof text, "%d of %d tests passed.\n\n%s", p->tests_run - p->tests_failed, p->tests_run,
                      p->failures);
-        json_array_append_new(tests, test_entry(name, p->unit_score, p->unit_max,
-                                                !p->suite_reason[0] && p->tests_failed == 0, text, false));
+        complete = complete && append_entry(tests, test_entry(name, p->unit_score, p->unit_max,
+                                                              !p->suite_reason[0] && p->tests_failed == 0, text, false));
         for (int k = 0; k < p->num_cases; k++) {
             const grade_case_result *c = &p->cases[k];
             snprintf(name, sizeof name, "Part %d: image %s%s", p->part, c->spec->name, c->spec->hidden ? " (hidden)" : "");
             case_text(c, text, sizeof text);
-            json_array_append_new(tests, test_entry(name, c->score, c->spec->points, c->pass, text,
-                                                    c->spec->hidden));
+            complete = complete && append_entry(tests, test_entry(name, c->score, c->spec->points, c->pass, text,
+                                                                  c->spec->hidden));
         }
     }
     char summary[512];
     snprintf(summary, sizeof summary, "pathlab grader, seed %llu.%s%s", (unsigned long long)r->seed,
              r->unprotected[0] ? " Unavailable protections: " : "", r->unprotected);
-    json_t *root = json_pack("{s:f, s:f, s:s, s:o}", "score", total, "execution_time", r->seconds, "output", summary,
-                             "tests", tests);
+    char *shown = report_text(summary);
+    json_t *root = complete && shown ? json_pack("{s:f, s:f, s:s, s:O}", "score", total, "execution_time", r->seconds,
+                                                 "output", shown, "tests", tests) : NULL;
     char *text = root ? json_dumps(root, JSON_INDENT(2)) : NULL;
+    free(shown);
     json_decref(root);
-    if (!text) return pl_fail(diag, PL_ERR_NOMEM, "%s: out of memory", path);
+    json_decref(tests);
+    if (!text) return pl_fail(diag, PL_ERR_NOMEM, "%s: an entry could not be written (out of memory)", path);
     pl_status st = file_write_atomic(path, text, strlen(text), diag);
     free(text);
     return st;
@@ -126,10 +155,13 @@ pl_status grade_write_results_json(const grade_result *r, const char *path, pl_d
 
 /* ---- the HTML report: one page, a row per case with its three pictures ----------------------- */
 
-/* Escapes text for HTML; the Markdown bold of the shared verdict text (**...**) becomes <b>. */
-static void html_escape(FILE *f, const char *s)
+/* Escapes text for HTML (valid UTF-8 first: report_text); the Markdown bold of the shared verdict
+ * text (**...**) becomes <b>. */
+static void html_escape(FILE *f, const char *text)
 {
     bool bold = false;
+    char *valid = report_text(text);
+    const char *s = valid ? valid : "(out of memory)";
     for (; *s; s++) {
         if (s[0] == '*' && s[1] == '*') {
             fputs(bold ? "</b>" : "<b>", f);
@@ -143,6 +175,7 @@ static void html_escape(FILE *f, const char *s)
         else fputc(*s, f);
     }
     if (bold) fputs("</b>", f);
+    free(valid);
 }
 
 pl_status grade_write_html(const grade_result *r, const char *folder, pl_diag *diag)

@@ -4,16 +4,20 @@
 GRADER_SRC := $(filter-out grader/grade_main.c,$(wildcard grader/*.c))
 GRADER_OBJ := $(patsubst %.c,$(BUILD)/%.o,$(GRADER_SRC))
 # bin/grade links the framework's file, image and statistics code, never a part: it must not run
-# student code in its own process.
-GRADER_FRAMEWORK_OBJ := $(addprefix $(BUILD)/framework/,image.o file.o exr.o film.o status.o stats.o) \
+# student code in its own process. The command line and the render key (cli.o, range.o and the
+# output.o the merge writes through) come along for checking the references (grade_refs.c).
+GRADER_FRAMEWORK_OBJ := $(addprefix $(BUILD)/framework/,image.o file.o exr.o film.o status.o stats.o utf8.o cli.o \
+                          range.o output.o) \
                         $(BUILD)/third_party/lodepng/lodepng.o
 $(BIN)/grade: $(BUILD)/grader/grade_main.o $(GRADER_OBJ) $(GRADER_FRAMEWORK_OBJ)
 	$(say) LD $@
 	@mkdir -p $(dir $@)
 	$(Q)$(CC) $(LDFLAGS) -o $@ $^ $(LDLIBS)
 
-# The grader's suite (make test-grader) tests its modules, all but main, so it links them.
+# The grader's suite (make test-grader) tests its modules, all but main, so it links them; and it
+# runs bin/grade itself once (a clean run, leak detection on under SAN=1).
 $(BIN)/test-grader: $(GRADER_OBJ)
+test-grader: $(BIN)/grade
 # The grader's paths and messages live in fixed buffers on purpose: a long path is cut in a message
 # (or makes a file not found, which fails safe), never overflows. GCC's truncation analysis, which
 # sees more at -O1 (SAN=1) than at -O2, would make every such snprintf an error under WERROR=1.

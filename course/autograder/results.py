@@ -9,9 +9,19 @@ import re
 import sys
 
 schema_path, path = sys.argv[1], sys.argv[2]
+
+
+def no_duplicates(pairs):
+    """Every JSON pathlab reads refuses a duplicate key (the last one would silently win)."""
+    keys = [k for k, _ in pairs]
+    if len(set(keys)) != len(keys):
+        raise ValueError("duplicate key")
+    return dict(pairs)
+
+
 try:
     with open(path, encoding="utf-8") as f:
-        data = json.load(f)
+        data = json.load(f, object_pairs_hook=no_duplicates)
 except Exception as e:  # a results file that does not parse is the failure this test looks for
     print("schema: INVALID: not JSON: %s" % e)
     sys.exit(1)

@@ -190,7 +190,7 @@ static void recorded_key(const ref_case *rc, char out[17])
     char path[600];
     snprintf(path, sizeof path, "%s.json", rc->out_base);
     out[0] = '\0';
-    json_t *j = json_load_file(path, 0, NULL);
+    json_t *j = json_load_file(path, JSON_REJECT_DUPLICATES, NULL);
     const char *k = json_string_value(json_object_get(j, "key"));
     if (k) snprintf(out, 17, "%s", k);
     json_decref(j);
@@ -243,7 +243,7 @@ static json_t *probe_case(const ref_case *rc)
     grade_case_text text;
     grade_case_command(rc->spec, "bin/pathtracer", rc->spec->scene, out, rc->seed, 1, &text, argv);
     if (!run_logged(argv, log)) return NULL;
-    json_t *s = json_load_file(sidecar, 0, NULL);
+    json_t *s = json_load_file(sidecar, JSON_REJECT_DUPLICATES, NULL);
     double rays = json_number_value(json_object_get(s, "rays_traced"));
     double work = json_number_value(json_object_get(s, "node_visits")) +
                   json_number_value(json_object_get(s, "primitive_tests"));

@@ -1,8 +1,9 @@
 /* Test machinery: not part of any assignment. The film (framework/film.c): fixed-point sums that
  * add up the same in any order; and, through the real binary, sample ranges (--samples A:B) that
  * merge (--merge) into the same bytes as the single render, PNG and EXR, for several splits and
- * thread counts, and merges that must be refused (gap, overlap, another render). No randomness
- * is judged here: every check is exact. */
+ * thread counts, and merges that must be refused (gap, overlap, another render, and every hostile
+ * film tests/data/make_hostile_films.py writes, each within 1 GB and 10 s). No randomness is judged
+ * here: every check is exact. */
 #include "../common/test.h"
 #include "../../framework/film.h"
 #include "../../framework/exr.h"
@@ -95,6 +96,44 @@ static void test_film_pixel__variance_of_the_mean(void **state)
     /* samples 1 and 3: sample variance 2, variance of the mean 2 / 2 = 1 */
     assert_true(film_pixel_variance_of_mean(&p, 1) == 1.0);
     assert_true(film_pixel_mean(&p, 1) == 2.0);
+}
+
+static void test_film_pixel_merge__refuses_counts_that_wrap(void **state)
+{
+    (void)state;
+    film_pixel a = {.n = 4}, b = {.n = 4294967295u}, c = {.n = 1, .bad = 4294967295u};
+    assert_false(film_pixel_merge(&a, &b));
+    assert_int_equal(a.n, 4);  /* unchanged */
+    assert_false(film_pixel_merge(&c, &c));
+    b.n = 4294967291u;
+    assert_true(film_pixel_merge(&a, &b));
+    assert_int_equal(a.n, 4294967295u);
+}
+
+static void test_film_check__names_the_pixel_and_field(void **state)
+{
+    (void)state;
+    film f;
+    pl_diag d = pl_diag_default();
+    assert_int_equal(PL_OK, film_alloc(&f, 3, 2));
+    for (int i = 0; i < 6; i++) f.pixels[i].n = 2;
+    assert_int_equal(PL_OK, film_check(&f, 2, 2, "x.exr", &d));
+    /* One sample of value 1 (2^32 units) and one bad: consistent; then sums with no good sample. */
+    f.pixels[4].bad = 1;
+    for (int c = 0; c < 4; c++) f.pixels[4].sum[c] = f.pixels[4].sum_sq[c] = (film_sum)1 << 32;
+    assert_int_equal(PL_OK, film_check(&f, 2, 2, "x.exr", &d));
+    f.pixels[4].bad = 2;
+    assert_int_equal(PL_ERR_PARSE, film_check(&f, 2, 2, "x.exr", &d));
+    assert_string_equal(d.error, "x.exr: pixel (1, 1): acc.sum.R / acc.sq.R: sums without a good sample (n = 2, bad = 2)");
+    /* Two samples of 1 have sum 2 and squares 2: a sum of 3 is more than they allow. */
+    f.pixels[4].bad = 0;
+    for (int c = 0; c < 4; c++) f.pixels[4].sum[c] = (film_sum)3 << 32, f.pixels[4].sum_sq[c] = (film_sum)2 << 32;
+    assert_int_equal(PL_ERR_PARSE, film_check(&f, 2, 2, "x.exr", &d));
+    assert_non_null(strstr(d.error, "a sum too large for its sum of squares"));
+    f.pixels[4].sum[0] = (film_sum)2 << 32;  /* the R channel now fine, G still not */
+    assert_int_equal(PL_ERR_PARSE, film_check(&f, 2, 2, "x.exr", &d));
+    assert_non_null(strstr(d.error, "acc.sum.G"));
+    film_free(&f);
 }
 
 /* ---- split renders merge into the same bytes, through the real binary ----------------------- */
@@ -236,6 +275,66 @@ static void test_merge__refuses_another_render(void **state)
     expect_refused(r, 2, "-H", "not pieces of the same render");
 }
 
+/* Every hostile film of the generator is refused with its located error and no output, within 1 GB
+ * of address space and 10 s; its two controls (one film, two ranges of one render) are accepted, so
+ * the generator writes what pathlab writes and each refusal is the one change's. */
+static void test_merge__refuses_every_hostile_film(void **state)
+{
+    (void)state;
+    char cwd[512], hostile[128], cmd[2048], line[1024];
+    assert_non_null(getcwd(cwd, sizeof cwd));
+    snprintf(hostile, sizeof hostile, "%s/hostile", dir);
+    snprintf(cmd, sizeof cmd, "python3 tests/data/make_hostile_films.py %s", hostile);
+    assert_int_equal(0, system(cmd));
+    snprintf(line, sizeof line, "%s/manifest.txt", hostile);
+    FILE *manifest = fopen(line, "r");
+    assert_non_null(manifest);
+    int cases = 0;
+    while (fgets(line, sizeof line, manifest)) {
+        line[strcspn(line, "\n")] = '\0';
+        char *files = strchr(line, '|');
+        assert_non_null(files);
+        *files++ = '\0';
+        snprintf(cmd, sizeof cmd, "cd %s && rm -f out.exr && (ulimit -v 1048576; exec timeout 10 %s/bin/pathtracer "
+                 "--merge -f out.exr %s) >/dev/null 2>msg.txt", hostile, cwd, files);
+        int status = system(cmd), code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+        char path[256], *msg = NULL;
+        size_t n = 0;
+        pl_diag d = pl_diag_default();
+        snprintf(path, sizeof path, "%s/msg.txt", hostile);
+        assert_int_equal(PL_OK, file_read_all(path, "stderr", 1 << 20, &msg, &n, &d));
+        snprintf(path, sizeof path, "%s/out.exr", hostile);
+        bool ok = !strcmp(line, "ok") ? code == 0 : code == 2 && strstr(msg, line) && access(path, F_OK) != 0;
+        if (!ok) fail_msg("%s: expected %s%s, got exit %d: %s", files, strcmp(line, "ok") ? "exit 2 and " : "success",
+                          strcmp(line, "ok") ? line : "", code, msg);
+        free(msg);
+        cases++;
+    }
+    fclose(manifest);
+    assert_true(cases >= 50);
+}
+
+/* --merge takes its options in any order, and -q beside them; an option of a render is refused. */
+static void test_merge__options_in_any_order(void **state)
+{
+    (void)state;
+    char a[128], b[128], out[160], full[160];
+    snprintf(a, sizeof a, "%s/order0.exr", dir);
+    snprintf(b, sizeof b, "%s/order1.exr", dir);
+    assert_int_equal(0, run(RENDER " -t 1 --samples 0:2 -f %s%s " SCENE, a, "", ""));
+    assert_int_equal(0, run(RENDER " -t 1 --samples 2:6 -f %s%s " SCENE, b, "", ""));
+    snprintf(full, sizeof full, "%s/full.exr", dir);
+    snprintf(out, sizeof out, "%s/order_a.exr", dir);
+    assert_int_equal(0, run("bin/pathtracer %s -q --merge -f %s %s", b, out, a));
+    expect_same_bytes(full, out);
+    snprintf(out, sizeof out, "%s/order_b.exr", dir);
+    assert_int_equal(0, run("bin/pathtracer -f %s %s --merge %s", out, a, b));
+    expect_same_bytes(full, out);
+    snprintf(out, sizeof out, "%s/order_c.exr", dir);
+    assert_int_equal(2, run("bin/pathtracer --merge -s 4 -f %s %s %s", out, a, b));
+    assert_int_equal(-1, access(out, F_OK));
+}
+
 static void test_samples__refused_with_adaptive_or_beyond_spp(void **state)
 {
     (void)state;
@@ -252,6 +351,8 @@ int film_tests(void)
         cmocka_unit_test(test_film_pixel_add__bad_sample_counts_as_black),
         cmocka_unit_test(test_film_pixel__sums_are_the_same_in_any_grouping),
         cmocka_unit_test(test_film_pixel__variance_of_the_mean),
+        cmocka_unit_test(test_film_pixel_merge__refuses_counts_that_wrap),
+        cmocka_unit_test(test_film_check__names_the_pixel_and_field),
     };
     const struct CMUnitTest merge[] = {
         cmocka_unit_test(test_merge__one_piece_one_thread),
@@ -261,6 +362,8 @@ int film_tests(void)
         cmocka_unit_test(test_merge__refuses_a_missing_end),
         cmocka_unit_test(test_merge__refuses_an_overlap),
         cmocka_unit_test(test_merge__refuses_another_render),
+        cmocka_unit_test(test_merge__refuses_every_hostile_film),
+        cmocka_unit_test(test_merge__options_in_any_order),
         cmocka_unit_test(test_samples__refused_with_adaptive_or_beyond_spp),
     };
     int failed = cmocka_run_group_tests_name("film: fixed-point accumulators", unit, NULL, NULL);

@@ -334,7 +334,7 @@ static void test_output__non_utf8_path_gives_valid_json(void **state)
     char path[128];
     snprintf(path, sizeof path, "%s/caf\xe9.json", dir);
     json_error_t err;
-    json_t *j = json_load_file(path, 0, &err);
+    json_t *j = json_load_file(path, JSON_REJECT_DUPLICATES, &err);
     if (!j) fail_msg("%s: invalid JSON at line %d: %s", path, err.line, err.text);
     assert_non_null(strstr(json_string_value(json_object_get(j, "command_line")), "caf\xef\xbf\xbd.png"));
     json_decref(j);

@@ -1,0 +1,156 @@
+/* Grader machinery: not part of any assignment. A suite's verdicts from its cmocka XML files
+ * (grade_suite.h). The files are written by student code: read as hostile (no links, a size cap, no
+ * DTD, no network), and anything the suite would not write makes the whole suite unreadable. */
+#include "grade_suite.h"
+#include "grade_guard.h"
+#include <dirent.h>
+#include <libxml/parser.h>
+#include <libxml/tree.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <unistd.h>
+
+#define MESSAGE_MAX 700  /* bytes of one failure's message shown */
+
+static bool is_element(xmlNodePtr n, const char *name)
+{
+    return n->type == XML_ELEMENT_NODE && !xmlStrcmp(n->name, (const xmlChar *)name);
+}
+
+/* The verdict element of testcase t (<failure>, <error> or <skipped>) anywhere below it, outside any
+ * testcase nested in it; NULL when it passed. */
+static xmlNodePtr verdict_of(xmlNodePtr t)
+{
+    for (xmlNodePtr c = t->children; c; c = c->next) {
+        if (c->type != XML_ELEMENT_NODE || is_element(c, "testcase")) continue;
+        if (is_element(c, "failure") || is_element(c, "error") || is_element(c, "skipped")) return c;
+        xmlNodePtr deeper = verdict_of(c);
+        if (deeper) return deeper;
+    }
+    return NULL;
+}
+
+/* One failed test as a Markdown line: its name and message, the message cut at a character boundary. */
+static void add_failure(grade_part_result *r, xmlNodePtr t, xmlNodePtr v)
+{
+    xmlChar *name = xmlGetProp(t, (const xmlChar *)"name");
+    xmlChar *msg = is_element(v, "skipped") ? NULL : xmlNodeGetContent(v);
+    char *text = msg ? (char *)msg : (char *)"skipped: a skipped test is not a passed one";
+    /* cmocka ends every failure with "<file>:<line>: error: Failure!": keep the place. */
+    char *tail = strstr(text, ": error: Failure!");
+    if (tail) *tail = '\0';
+    size_t cut = strlen(text);
+    if (cut > MESSAGE_MAX) {
+        cut = MESSAGE_MAX;
+        while (cut > 0 && ((unsigned char)text[cut] & 0xc0) == 0x80) cut--;  /* never inside a character */
+    }
+    size_t len = strlen(r->failures);
+    if (len + 1 < sizeof r->failures)
+        snprintf(r->failures + len, sizeof r->failures - len, "- `%.200s`: %.*s\n", name ? (char *)name : "?", (int)cut, text);
+    xmlFree(name);
+    xmlFree(msg);
+}
+
+/* Counts the testcases below n (any depth) into *run and *failed. */
+static void count_tests(xmlNodePtr n, grade_part_result *r, int *run, int *failed)
+{
+    for (xmlNodePtr c = n->children; c; c = c->next) {
+        if (c->type != XML_ELEMENT_NODE) continue;
+        if (is_element(c, "testcase")) {
+            ++*run;
+            xmlNodePtr v = verdict_of(c);
+            if (v) {
+                ++*failed;
+                add_failure(r, c, v);
+            }
+        }
+        count_tests(c, r, run, failed);
+    }
+}
+
+/* A whole-number attribute of n, or -1 when absent or not a number. */
+static long count_attribute(xmlNodePtr n, const char *name)
+{
+    xmlChar *v = xmlGetProp(n, (const xmlChar *)name);
+    char *end = NULL;
+    long x = v && v[0] >= '0' && v[0] <= '9' ? strtol((const char *)v, &end, 10) : -1;
+    if (end && *end) x = -1;
+    xmlFree(v);
+    return x;
+}
+
+/* The file's one <testsuite>, named `group`, with its counts agreeing with its testcases. */
+static bool read_suite(xmlDocPtr doc, const char *group, grade_part_result *r, char *why, size_t size)
+{
+    xmlNodePtr root = xmlDocGetRootElement(doc), suite = NULL;
+    /* cmocka writes no DTD: one here could only declare entities to expand (amplification). */
+    if (!root || doc->intSubset || !is_element(root, "testsuites"))
+        return snprintf(why, size, "expected <testsuites> and no DTD"), false;
+    for (xmlNodePtr c = root->children; c; c = c->next)
+        if (c->type == XML_ELEMENT_NODE) {
+            if (suite || !is_element(c, "testsuite")) return snprintf(why, size, "expected one <testsuite>"), false;
+            suite = c;
+        }
+    xmlChar *name = suite ? xmlGetProp(suite, (const xmlChar *)"name") : NULL;
+    bool named = name && (!group || !strcmp((const char *)name, group));
+    xmlFree(name);
+    if (!named) return snprintf(why, size, "expected one <testsuite name=\"<the file's group>\">"), false;
+    int run = 0, failed = 0;
+    count_tests(suite, r, &run, &failed);
+    long tests = count_attribute(suite, "tests"), f = count_attribute(suite, "failures"),
+         e = count_attribute(suite, "errors"), s = count_attribute(suite, "skipped");
+    if (tests != run || f < 0 || e < 0 || (s < 0 && xmlHasProp(suite, (const xmlChar *)"skipped")) ||
+        f + e + (s > 0 ? s : 0) != failed)
+        return snprintf(why, size, "tests=%ld failures=%ld errors=%ld skipped=%ld, but it holds %d tests of which %d did "
+                        "not pass", tests, f, e, s, run, failed), false;
+    r->tests_run += run;
+    r->tests_failed += failed;
+    return true;
+}
+
+/* Reads one file, opened without following a link. */
+static bool read_file(const char *dir, const char *file, grade_part_result *r, char *why, size_t size)
+{
+    char path[4400], group[256];
+    snprintf(path, sizeof path, "%s/%s", dir, file);
+    snprintf(group, sizeof group, "%.*s", (int)(strlen(file) - 4), file);
+    return grade_suite_read_file(path, group, r, why, size);
+}
+
+bool grade_suite_read_file(const char *path, const char *group, grade_part_result *r, char *why, size_t size)
+{
+    int fd = grade_guard_open_child_file(path, GRADE_SUITE_XML_MAX);
+    xmlDocPtr doc = fd >= 0 ? xmlReadFd(fd, path, NULL, XML_PARSE_NONET | XML_PARSE_NOBLANKS | XML_PARSE_NOERROR |
+                                                           XML_PARSE_NOWARNING) : NULL;
+    if (fd >= 0) close(fd);
+    bool ok = doc && read_suite(doc, group, r, why, size);
+    if (!doc) snprintf(why, size, "not a regular file under %ld MiB of XML", GRADE_SUITE_XML_MAX >> 20);
+    xmlFreeDoc(doc);
+    return ok;
+}
+
+bool grade_suite_read(const char *dir, grade_part_result *r, char *why, size_t size)
+{
+    char prefix[16], reason[256] = "";
+    snprintf(prefix, sizeof prefix, "part%d: ", r->part);
+    DIR *d = opendir(dir);
+    bool ok = d != NULL;
+    if (!d) snprintf(reason, sizeof reason, "cannot read the folder");
+    for (struct dirent *e; ok && (e = readdir(d));) {
+        const char *n = e->d_name;
+        size_t len = strlen(n);
+        if (!strcmp(n, ".") || !strcmp(n, "..")) continue;
+        /* What cmocka names a group's file: "part<N>: <group>.xml", no path, no other file. */
+        if (len < strlen(prefix) + 5 || len > 200 || strncmp(n, prefix, strlen(prefix)) || strcmp(n + len - 4, ".xml") ||
+            strchr(n, '/')) {
+            snprintf(reason, sizeof reason, "the suite writes 'part%d: <group>.xml' files only, not this one", r->part);
+            ok = false;
+        }
+        else ok = read_file(dir, n, r, reason, sizeof reason);
+        if (!ok) snprintf(why, size, "%.200s: %s", n, reason);
+    }
+    if (d) closedir(d);
+    if (!d) snprintf(why, size, "%s: %s", dir, reason);
+    return ok;
+}

@@ -1,0 +1,347 @@
+/* Test machinery: not part of any assignment. What the grader reads, read as hostile input: the
+ * course's references (grader/grade_refs.c: a broken one is the course's error, never a student's
+ * 0 nor a check skipped), a suite's XML results (grader/grade_suite.c), and the strings results.json
+ * shows (grader/grade_report.c: no entry ever lost to bytes that are not UTF-8). Each hostile file
+ * is written here, from the course's real ones. */
+#include "../common/test.h"
+#include "../../grader/grade.h"
+#include "../../grader/grade_refs.h"
+#include "../../grader/grade_suite.h"
+#include "../../framework/file.h"
+#include "../../framework/exr.h"
+#include <jansson.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <sys/stat.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+static char scratch[64];
+
+static int make_scratch(void **state)
+{
+    (void)state;
+    snprintf(scratch, sizeof scratch, "/tmp/pl-readers-test-XXXXXX");
+    return mkdtemp(scratch) ? 0 : -1;
+}
+
+static int remove_scratch(void **state)
+{
+    (void)state;
+    char cmd[128];
+    snprintf(cmd, sizeof cmd, "rm -rf '%s'", scratch);
+    return system(cmd) == 0 ? 0 : -1;
+}
+
+static void write_text(const char *path, const char *text)
+{
+    pl_diag d = pl_diag_default();
+    assert_int_equal(PL_OK, file_write_atomic(path, text, strlen(text), &d));
+}
+
+static void sh(const char *fmt, const char *a, const char *b)
+{
+    char cmd[1024];
+    snprintf(cmd, sizeof cmd, fmt, a, b);
+    assert_int_equal(0, system(cmd));
+}
+
+/* ---- the references ------------------------------------------------------------------------ */
+
+/* A root of the course's real part 2 and part 5 references, to break one file at a time. */
+static void fresh_root(char *root, size_t size)
+{
+    snprintf(root, size, "%s/root", scratch);
+    sh("rm -rf '%s' && mkdir -p '%s/reference_images'", root, root);
+    sh("cp -r reference_images/part2 reference_images/part5 '%s/reference_images/'%s", root, "");
+}
+
+/* grade_refs_check on parts 2 and 5 of the real cases: the error, or "" when they pass. */
+static const char *check(const char *root)
+{
+    static pl_diag d;
+    grade_spec spec;
+    d = pl_diag_default();
+    assert_int_equal(PL_OK, grade_spec_load(GRADE_CASES, NULL, &spec, &d));
+    pl_status s = grade_refs_check(root, &spec, "2,5", true, &d);
+    grade_spec_free(&spec);
+    return s == PL_OK ? "" : d.error;
+}
+
+static void expect_refused(const char *root, const char *words, const char *case_name)
+{
+    const char *why = check(root);
+    char run[128];
+    snprintf(run, sizeof run, "make references FORCE=1 CASES=%s", case_name);
+    if (!strstr(why, words) || !strstr(why, run) || !strstr(why, "the course's reference"))
+        fail_msg("expected the course's error naming '%s' and '%s', got: '%s'", words, run, why);
+}
+
+static void test_refs__the_course_references_pass(void **state)
+{
+    (void)state;
+    char root[128];
+    fresh_root(root, sizeof root);
+    assert_string_equal(check(root), "");
+}
+
+/* The JSON a work_per_ray or adaptive case needs: missing, empty, broken, duplicated, zero. Before,
+ * a missing part 2 JSON skipped the work check, and a render without the BVH got full marks. */
+static void test_refs__the_json_a_check_needs_is_required(void **state)
+{
+    (void)state;
+    char root[128], json[256], adaptive[256];
+    fresh_root(root, sizeof root);
+    snprintf(json, sizeof json, "%s/reference_images/part2/bunny_normals.json", root);
+    snprintf(adaptive, sizeof adaptive, "%s/reference_images/part5/spheres_adaptive.json", root);
+    assert_int_equal(0, unlink(json));
+    expect_refused(root, "bunny_normals.json", "bunny_normals");
+    write_text(json, "");
+    expect_refused(root, "bunny_normals.json", "bunny_normals");
+    write_text(json, "{\"case\": \"bunny_normals\", \"part\": 2, \"samples\": 1, \"seed\": 1,");
+    expect_refused(root, "bunny_normals.json", "bunny_normals");
+    fresh_root(root, sizeof root);
+    sh("sed -i 's/\"work_per_ray\": \\([0-9.]*\\)/\"work_per_ray\": \\1, \"work_per_ray\": 0/' '%s'%s", json, "");
+    expect_refused(root, "duplicate", "bunny_normals");
+    fresh_root(root, sizeof root);
+    sh("sed -i 's/\"work_per_ray\": [0-9.]*/\"work_per_ray\": 0/' '%s'%s", json, "");
+    expect_refused(root, "work_per_ray (a work_per_ray case)", "bunny_normals");
+    fresh_root(root, sizeof root);
+    sh("sed -i 's/\"mean_samples_per_pixel\": [0-9.]*,//' '%s'%s", adaptive, "");
+    expect_refused(root, "mean_samples_per_pixel (an adaptive case)", "spheres_adaptive");
+    fresh_root(root, sizeof root);
+    sh("sed -i 's/\"case\": \"bunny_normals\"/\"case\": \"spheres_normals\"/' '%s'%s", json, "");
+    expect_refused(root, "expected \"case\" bunny_normals", "bunny_normals");
+}
+
+/* A film that is not the case's: a partial range, another flag, another size, a missing file. */
+static void test_refs__the_film_must_be_the_cases(void **state)
+{
+    (void)state;
+    char root[128], exr[256];
+    fresh_root(root, sizeof root);
+    snprintf(exr, sizeof exr, "%s/reference_images/part2/bunny_normals.exr", root);
+    /* The seed the reference records, so that only the changed flag differs. */
+    exr_info info;
+    int w, h;
+    pl_diag d = pl_diag_default();
+    assert_int_equal(PL_OK, exr_read_info(exr, &info, &w, &h, &d));
+    /* Rendered beside, then copied over the film: a render's sidecar would replace the JSON. */
+    char render[512], copy[600];
+    snprintf(render, sizeof render, "bin/pathtracer --normals -r 160 120 --seed %llu -t 1 -q scenes/cornell_bunny.dae "
+             "-f %s/film.exr", (unsigned long long)info.seed, scratch);
+    snprintf(copy, sizeof copy, "cp %s/film.exr '%s'", scratch, exr);
+    sh("%s -s 9 --samples 0:1 >/dev/null && %s", render, copy);
+    expect_refused(root, "samples 0:1 of 9", "bunny_normals");
+    sh("%s --no-bvh >/dev/null && %s", render, copy);
+    expect_refused(root, "pathlab.command", "bunny_normals");
+    sh("%s -r 80 60 >/dev/null && %s", render, copy);
+    expect_refused(root, "80x60", "bunny_normals");
+    assert_int_equal(0, unlink(exr));
+    expect_refused(root, "bunny_normals.exr: cannot read", "bunny_normals");
+    /* The same render again is accepted: the refusals above were the changes'. */
+    sh("%s >/dev/null && %s", render, copy);
+    assert_string_equal(check(root), "");
+}
+
+/* ---- the cases ----------------------------------------------------------------------------- */
+
+/* grading/cases.json with one edit (a sed expression): the error of loading it, or "". */
+static const char *load_edited(const char *sed)
+{
+    static pl_diag d;
+    char path[128], cmd[512];
+    snprintf(path, sizeof path, "%s/cases.json", scratch);
+    snprintf(cmd, sizeof cmd, "sed '%s' grading/cases.json > %s", sed, path);
+    assert_int_equal(0, system(cmd));
+    grade_spec spec;
+    d = pl_diag_default();
+    if (grade_spec_load(path, NULL, &spec, &d) != PL_OK) return d.error;
+    grade_spec_free(&spec);
+    return "";
+}
+
+/* A misspelt or mistyped member would skip the check it asks for in silence: each is refused. */
+static void test_cases__every_member_known_and_typed(void **state)
+{
+    (void)state;
+    assert_string_equal(load_edited("s/x/x/"), "");
+    assert_non_null(strstr(load_edited("s/\"work_per_ray\": true/\"work_per_rays\": true/"),
+                           "case bunny_normals: unknown member \"work_per_rays\""));
+    assert_non_null(strstr(load_edited("s/\"work_per_ray\": true/\"work_per_ray\": \"yes\"/"),
+                           "case bunny_normals: \"work_per_ray\" has the wrong type"));
+    assert_non_null(strstr(load_edited("s/\"unit_tests\": 23/\"unit_tests\": 23, \"unit_test\": 1/"), "unknown member"));
+    assert_non_null(strstr(load_edited("0,/\"points\": 4,/s///"), "case spheres_normals: expected \"points\""));
+    assert_non_null(strstr(load_edited("0,/160,/s//4096,/; 0,/120$/s//4096/"), "at most 2097152 pixels"));
+}
+
+/* ---- the suite's results ------------------------------------------------------------------- */
+
+static void suite_file(const char *dir, const char *name, const char *body)
+{
+    char path[512];
+    snprintf(path, sizeof path, "%s/%s", dir, name);
+    write_text(path, body);
+}
+
+static bool read_dir(const char *name, const char *file, const char *body, grade_part_result *r, char *why)
+{
+    char dir[256];
+    snprintf(dir, sizeof dir, "%s/%s", scratch, name);
+    assert_int_equal(0, mkdir(dir, 0755));
+    suite_file(dir, file, body);
+    memset(r, 0, sizeof *r);
+    r->part = 1;
+    return grade_suite_read(dir, r, why, 200);
+}
+
+static void test_suite__every_testcase_counted_and_skipped_is_not_passed(void **state)
+{
+    (void)state;
+    grade_part_result r;
+    char why[200] = "";
+    /* A testcase nested in another element, and a skipped one: both counted, the skipped failed. */
+    assert_true(read_dir("nested", "part1: g.xml",
+                         "<testsuites><testsuite name=\"part1: g\" tests=\"3\" failures=\"0\" errors=\"0\" skipped=\"1\">"
+                         "<testcase name=\"a\"/><x><testcase name=\"b\"><failure>no</failure></testcase></x>"
+                         "<testcase name=\"c\"><skipped/></testcase></testsuite></testsuites>", &r, why) == false);
+    assert_non_null(strstr(why, "tests=3 failures=0 errors=0 skipped=1, but it holds 3 tests of which 2 did not pass"));
+    assert_true(read_dir("counted", "part1: g.xml",
+                         "<testsuites><testsuite name=\"part1: g\" tests=\"3\" failures=\"1\" errors=\"0\" skipped=\"1\">"
+                         "<testcase name=\"a\"/><x><testcase name=\"b\"><failure>no</failure></testcase></x>"
+                         "<testcase name=\"c\"><skipped/></testcase></testsuite></testsuites>", &r, why));
+    assert_int_equal(r.tests_run, 3);
+    assert_int_equal(r.tests_failed, 2);
+    assert_non_null(strstr(r.failures, "`c`: skipped"));
+    /* tests= that does not match what is there. */
+    assert_false(read_dir("claims", "part1: g.xml",
+                          "<testsuites><testsuite name=\"part1: g\" tests=\"9\" failures=\"0\" errors=\"0\">"
+                          "<testcase name=\"a\"/></testsuite></testsuites>", &r, why));
+    assert_non_null(strstr(why, "tests=9"));
+}
+
+static void test_suite__only_the_files_the_suite_writes(void **state)
+{
+    (void)state;
+    grade_part_result r;
+    char why[200] = "";
+    static const char *const good = "<testsuites><testsuite name=\"part1: g\" tests=\"1\" failures=\"0\" errors=\"0\">"
+                                    "<testcase name=\"a\"/></testsuite></testsuites>";
+    assert_false(read_dir("name_xml", "results.xml.bak", good, &r, why));
+    assert_non_null(strstr(why, "results.xml.bak: the suite writes 'part1: <group>.xml' files only"));
+    assert_false(read_dir("other_part", "part2: g.xml", good, &r, why));
+    assert_false(read_dir("renamed", "part1: h.xml", good, &r, why));
+    assert_non_null(strstr(why, "expected one <testsuite name="));
+    assert_true(read_dir("good", "part1: g.xml", good, &r, why));
+    assert_int_equal(r.tests_run, 1);
+}
+
+/* A message cut at 700 bytes never splits a character (a 3-byte one straddles the cut here). */
+static void test_suite__a_long_message_is_cut_between_characters(void **state)
+{
+    (void)state;
+    char body[2048], why[200] = "";
+    grade_part_result r;
+    int n = snprintf(body, sizeof body, "<testsuites><testsuite name=\"part1: g\" tests=\"1\" failures=\"1\" errors=\"0\">"
+                     "<testcase name=\"a\"><failure>");
+    memset(body + n, 'x', 699);
+    snprintf(body + n + 699, sizeof body - n - 699, "\xe2\x82\xac tail</failure></testcase></testsuite></testsuites>");
+    assert_true(read_dir("cut", "part1: g.xml", body, &r, why));
+    assert_non_null(strstr(r.failures, "xxx\n"));
+    assert_null(strstr(r.failures, "\xe2"));
+}
+
+/* ---- results.json -------------------------------------------------------------------------- */
+
+/* Every part's entries are present, whatever bytes the messages hold. Before, one invalid byte in a
+ * part's failures made jansson refuse its entry, and results.json silently lacked it. */
+static void test_report__every_entry_present_for_hostile_messages(void **state)
+{
+    (void)state;
+    static grade_result res;
+    static grade_case cases[GRADE_NUM_PARTS];
+    memset(&res, 0, sizeof res);
+    static const char *const hostile[] = {"bad byte \xff here", "cut \xe2\x82", "\xc0\xaf overlong", "surrogate \xed\xa0\x80",
+                                          "quote \" backslash \\ control \x01"};
+    res.num_parts = GRADE_NUM_PARTS;
+    for (int p = 0; p < GRADE_NUM_PARTS; p++) {
+        grade_part_result *r = &res.parts[p];
+        r->part = p + 1;
+        r->tests_run = 3, r->tests_failed = 1;
+        snprintf(r->failures, sizeof r->failures, "- `t`: %s\n", hostile[p]);
+        if (p % 2) snprintf(r->suite_reason, sizeof r->suite_reason, "%s", hostile[(p + 1) % 5]);
+        snprintf(cases[p].name, sizeof cases[p].name, "case%d", p + 1);
+        r->num_cases = 1;
+        r->cases[0].spec = &cases[p];
+        snprintf(r->cases[0].reason, sizeof r->cases[0].reason, "%s", hostile[(p + 2) % 5]);
+    }
+    char path[256];
+    pl_diag d = pl_diag_default();
+    snprintf(path, sizeof path, "%s/results.json", scratch);
+    assert_int_equal(PL_OK, grade_write_results_json(&res, path, &d));
+    json_error_t err;
+    json_t *j = json_load_file(path, JSON_REJECT_DUPLICATES, &err);
+    assert_non_null(j);
+    json_t *tests = json_object_get(j, "tests");
+    assert_int_equal(json_array_size(tests), 2 * GRADE_NUM_PARTS);
+    for (int p = 0; p < GRADE_NUM_PARTS; p++) {
+        char unit[64], image_name[64];
+        snprintf(unit, sizeof unit, "Part %d: unit tests", p + 1);
+        snprintf(image_name, sizeof image_name, "Part %d: image case%d", p + 1, p + 1);
+        bool has_unit = false, has_image = false;
+        for (size_t i = 0; i < json_array_size(tests); i++) {
+            const char *name = json_string_value(json_object_get(json_array_get(tests, i), "name"));
+            has_unit = has_unit || (name && !strcmp(name, unit));
+            has_image = has_image || (name && !strcmp(name, image_name));
+        }
+        if (!has_unit || !has_image) fail_msg("results.json lacks '%s' or '%s'", unit, image_name);
+    }
+    assert_non_null(strstr(json_string_value(json_object_get(json_array_get(tests, 0), "output")), "bad byte \\xff here"));
+    json_decref(j);
+    assert_int_equal(PL_OK, grade_write_html(&res, scratch, &d));
+}
+
+/* ---- the grader's own memory ---------------------------------------------------------------- */
+
+/* A grading run ends normally: exit 0 (full marks) or 1 (a student's tree with stubs), its
+ * results.json written; in the sanitizer build (make test SAN=1: bin/san/grade) with leak detection
+ * on and any report made exit 86, so a leak fails it (each graded case once leaked its verdict's
+ * 180-byte t map). */
+static void test_grade__a_run_ends_cleanly_with_leak_detection(void **state)
+{
+    (void)state;
+#ifdef __SANITIZE_ADDRESS__
+    const char *grade = "ASAN_OPTIONS=detect_leaks=1:exitcode=86 bin/san/grade";
+#else
+    const char *grade = "bin/grade";
+#endif
+    char cmd[512], results[128];
+    /* Without this suite's FILTER, which the graded suite would inherit and stop early on. */
+    snprintf(cmd, sizeof cmd, "env -u PL_TEST_FILTER -u PL_TEST_LIST -u PL_TEST_MATCHED %s --parts 1 --seed 1 --out "
+             "%s/grade >%s/grade.log 2>&1", grade, scratch, scratch);
+    int status = system(cmd), code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+    snprintf(results, sizeof results, "%s/grade/results.json", scratch);
+    if ((code != 0 && code != 1) || access(results, F_OK) != 0) {
+        snprintf(cmd, sizeof cmd, "tail -20 %s/grade.log", scratch);
+        assert_int_equal(0, system(cmd));
+        fail_msg("%s exited with %d (its output above)", grade, code);
+    }
+}
+
+int readers_tests(void)
+{
+    const struct CMUnitTest tests[] = {
+        cmocka_unit_test(test_refs__the_course_references_pass),
+        cmocka_unit_test(test_refs__the_json_a_check_needs_is_required),
+        cmocka_unit_test(test_refs__the_film_must_be_the_cases),
+        cmocka_unit_test(test_cases__every_member_known_and_typed),
+        cmocka_unit_test(test_suite__every_testcase_counted_and_skipped_is_not_passed),
+        cmocka_unit_test(test_suite__only_the_files_the_suite_writes),
+        cmocka_unit_test(test_suite__a_long_message_is_cut_between_characters),
+        cmocka_unit_test(test_report__every_entry_present_for_hostile_messages),
+        cmocka_unit_test(test_grade__a_run_ends_cleanly_with_leak_detection),
+    };
+    return cmocka_run_group_tests_name("grader readers: references, suite results, results.json", tests, make_scratch,
+                                       remove_scratch);
+}
