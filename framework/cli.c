@@ -25,6 +25,7 @@ options options_default(void)
     o.adaptive_batch = 32;
     o.adaptive_tol = 0.05f;
     o.max_leaf_size = 4;
+    o.trace_last = -1;
     o.max_primitives = dae_limits_default().max_primitives;
     o.max_instances = dae_limits_default().max_instances;
     return o;
@@ -60,6 +61,10 @@ void cli_print_usage(FILE *f, const char *prog)
             "  --max-instances N   refuse scenes whose nodes expand to more instances (1000000; guards time)\n"
             "  --heatmap FILE    write a PNG of BVH nodes visited per pixel\n"
             "  --samples A:B     render only samples A..B-1 of -s N (fixed rate; -f x.exr keeps what --merge needs)\n"
+            "  --trace-pixel X Y   print every path of pixel (X, Y) (0 0 = bottom-left), as the render computes it\n"
+            "  --trace-sample K    with --trace-pixel: print only sample K (or samples A:B, B excluded)\n"
+            "  --trace-format F    text (default) or json (schema: framework/trace.schema.json)\n"
+            "  --crop X0 Y0 X1 Y1  render only pixels X0 <= x < X1, Y0 <= y < Y1 (0 0 = bottom-left)\n"
             "  --merge -f OUT.(exr|png|hdr) IN.exr...  merge --samples ranges that tile 0..N into OUT\n",
             prog);
 }
@@ -113,6 +118,56 @@ static char *join_args(int argc, char **argv)
     return s;
 }
 
+/* --trace-pixel, --trace-sample, --trace-format and --crop (framework/trace.h): the number of
+ * values the flag argv[i] takes, or -1 when it is none of them; *s says whether they parsed. */
+static int parse_trace_flag(int argc, char **argv, int i, options *o, pl_status *s, pl_diag *d)
+{
+    const char *a = argv[i], *v = i + 1 < argc ? argv[i + 1] : NULL;
+    if (!strcmp(a, "--trace-pixel")) {
+        *s = parse_int("--trace-pixel X", v, 0, 1 << 15, &o->trace_x, d);
+        if (*s == PL_OK) *s = parse_int("--trace-pixel Y", i + 2 < argc ? argv[i + 2] : NULL, 0, 1 << 15, &o->trace_y, d);
+        o->trace = true;
+        return 2;
+    }
+    if (!strcmp(a, "--trace-sample")) {
+        char extra;
+        int n = v ? sscanf(v, "%d:%d%c", &o->trace_first, &o->trace_last, &extra) : 0;
+        if (n == 1) o->trace_last = o->trace_first;
+        else if (n == 2) o->trace_last--;  /* A:B excludes B, like --samples */
+        if ((n != 1 && n != 2) || o->trace_first < 0 || o->trace_last < o->trace_first)
+            *s = pl_fail(d, PL_ERR_INVALID, "--trace-sample: expected K or A:B with 0 <= A < B, got '%s'", v ? v : "nothing");
+        return 1;
+    }
+    if (!strcmp(a, "--trace-format")) {
+        if (!v || (strcmp(v, "text") && strcmp(v, "json")))
+            *s = pl_fail(d, PL_ERR_INVALID, "--trace-format: expected text or json, got '%s'", v ? v : "nothing");
+        o->trace_json = v && !strcmp(v, "json");
+        return 1;
+    }
+    if (strcmp(a, "--crop")) return -1;
+    int *box[4] = {&o->crop_x0, &o->crop_y0, &o->crop_x1, &o->crop_y1};
+    const char *names[4] = {"--crop X0", "--crop Y0", "--crop X1", "--crop Y1"};
+    for (int k = 0; k < 4 && *s == PL_OK; k++)
+        *s = parse_int(names[k], i + 1 + k < argc ? argv[i + 1 + k] : NULL, 0, 1 << 15, box[k], d);
+    o->crop = true;
+    return 4;
+}
+
+/* The trace and crop options against the rest: each one a located refusal. */
+static pl_status check_trace_flags(const options *o, pl_diag *d)
+{
+    if (o->trace && (o->trace_x >= o->width || o->trace_y >= o->height))
+        return pl_fail(d, PL_ERR_INVALID, "--trace-pixel %d %d: outside the %dx%d image (x 0..%d, y 0..%d from the bottom-left)",
+                       o->trace_x, o->trace_y, o->width, o->height, o->width - 1, o->height - 1);
+    if (!o->trace && (o->trace_first || o->trace_last >= 0 || o->trace_json))
+        return pl_fail(d, PL_ERR_INVALID, "--trace-sample and --trace-format need --trace-pixel X Y");
+    if (o->crop && (o->crop_x0 >= o->crop_x1 || o->crop_y0 >= o->crop_y1 || o->crop_x1 > o->width || o->crop_y1 > o->height))
+        return pl_fail(d, PL_ERR_INVALID, "--crop %d %d %d %d: expected X0 < X1 <= %d and Y0 < Y1 <= %d (-r %d %d)", o->crop_x0,
+                       o->crop_y0, o->crop_x1, o->crop_y1, o->width, o->height, o->width, o->height);
+    if (o->crop && o->heatmap) return pl_fail(d, PL_ERR_INVALID, "--crop: --heatmap draws the whole image; use one or the other");
+    return PL_OK;
+}
+
 void cli_free(options *o)
 {
     if (!o) return;
@@ -127,7 +182,7 @@ pl_status cli_parse(int argc, char **argv, options *out, cli_action *action, pl_
     pl_status s = PL_OK;
     /* next(k): the k-th value after the flag at i, or NULL when the command line ends first. */
 #define VALUE(k) (i + (k) < argc ? argv[i + (k)] : NULL)
-    int i;
+    int i, taken;
     for (i = 1; i < argc && s == PL_OK; i++) {
         const char *a = argv[i];
         if (a[0] != '-' || a[1] == '\0') {
@@ -194,6 +249,7 @@ pl_status cli_parse(int argc, char **argv, options *out, cli_action *action, pl_
             i++;
         }
         else if (!strcmp(a, "--heatmap")) { if (!VALUE(1)) s = pl_fail(d, PL_ERR_INVALID, "--heatmap: expected a .png file name"); o.heatmap = VALUE(1); i++; }
+        else if ((taken = parse_trace_flag(argc, argv, i, &o, &s, d)) >= 0) i += taken;
         else return pl_fail(d, PL_ERR_INVALID, "unknown option '%s'", a);
     }
 #undef VALUE
@@ -204,6 +260,7 @@ pl_status cli_parse(int argc, char **argv, options *out, cli_action *action, pl_
                        "how many samples to take, so its renders cannot be split", o.sample_begin, o.sample_end);
     if (o.sample_end > o.spp)
         return pl_fail(d, PL_ERR_INVALID, "--samples %d:%d: B must be at most -s %d", o.sample_begin, o.sample_end, o.spp);
+    if (check_trace_flags(&o, d) != PL_OK) return PL_ERR_INVALID;
     if (o.envmap) return pl_fail(d, PL_ERR_INVALID, "-e %s: environment maps are not supported yet", o.envmap);
     o.command_line = join_args(argc, argv);
     if (!o.command_line) return pl_fail(d, PL_ERR_NOMEM, "out of memory");

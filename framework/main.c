@@ -11,6 +11,7 @@
 #include "output.h"
 #include "file.h"
 #include "range.h"
+#include "trace.h"
 #include <errno.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -40,6 +41,15 @@ static int fail(const char *prog, pl_diag *d, int code)
 {
     fprintf(stderr, "%s: %s\n", prog, d->error);
     return code;
+}
+
+/* --trace-pixel: the pixel's paths on stdout instead of a render (framework/trace.h). */
+static int trace_run(const render_ctx *ctx, const options *o, const char *prog)
+{
+    trace_request req = {o->trace_x, o->trace_y, o->trace_first, o->trace_last, o->trace_json};
+    pl_diag diag = pl_diag_default();
+    if (trace_pixel(ctx, &req, stdout, NULL, &diag) != PL_OK) return fail(prog, &diag, 1);
+    return 0;
 }
 
 /* Everything after the options are parsed; owns no memory the caller must free. The story of a
@@ -83,6 +93,7 @@ static int run(const options *o, const char *prog)
     render_ctx ctx;
     render_ctx_init(&ctx, &s, &a, o);
     if (!o->quiet && isatty(STDERR_FILENO)) ctx.on_progress = print_progress;
+    if (o->trace) { code = trace_run(&ctx, o, prog); goto done; }
 
     /* The heat map is drawn now (it reads the BVH's visit counter) but written with the other files. */
     if (o->heatmap && heatmap_render(&ctx, out.path[OUTPUT_HEATMAP], &heat, &diag) != PL_OK) { code = fail(prog, &diag, 1); goto done; }

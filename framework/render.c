@@ -1,6 +1,7 @@
 /* The render: estimator dispatch and the tiled, multi-threaded pixel loop. */
 #include "render.h"
 #include "counters.h"
+#include "trace.h"
 #include "../parts/part1_raygen/part1.h"  /* call sites: framework/parts.h */
 #include "../parts/part3_direct/part3.h"
 #include "../parts/part4_global/part4.h"
@@ -32,12 +33,29 @@ rng render_rng(const render_ctx *ctx, int x, int y, int sample)
     return rng_for_sample(ctx->opts->seed, pixel, (uint64_t)sample);
 }
 
-bool render_intersect(const render_ctx *ctx, ray *r, hit *h) { return accel_intersect(ctx->accel, r, h); }
-bool render_occluded(const render_ctx *ctx, const ray *r) { return accel_occluded(ctx->accel, r); }
+/* Seam functions (framework/seam.h): with a trace on this thread (trace.h) they log what they
+ * return, and the parts' functions are called through SEAM_RGB, which logs the call and its result. */
+bool render_intersect(const render_ctx *ctx, ray *r, hit *h)
+{
+    return pl_trace ? trace_intersect(ctx, r, h) : accel_intersect(ctx->accel, r, h);
+}
+bool render_occluded(const render_ctx *ctx, const ray *r)
+{
+    return pl_trace ? trace_occluded(ctx, r) : accel_occluded(ctx->accel, r);
+}
+
+#define SEAM_RGB(fn, ctx, r, h, call) \
+    (pl_trace ? trace_leave(PL_SEAM_##fn, (trace_enter(PL_SEAM_##fn, ctx, r, h), (call))) : (call))
+
+static rgb direct_light(const render_ctx *ctx, const ray *r, const hit *h, rng *g)
+{
+    return ctx->opts->hemisphere ? SEAM_RGB(direct_hemisphere, ctx, r, h, direct_hemisphere(ctx, r, h, g))
+                                 : SEAM_RGB(direct_importance, ctx, r, h, direct_importance(ctx, r, h, g));
+}
 
 rgb one_bounce_radiance(const render_ctx *ctx, const ray *r, const hit *h, rng *g)
 {
-    return ctx->opts->hemisphere ? direct_hemisphere(ctx, r, h, g) : direct_importance(ctx, r, h, g);
+    return SEAM_RGB(one_bounce_radiance, ctx, r, h, direct_light(ctx, r, h, g));
 }
 
 rgb radiance_estimate(const render_ctx *ctx, ray *r, rng *g)
@@ -47,15 +65,24 @@ rgb radiance_estimate(const render_ctx *ctx, ray *r, rng *g)
     hit h = {0};
     if (!render_intersect(ctx, r, &h)) return rgb_gray(0.0f);
     const options *o = ctx->opts;
-    if (o->normals) return normal_shade(&h);
+    if (o->normals) return SEAM_RGB(normal_shade, ctx, r, &h, normal_shade(&h));
 
     /* Emission seen directly counts when bounces accumulate, or when it is the only bounce asked for. */
-    rgb L = (o->accumulate || o->max_depth == 0) ? zero_bounce_radiance(ctx, r, &h) : rgb_gray(0.0f);
+    rgb L = (o->accumulate || o->max_depth == 0) ? SEAM_RGB(zero_bounce_radiance, ctx, r, &h, zero_bounce_radiance(ctx, r, &h))
+                                                   : rgb_gray(0.0f);
     if (o->max_depth == 1)
         L = rgb_add(L, one_bounce_radiance(ctx, r, &h, g));
     else if (o->max_depth >= 2)
-        L = rgb_add(L, at_least_one_bounce_radiance(ctx, r, &h, g));
+        L = rgb_add(L, SEAM_RGB(at_least_one_bounce_radiance, ctx, r, &h, at_least_one_bounce_radiance(ctx, r, &h, g)));
     return L;
+}
+
+/* Part 5's stopping rule on the pixel's luminance sums, through the seam. */
+static bool converged(const options *o, const film_pixel *p)
+{
+    double s1 = film_sum_value(p->sum[3]), s2 = film_sum_value(p->sum_sq[3]);
+    bool stop = adaptive_converged((int)p->n, s1, s2, o->adaptive_tol);
+    return pl_trace ? trace_converged((int)p->n, s1, s2, o->adaptive_tol, stop) : stop;
 }
 
 void render_pixel(const render_ctx *ctx, int x, int y, film_pixel *p)
@@ -66,14 +93,15 @@ void render_pixel(const render_ctx *ctx, int x, int y, film_pixel *p)
         /* Everything sample s draws comes from its own stream: no dependence on threads or ranges. */
         rng g = render_rng(ctx, x, y, s);
         vec2 u = o->spp == 1 ? vec2_make(0.5f, 0.5f) : rng_uniform2(&g);  /* one sample: the centre */
+        if (pl_trace) trace_sample_begin(s, u);
         ray r = pixel_sample_ray(&ctx->camera, x, y, ctx->width, ctx->height, u);
+        if (pl_trace) r = trace_camera_ray(r);
         /* A ray spanning no distance is no camera ray: task 1.1 or 1.4 is still a stub (or broken).
          * Show magenta, as every missing part does, rather than a black picture. */
         rgb L = r.max_t > r.min_t ? radiance_estimate(ctx, &r, &g) : rgb_magenta();
+        if (pl_trace) trace_sample_end(L);
         film_pixel_add(p, L);
-        if (o->adaptive && p->n % (uint32_t)batch == 0 &&
-            adaptive_converged((int)p->n, film_sum_value(p->sum[3]), film_sum_value(p->sum_sq[3]), o->adaptive_tol))
-            break;
+        if (o->adaptive && p->n % (uint32_t)batch == 0 && converged(o, p)) break;
     }
 }
 
