@@ -25,6 +25,10 @@ void render_ctx_init(render_ctx *ctx, const scene *s, const accel *a, const opti
     ctx->camera = camera_for_render(s, o);
     ctx->sample_begin = o->sample_end ? o->sample_begin : 0;  /* --samples A:B, else all of -s */
     ctx->sample_end = o->sample_end ? o->sample_end : o->spp;
+    ctx->x0 = o->crop ? o->crop_x0 : 0;
+    ctx->y0 = o->crop ? o->crop_y0 : 0;
+    ctx->x1 = o->crop ? o->crop_x1 : o->width;
+    ctx->y1 = o->crop ? o->crop_y1 : o->height;
 }
 
 rng render_rng(const render_ctx *ctx, int x, int y, int sample)
@@ -123,13 +127,14 @@ typedef struct {
 static void render_tile(render_job *job, int tile)
 {
     const render_ctx *ctx = job->ctx;
-    int x0 = (tile % job->tiles_x) * TILE, y0 = (tile / job->tiles_x) * TILE;
-    int x1 = x0 + TILE < ctx->width ? x0 + TILE : ctx->width;
-    int y1 = y0 + TILE < ctx->height ? y0 + TILE : ctx->height;
+    int x0 = ctx->x0 + (tile % job->tiles_x) * TILE, y0 = ctx->y0 + (tile / job->tiles_x) * TILE;
+    int x1 = x0 + TILE < ctx->x1 ? x0 + TILE : ctx->x1;
+    int y1 = y0 + TILE < ctx->y1 ? y0 + TILE : ctx->y1;
     uint64_t samples = 0;
     for (int y = y0; y < y1; y++)
         for (int x = x0; x < x1; x++) {
-            int index = (ctx->height - 1 - y) * ctx->width + x;  /* pixel y counts from the bottom */
+            /* Pixel y counts from the bottom; the window's top row is stored first. */
+            int index = (ctx->y1 - 1 - y) * (ctx->x1 - ctx->x0) + (x - ctx->x0);
             film_pixel local = {0};
             film_pixel *p = job->out ? &job->out->pixels[index] : &local;
             uint32_t before = p->n, bad_before = p->bad;
@@ -176,8 +181,9 @@ static double now_seconds(void)
 static pl_status render_run(render_job job, render_stats *stats, pl_diag *diag)
 {
     const render_ctx *ctx = job.ctx;
-    job.tiles_x = (ctx->width + TILE - 1) / TILE;
-    job.tiles_total = job.tiles_x * ((ctx->height + TILE - 1) / TILE);
+    int w = ctx->x1 - ctx->x0, h = ctx->y1 - ctx->y0;
+    job.tiles_x = (w + TILE - 1) / TILE;
+    job.tiles_total = job.tiles_x * ((h + TILE - 1) / TILE);
     atomic_init(&job.next_tile, 0);
     atomic_init(&job.tiles_done, 0);
     atomic_init(&job.rays, 0);
@@ -216,17 +222,17 @@ static pl_status render_run(render_job job, render_stats *stats, pl_diag *diag)
         stats->bad_pixels = atomic_load(&job.bad_pixels);
         int first = atomic_load(&job.first_bad);
         /* Report the bad pixel in the same bottom-left coordinates the estimators use. */
-        stats->first_bad_x = stats->bad_pixels ? first % ctx->width : -1;
-        stats->first_bad_y = stats->bad_pixels ? ctx->height - 1 - first / ctx->width : -1;
+        stats->first_bad_x = stats->bad_pixels ? ctx->x0 + first % w : -1;
+        stats->first_bad_y = stats->bad_pixels ? ctx->y1 - 1 - first / w : -1;
     }
     return PL_OK;
 }
 
 pl_status render_film(const render_ctx *ctx, film *out, render_stats *stats, pl_diag *diag)
 {
-    if (out->width != ctx->width || out->height != ctx->height)
+    if (out->width != ctx->x1 - ctx->x0 || out->height != ctx->y1 - ctx->y0)
         return pl_fail(diag, PL_ERR_INVALID, "render_film: film is %dx%d, the render %dx%d",
-                       out->width, out->height, ctx->width, ctx->height);
+                       out->width, out->height, ctx->x1 - ctx->x0, ctx->y1 - ctx->y0);
     render_job job = {.ctx = ctx, .out = out};
     return render_run(job, stats, diag);
 }
@@ -236,9 +242,9 @@ pl_status render_film(const render_ctx *ctx, film *out, render_stats *stats, pl_
  * its mean goes straight to the image: the same values film_to_image would give. */
 pl_status render_image(const render_ctx *ctx, image *out, int *samples_per_pixel, render_stats *stats, pl_diag *diag)
 {
-    if (out->width != ctx->width || out->height != ctx->height)
+    if (out->width != ctx->x1 - ctx->x0 || out->height != ctx->y1 - ctx->y0)
         return pl_fail(diag, PL_ERR_INVALID, "render_image: image is %dx%d, the render %dx%d",
-                       out->width, out->height, ctx->width, ctx->height);
+                       out->width, out->height, ctx->x1 - ctx->x0, ctx->y1 - ctx->y0);
     render_job job = {.ctx = ctx, .image = out, .samples = samples_per_pixel};
     return render_run(job, stats, diag);
 }
