@@ -78,7 +78,12 @@ typedef struct trace_log {
 
 /* ---- output: one line of the tree, as text or as a JSON event ------------------------------- */
 
-static json_t *jv3(float a, float b, float c) { return json_pack("[fff]", (double)a, (double)b, (double)c); }
+/* JSON has no NaN or infinity: such a value is written as the string "nan", "inf" or "-inf". */
+static json_t *jnum(float v)
+{
+    return isfinite(v) ? json_real((double)v) : json_string(isnan(v) ? "nan" : v > 0 ? "inf" : "-inf");
+}
+static json_t *jv3(float a, float b, float c) { return json_pack("[ooo]", jnum(a), jnum(b), jnum(c)); }
 static json_t *jvec(vec3 v) { return jv3(v.x, v.y, v.z); }
 static json_t *jrgb(rgb c) { return jv3(c.r, c.g, c.b); }
 
