@@ -17,7 +17,7 @@ if [ ! -x "$dir/bin/pathtracer" ]; then
     make -C "$dir" -j2 bin/pathtracer > /dev/null
 fi
 now() { date +%s.%N; }
-median() { sort -n | awk '{ v[NR] = $1 } END { print v[int((NR + 1) / 2)] }'; }
+median() { sort -n | awk '{ v[NR] = $1 } END { printf "%.3f", v[int((NR + 1) / 2)] }'; }
 : > "$dir/new.txt"; : > "$dir/old.txt"; : > "$dir/trace.txt"; : > "$dir/total.txt"
 for i in $(seq "$runs"); do
     t0=$(now); bin/pathtracer $flags "$scene"; t1=$(now)
