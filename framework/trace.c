@@ -187,6 +187,9 @@ void trace_enter(pl_seam_id fn, const render_ctx *ctx, const ray *r, const hit *
     else if (fn != PL_SEAM_one_bounce_radiance)
         emit(t, "call", json_pack("{s:s, s:s}", "function", seam_names[fn], "task", seam_tasks[fn]),
              "%s (task %s):", seam_names[fn], seam_tasks[fn]);
+    else
+        emit(t, "call", json_pack("{s:s}", "function", seam_names[fn]),
+             "one_bounce_radiance (the framework's: -H picks direct_hemisphere, else direct_importance):");
     if (t->depth >= MAX_NEST) return;
     trace_frame *f = &t->stack[t->depth++];
     *f = (trace_frame){fn, ctx, *r, *h, pl_todo_count()};
@@ -363,6 +366,7 @@ void trace_light(const light *l, vec3 p, vec2 u, bool ok, const light_sample *ls
     rgb c = rgb_gray(0.0f);
     float cosine = 0.0f;
     bool visible = true;
+    rgb bright = rgb_gray(0.0f);  /* an f above 1/pi, or black */
     if (f && f->fn == PL_SEAM_direct_importance) {
         frame sf = shading_frame(&f->r, &f->h);
         vec3 wo = frame_to_local(&sf, vec3_neg(f->r.d)), wi = frame_to_local(&sf, ls->wi);
@@ -373,6 +377,7 @@ void trace_light(const light *l, vec3 p, vec2 u, bool ok, const light_sample *ls
         if (ls->pdf > 0.0f && cosine > 0.0f && f->h.material >= 0 && f->h.material < s->num_materials) {
             rgb fr = bsdf_f(&s->materials[f->h.material], wo, wi);
             c = rgb_scale(rgb_mul(ls->L, fr), cosine / ls->pdf / (float)n);
+            bright = rgb_max(fr) > 1.0001f * PL_INV_PI ? fr : bright;
         }
         if (visible) t->direct.visible = rgb_add(t->direct.visible, c);
         else t->direct.hidden = rgb_add(t->direct.hidden, c);
@@ -384,6 +389,9 @@ void trace_light(const light *l, vec3 p, vec2 u, bool ok, const light_sample *ls
          "light %ld: direction " V3 ", distance %.6g, pdf %.6g, radiance " V3 ", cos %.5g, %s, adds " V3, index,
          XYZ(ls->wi), (double)ls->dist, (double)ls->pdf, RGB(ls->L), (double)cosine,
          visible ? "visible" : "occluded", RGB(visible ? c : rgb_gray(0)));
+    if (!rgb_is_black(bright))
+        mark(t, "bsdf_f is " V3 " here: a diffuse f is at most 1/pi = 0.3183, or the surface reflects more light "
+             "than it receives", RGB(bright));
 }
 
 void trace_rng(rng before, float value)
