@@ -74,6 +74,7 @@ typedef struct trace_log {
     trace_path path;
     trace_direct direct;
     int marks;
+    int stubs_marked;       /* pl_todo_count() when the last stub was marked */
 } trace_log;
 
 /* ---- output: one line of the tree, as text or as a JSON event ------------------------------- */
@@ -198,10 +199,13 @@ void trace_enter(pl_seam_id fn, const render_ctx *ctx, const ray *r, const hit *
     if (fn == PL_SEAM_direct_importance) t->direct = (trace_direct){rgb_gray(0.0f), rgb_gray(0.0f)};
 }
 
+/* Once per stub call, at the innermost wrapped call it happened in. */
 static void stub_mark(trace_log *t, const trace_frame *f)
 {
-    if (pl_todo_count() > f->todo_before && pl_todo_last())
+    int now = pl_todo_count();
+    if (now > f->todo_before && now > t->stubs_marked && pl_todo_last())
         mark(t, "stub: %s is not implemented yet (its placeholder answer is used)", pl_todo_last());
+    if (now > t->stubs_marked) t->stubs_marked = now;
 }
 
 static void direct_check(trace_log *t, rgb L)

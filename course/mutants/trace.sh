@@ -18,7 +18,8 @@ part1-triangle-normal-not-normalised|-r 64 48 --normals --trace-pixel 30 15 scen
 part3-bsdf-without-pi|-r 64 48 -m 2 --trace-pixel 20 10 scenes/cornell_spheres.dae|throughput above 1 after a diffuse bounce
 part3-shadow-ray-ignored|-r 64 48 -s 4 -m 1 --trace-pixel 20 6 scenes/cornell_spheres.dae|nearer than the light and is still counted
 part3-shadow-ray-hits-light|-r 64 48 -m 1 --trace-pixel 32 30 scenes/cornell_spheres.dae|the light samples add up to
-part4-no-roulette-compensation|-r 64 48 -s 16 -m 8 --trace-pixel 20 10 scenes/cornell_spheres.dae|does not divide the throughput'
+part4-no-roulette-compensation|-r 64 48 -s 16 -m 8 --trace-pixel 20 10 scenes/cornell_spheres.dae|does not divide the throughput
+part5-standard-deviation-not-error|-r 64 48 -s 64 -l 4 -a 8 0.1 -m 1 --trace-pixel 32 30 scenes/cornell_spheres.dae|adaptive_converged says go on'
 echo "$rows" | while IFS='|' read -r name flags expect; do
     dir="$scratch/$name"
     rm -rf "$dir"
