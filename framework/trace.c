@@ -5,8 +5,7 @@
 #include "frame.h"
 #include "sampler.h"
 #include "todo.h"
-#include "../parts/part1_raygen/part1.h"   /* replayed part functions: framework/parts.h */
-#include "../parts/part3_direct/part3.h"
+#include "../parts/part3_direct/part3.h"  /* replayed part functions: framework/parts.h */
 #include "../parts/part4_global/part4.h"
 #include <jansson.h>
 #include <math.h>
