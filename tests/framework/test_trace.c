@@ -255,6 +255,32 @@ static void test_trace_json__follows_its_schema(void **state)
     json_decref(schema);
 }
 
+/* Every bad --trace-* or --crop flag: exit status 2 and a message naming the flag. */
+static void test_pathtracer__bad_trace_and_crop_flags_exit_2(void **state)
+{
+    const char *flags[][2] = {
+        {"--trace-pixel 64 0", "--trace-pixel 64 0: outside the 64x48 image"},
+        {"--trace-pixel 3", "--trace-pixel Y: expected an integer"},
+        {"--trace-pixel 1 1 --trace-sample 5:2", "--trace-sample: expected K or A:B"},
+        {"--trace-pixel 1 1 --trace-format xml", "--trace-format: expected text or json"},
+        {"--trace-sample 2", "--trace-sample and --trace-format need --trace-pixel"},
+        {"--crop 10 10 5 20", "--crop 10 10 5 20: expected X0 < X1"},
+        {"--crop 0 0 65 48", "--crop 0 0 65 48: expected X0 < X1 <= 64"},
+        {"--crop 0 0 8 8 --heatmap /tmp/pathlab-trace-heat.png", "--crop: --heatmap draws the whole image"},
+    };
+    for (size_t i = 0; i < sizeof flags / sizeof flags[0]; i++) {
+        char cmd[512], err[512] = "";
+        snprintf(cmd, sizeof cmd, "bin/pathtracer -r 64 48 %s scenes/cornell_spheres.dae 2>&1 >/dev/null", flags[i][0]);
+        FILE *p = popen(cmd, "r");
+        assert_non_null(p);
+        size_t n = fread(err, 1, sizeof err - 1, p);
+        err[n] = '\0';
+        int status = pclose(p);
+        if (!WIFEXITED(status) || WEXITSTATUS(status) != 2) fail_msg("'%s' exited with %d, expected 2", cmd, WEXITSTATUS(status));
+        if (!strstr(err, flags[i][1])) fail_msg("'%s' said '%s', expected it to say '%s'", cmd, err, flags[i][1]);
+    }
+}
+
 /* The traces the handouts show are what the solution prints today (handout/traces.sh). Only in the
  * course's tree: a student's own correct code may round differently in the last printed digit. */
 static void test_handout__traces_are_current(void **state)
@@ -272,6 +298,7 @@ int trace_tests(void)
         cmocka_unit_test(test_crop__same_pixels_as_the_whole_image),
         cmocka_unit_test(test_pathtracer__crop_exr_matches_the_whole_exr),
         cmocka_unit_test(test_trace_json__follows_its_schema),
+        cmocka_unit_test(test_pathtracer__bad_trace_and_crop_flags_exit_2),
         cmocka_unit_test(test_handout__traces_are_current),
     };
     return cmocka_run_group_tests_name("trace", tests, NULL, NULL);
