@@ -118,6 +118,42 @@ static char *join_args(int argc, char **argv)
     return s;
 }
 
+/* pathlab's long options (all but --threads, --trace-* and --crop): the number of values the flag
+ * argv[i] takes, or -1 when it is none of them; *s says whether they parsed. */
+static int parse_long_flag(int argc, char **argv, int i, options *o, pl_status *s, pl_diag *d)
+{
+#define VALUE(k) (i + (k) < argc ? argv[i + (k)] : NULL)
+    const char *a = argv[i];
+    int taken = 0;
+    if (!strcmp(a, "--seed")) *s = parse_u64(a, VALUE(1), &o->seed, d), taken = 1;
+    else if (!strcmp(a, "--normals")) o->normals = true;
+    else if (!strcmp(a, "--cs184-camera")) o->cs184_framing = true;
+    else if (!strcmp(a, "--no-bvh")) o->linear_scan = true;
+    else if (!strcmp(a, "--no-rr")) o->no_roulette = true;
+    else if (!strcmp(a, "--leaf-size")) *s = parse_int(a, VALUE(1), 1, 255, &o->max_leaf_size, d), taken = 1;
+    else if (!strcmp(a, "--max-primitives")) {
+        int v = 0;
+        *s = parse_int(a, VALUE(1), 1, 1 << 30, &v, d), taken = 1;
+        o->max_primitives = v;
+    }
+    else if (!strcmp(a, "--max-instances")) {
+        int v = 0;
+        *s = parse_int(a, VALUE(1), 1, 1 << 30, &v, d), taken = 1;
+        o->max_instances = v;
+    }
+    else if (!strcmp(a, "--samples")) {
+        char extra;
+        if (!VALUE(1) || sscanf(VALUE(1), "%d:%d%c", &o->sample_begin, &o->sample_end, &extra) != 2 ||
+            o->sample_begin < 0 || o->sample_begin >= o->sample_end)
+            *s = pl_fail(d, PL_ERR_INVALID, "--samples: expected A:B with 0 <= A < B, got '%s'", VALUE(1) ? VALUE(1) : "nothing");
+        taken = 1;
+    }
+    else if (!strcmp(a, "--heatmap")) { if (!VALUE(1)) *s = pl_fail(d, PL_ERR_INVALID, "--heatmap: expected a .png file name"); o->heatmap = VALUE(1); taken = 1; }
+    else taken = -1;
+#undef VALUE
+    return taken;
+}
+
 /* --trace-pixel, --trace-sample, --trace-format and --crop (framework/trace.h): the number of
  * values the flag argv[i] takes, or -1 when it is none of them; *s says whether they parsed. */
 static int parse_trace_flag(int argc, char **argv, int i, options *o, pl_status *s, pl_diag *d)
@@ -165,6 +201,19 @@ static pl_status check_trace_flags(const options *o, pl_diag *d)
         return pl_fail(d, PL_ERR_INVALID, "--crop %d %d %d %d: expected X0 < X1 <= %d and Y0 < Y1 <= %d (-r %d %d)", o->crop_x0,
                        o->crop_y0, o->crop_x1, o->crop_y1, o->width, o->height, o->width, o->height);
     if (o->crop && o->heatmap) return pl_fail(d, PL_ERR_INVALID, "--crop: --heatmap draws the whole image; use one or the other");
+    return PL_OK;
+}
+
+/* The options against each other, once all are read. */
+static pl_status check_options(const options *o, pl_diag *d)
+{
+    if (o->sample_end && o->adaptive)
+        return pl_fail(d, PL_ERR_INVALID, "--samples %d:%d: sample ranges are for fixed-rate renders; -a decides per pixel "
+                       "how many samples to take, so its renders cannot be split", o->sample_begin, o->sample_end);
+    if (o->sample_end > o->spp)
+        return pl_fail(d, PL_ERR_INVALID, "--samples %d:%d: B must be at most -s %d", o->sample_begin, o->sample_end, o->spp);
+    if (check_trace_flags(o, d) != PL_OK) return PL_ERR_INVALID;
+    if (o->envmap) return pl_fail(d, PL_ERR_INVALID, "-e %s: environment maps are not supported yet", o->envmap);
     return PL_OK;
 }
 
@@ -225,43 +274,14 @@ pl_status cli_parse(int argc, char **argv, options *out, cli_action *action, pl_
         else if (!strcmp(a, "-H")) o.hemisphere = true;
         else if (!strcmp(a, "-v")) o.verbose = true;
         else if (!strcmp(a, "-q")) o.quiet = true;
-        else if (!strcmp(a, "--seed")) s = parse_u64(a, VALUE(1), &o.seed, d), i++;
-        else if (!strcmp(a, "--normals")) o.normals = true;
-        else if (!strcmp(a, "--cs184-camera")) o.cs184_framing = true;
-        else if (!strcmp(a, "--no-bvh")) o.linear_scan = true;
-        else if (!strcmp(a, "--no-rr")) o.no_roulette = true;
-        else if (!strcmp(a, "--leaf-size")) s = parse_int(a, VALUE(1), 1, 255, &o.max_leaf_size, d), i++;
-        else if (!strcmp(a, "--max-primitives")) {
-            int v = 0;
-            s = parse_int(a, VALUE(1), 1, 1 << 30, &v, d), i++;
-            o.max_primitives = v;
-        }
-        else if (!strcmp(a, "--max-instances")) {
-            int v = 0;
-            s = parse_int(a, VALUE(1), 1, 1 << 30, &v, d), i++;
-            o.max_instances = v;
-        }
-        else if (!strcmp(a, "--samples")) {
-            char extra;
-            if (!VALUE(1) || sscanf(VALUE(1), "%d:%d%c", &o.sample_begin, &o.sample_end, &extra) != 2 ||
-                o.sample_begin < 0 || o.sample_begin >= o.sample_end)
-                s = pl_fail(d, PL_ERR_INVALID, "--samples: expected A:B with 0 <= A < B, got '%s'", VALUE(1) ? VALUE(1) : "nothing");
-            i++;
-        }
-        else if (!strcmp(a, "--heatmap")) { if (!VALUE(1)) s = pl_fail(d, PL_ERR_INVALID, "--heatmap: expected a .png file name"); o.heatmap = VALUE(1); i++; }
+        else if ((taken = parse_long_flag(argc, argv, i, &o, &s, d)) >= 0) i += taken;
         else if ((taken = parse_trace_flag(argc, argv, i, &o, &s, d)) >= 0) i += taken;
         else return pl_fail(d, PL_ERR_INVALID, "unknown option '%s'", a);
     }
 #undef VALUE
     if (s != PL_OK) return s;
     if (!o.scene_path) return pl_fail(d, PL_ERR_INVALID, "expected a scene file (.dae)");
-    if (o.sample_end && o.adaptive)
-        return pl_fail(d, PL_ERR_INVALID, "--samples %d:%d: sample ranges are for fixed-rate renders; -a decides per pixel "
-                       "how many samples to take, so its renders cannot be split", o.sample_begin, o.sample_end);
-    if (o.sample_end > o.spp)
-        return pl_fail(d, PL_ERR_INVALID, "--samples %d:%d: B must be at most -s %d", o.sample_begin, o.sample_end, o.spp);
-    if (check_trace_flags(&o, d) != PL_OK) return PL_ERR_INVALID;
-    if (o.envmap) return pl_fail(d, PL_ERR_INVALID, "-e %s: environment maps are not supported yet", o.envmap);
+    if (check_options(&o, d) != PL_OK) return PL_ERR_INVALID;
     o.command_line = join_args(argc, argv);
     if (!o.command_line) return pl_fail(d, PL_ERR_NOMEM, "out of memory");
     *out = o;
