@@ -249,8 +249,8 @@ rgb trace_leave(pl_seam_id fn, rgb L)
 ray trace_camera_ray(ray r)
 {
     trace_log *t = pl_trace;
-    emit(t, "camera_ray", json_pack("{s:o, s:o, s:f, s:f}", "origin", jvec(r.o), "direction", jvec(r.d), "min_t",
-                                    (double)r.min_t, "max_t", (double)r.max_t),
+    emit(t, "camera_ray", json_pack("{s:o, s:o, s:o, s:o}", "origin", jvec(r.o), "direction", jvec(r.d), "min_t",
+                                    jnum(r.min_t), "max_t", jnum(r.max_t)),
          "camera ray from " V3 " along " V3 ", t in [%.5g, %.5g]", XYZ(r.o), XYZ(r.d), (double)r.min_t, (double)r.max_t);
     if (!(r.max_t > r.min_t))
         mark(t, "the camera ray spans no distance: pixel_sample_ray or camera_generate_ray is a stub or broken");
@@ -296,9 +296,9 @@ static void describe_hit(trace_log *t, const char *role, const ray *r, bool foun
     const material *m = valid ? &s->materials[h->material] : NULL;
     vec3 p = ray_at(r, h->t);
     emit(t, "hit",
-         json_pack("{s:s, s:o, s:o, s:i, s:s, s:f, s:o, s:o, s:o, s:o}", "role", role, "origin", jvec(r->o), "direction",
+         json_pack("{s:s, s:o, s:o, s:i, s:s, s:o, s:o, s:o, s:o, s:o}", "role", role, "origin", jvec(r->o), "direction",
                    jvec(r->d), "primitive", h->prim, "primitive_kind", tri ? "triangle" : "sphere", "distance",
-                   (double)h->t, "point", jvec(p), "normal", jvec(h->n), "reflectance",
+                   jnum(h->t), "point", jvec(p), "normal", jvec(h->n), "reflectance",
                    jrgb(m ? m->albedo : rgb_gray(0)), "emission", jrgb(m ? m->Le : rgb_gray(0))),
          "%s along " V3 " hits %s %d (material \"%s\") at distance %.6g, point " V3 ", normal " V3
          "; reflectance " V3 ", emission " V3,
@@ -347,8 +347,8 @@ bool trace_occluded(const render_ctx *ctx, const ray *r)
 {
     trace_log *t = pl_trace;
     bool blocked = accel_occluded(ctx->accel, r);
-    emit(t, "shadow_ray", json_pack("{s:o, s:o, s:f, s:f, s:b}", "origin", jvec(r->o), "direction", jvec(r->d), "min_t",
-                                    (double)r->min_t, "max_t", (double)r->max_t, "occluded", blocked),
+    emit(t, "shadow_ray", json_pack("{s:o, s:o, s:o, s:o, s:b}", "origin", jvec(r->o), "direction", jvec(r->d), "min_t",
+                                    jnum(r->min_t), "max_t", jnum(r->max_t), "occluded", blocked),
          "shadow ray along " V3 " for t in [%.5g, %.6g]: %s", XYZ(r->d), (double)r->min_t, (double)r->max_t,
          blocked ? "occluded" : "clear");
     return blocked;
@@ -386,9 +386,9 @@ void trace_light(const light *l, vec3 p, vec2 u, bool ok, const light_sample *ls
         else t->direct.hidden = rgb_add(t->direct.hidden, c);
     }
     emit(t, "light_sample",
-         json_pack("{s:i, s:b, s:o, s:f, s:f, s:o, s:f, s:b, s:o}", "light", (int)index, "ok", 1, "direction", jvec(ls->wi),
-                   "distance", (double)ls->dist, "pdf", (double)ls->pdf, "radiance", jrgb(ls->L), "cosine",
-                   (double)cosine, "occluded", !visible, "contribution", jrgb(visible ? c : rgb_gray(0))),
+         json_pack("{s:i, s:b, s:o, s:o, s:o, s:o, s:o, s:b, s:o}", "light", (int)index, "ok", 1, "direction", jvec(ls->wi),
+                   "distance", jnum(ls->dist), "pdf", jnum(ls->pdf), "radiance", jrgb(ls->L), "cosine",
+                   jnum(cosine), "occluded", !visible, "contribution", jrgb(visible ? c : rgb_gray(0))),
          "light %ld: direction " V3 ", distance %.6g, pdf %.6g, radiance " V3 ", cos %.5g, %s, adds " V3, index,
          XYZ(ls->wi), (double)ls->dist, (double)ls->pdf, RGB(ls->L), (double)cosine,
          visible ? "visible" : "occluded", RGB(visible ? c : rgb_gray(0)));
@@ -424,8 +424,8 @@ static rgb bsdf_step(trace_log *t, vec3 wo, vec3 wi, const char *how)
     rgb factor = pdf > 0.0f ? rgb_scale(fr, wi.z / pdf) : rgb_gray(0.0f);
     rgb beta = rgb_mul(p->beta, factor);
     emit(t, "bsdf_sample",
-         json_pack("{s:o, s:o, s:f, s:f, s:o}", "direction", jvec(wi), "f", jrgb(fr), "pdf", (double)pdf, "cosine",
-                   (double)wi.z, "throughput", jrgb(beta)),
+         json_pack("{s:o, s:o, s:o, s:o, s:o}", "direction", jvec(wi), "f", jrgb(fr), "pdf", jnum(pdf), "cosine",
+                   jnum(wi.z), "throughput", jrgb(beta)),
          "BSDF sample%s: direction " V3 " (local, +z the normal), f " V3 ", pdf %.6g, cos %.5g -> throughput " V3,
          how, XYZ(wi), RGB(fr), (double)pdf, (double)wi.z, RGB(beta));
     if (wi.z <= 0.0f) mark(t, "the bounce direction is below the surface it leaves (cos theta = %.5g)", (double)wi.z);
@@ -449,7 +449,7 @@ static rgb roulette(trace_log *t, rgb beta, bool went_on)
     bool go_at_zero = russian_roulette(&sure, p->bounce + 1, &zero);
     replaying = false;
     float q = go_at_zero && rgb_max(sure) > 0.0f ? rgb_max(beta) / rgb_max(sure) : 0.0f;
-    emit(t, "roulette", json_pack("{s:f, s:f, s:b, s:o}", "u", (double)p->value[2], "probability", (double)q, "continue",
+    emit(t, "roulette", json_pack("{s:o, s:o, s:b, s:o}", "u", jnum(p->value[2]), "probability", jnum(q), "continue",
                                   went_on, "throughput", jrgb(went_on ? after : rgb_gray(0))),
          "Russian roulette before bounce %d: drew %.5g, goes on with probability %.5g -> %s", p->bounce + 1,
          (double)p->value[2], (double)q, went_on ? "continue" : "stop");

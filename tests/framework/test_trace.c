@@ -235,9 +235,9 @@ static void test_trace_json__follows_its_schema(void **state)
     json_error_t err;
     json_t *schema = json_load_file("framework/trace.schema.json", 0, &err);
     if (!schema) fail_msg("framework/trace.schema.json: line %d: %s", err.line, err.text);
-    for (int c = 0; c < 6; c++) {
+    for (int c = 0; c < 7; c++) {  /* 6: directional lights, at infinite distance ("inf") */
         world w;
-        world_open(&w, "scenes/cornell_spheres.dae", config(c));
+        world_open(&w, c < 6 ? "scenes/cornell_spheres.dae" : "scenes/lights_point_dir.dae", config(c < 6 ? c : 2));
         json_t *doc = trace_json(&w, 12, 9);
         if (!validate(doc, schema, schema, "trace")) fail_msg("configuration %d: %s", c, why);
         assert_true(json_array_size(json_object_get(doc, "samples")) > 0);
