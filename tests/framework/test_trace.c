@@ -142,6 +142,38 @@ static void test_pathtracer__crop_exr_matches_the_whole_exr(void **state)
     film_free(&part);
 }
 
+/* The program end to end, as a student would check it: the mean a JSON trace prints is the EXR's
+ * pixel to the bit (JSON reals are printed with enough digits to read back the same float). */
+static void test_pathtracer__traced_mean_is_the_exr_pixel(void **state)
+{
+    const char *common = "bin/pathtracer -q -s 8 -l 2 -m 4 -r 40 30 --seed 11 scenes/cornell_spheres.dae";
+    char cmd[512];
+    snprintf(cmd, sizeof cmd, "%s -t 3 -f /tmp/pathlab-trace-render.exr >/dev/null", common);
+    assert_int_equal(0, system(cmd));
+    film f;
+    exr_info info;
+    pl_diag d = pl_diag_default();
+    assert_int_equal(PL_OK, exr_read("/tmp/pathlab-trace-render.exr", &f, &info, &d));
+    int pixels[][2] = {{3, 27}, {20, 15}, {37, 2}};
+    for (int k = 0; k < 3; k++) {
+        int x = pixels[k][0], y = pixels[k][1];
+        snprintf(cmd, sizeof cmd, "%s --trace-pixel %d %d --trace-format json > /tmp/pathlab-trace.json", common, x, y);
+        assert_int_equal(0, system(cmd));
+        json_error_t err;
+        json_t *doc = json_load_file("/tmp/pathlab-trace.json", 0, &err);
+        if (!doc) fail_msg("the JSON trace does not parse: %s", err.text);
+        rgb want = film_pixel_rgb(&f.pixels[(29 - y) * 40 + x]);
+        json_t *mean = json_object_get(doc, "mean");
+        rgb got = rgb_make((float)json_number_value(json_array_get(mean, 0)), (float)json_number_value(json_array_get(mean, 1)),
+                           (float)json_number_value(json_array_get(mean, 2)));
+        if (memcmp(&want, &got, sizeof want) != 0)
+            fail_msg("pixel (%d, %d): the trace says %.9g %.9g %.9g, the EXR %.9g %.9g %.9g", x, y, got.r, got.g, got.b,
+                     want.r, want.g, want.b);
+        json_decref(doc);
+    }
+    film_free(&f);
+}
+
 /* ---- a JSON Schema validator for the keywords framework/trace.schema.json uses --------------- */
 
 static bool type_is(const json_t *v, const char *type)
@@ -298,6 +330,7 @@ int trace_tests(void)
         cmocka_unit_test(test_crop__same_pixels_as_the_whole_image),
         cmocka_unit_test(test_pathtracer__crop_exr_matches_the_whole_exr),
         cmocka_unit_test(test_trace_json__follows_its_schema),
+        cmocka_unit_test(test_pathtracer__traced_mean_is_the_exr_pixel),
         cmocka_unit_test(test_pathtracer__bad_trace_and_crop_flags_exit_2),
         cmocka_unit_test(test_handout__traces_are_current),
     };
