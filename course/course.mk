@@ -48,7 +48,7 @@ test-slurm:  ## references from a real Slurm job array equal the local ones, byt
 mutants: all  ## each catalogued student bug is caught by its own part's suite
 	@course/mutants/run.sh
 
-trace-mutants: all $(BIN)/strip_solutions  ## each --trace-pixel mark is triggered by a catalogued bug, and none fires on the solution
+trace-mutants: all $(BIN)/strip_solutions $(BIN)/grade  ## each --trace-pixel mark is triggered by a catalogued bug, and none fires on the solution
 	@course/mutants/trace.sh
 
 # Slow: one graded submission per mutant.

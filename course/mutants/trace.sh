@@ -4,7 +4,8 @@
 # catalogued student bug, a trace command and the "!!" line the bug must produce in it. The patch is
 # applied to a scratch copy (as course/mutants/run.sh does), bin/pathtracer built there, and the same
 # command run on the solution must print no "!!" line at all (a mark that fires on correct code is a
-# defect too). Usage: course/mutants/trace.sh           (make trace-mutants)
+# defect too). Last, the grader's pointer: a failing case's --trace-pixel command shows the bug.
+# Usage: course/mutants/trace.sh           (make trace-mutants)
 set -u
 root=$(cd "$(dirname "$0")/../.." && pwd)
 scratch="$root/build/trace-mutants"
@@ -44,4 +45,20 @@ echo "$rows" | while IFS='|' read -r name flags expect; do
     echo "marked  $name: $(echo "$line" | sed 's/^ *//' | cut -c 1-110)"
 done || failed=1
 [ $failed -eq 0 ] && echo "trace marks: every mutant marked, no mark on the solution"
+
+# The grader points at it: a submission with part3-bsdf-without-pi fails its part 3 image cases, and
+# the first --trace-pixel command results.json names, run in that submission's tree, marks the bug.
+name=part3-bsdf-without-pi
+sub="$scratch/grade-$name"
+rm -rf "$sub" && mkdir -p "$sub" && cp -a "$root/parts" "$sub/"
+patch -s -p1 -d "$sub" < "$root/course/mutants/$name.patch"
+"$root/bin/grade" --submission "$sub" --public --parts 3 --out "$sub/out" > "$sub/grade.txt" 2>&1 || true
+cmd=$(grep -o 'bin/pathtracer [^`"\\]*--trace-pixel [0-9]* [0-9]* [^ `"\\]*' "$sub/out/results.json" | head -n 1)
+if [ -z "$cmd" ] || ! grep -q -- '--trace-pixel' "$sub/grade.txt"; then
+    echo "MISSED  grader: no --trace-pixel command in results.json or make grade's output ($sub/out)"; failed=1
+elif ! (cd "$scratch/$name" && $cmd 2>/dev/null | grep -q '^ *!! '); then
+    echo "MISSED  grader: '$cmd' shows no mark in the $name tree"; failed=1
+else
+    echo "pointed grader: results.json names '$cmd', whose trace marks the bug"
+fi
 exit $failed
