@@ -1,8 +1,8 @@
 # Benchmarks: speed figures, never tests. `make bench` runs them all; each prints its figures, and
 # none installs anything or writes a tracked file (bench-bvh's table goes to build/bench/bvh/).
 # BENCH_RUNS=N: runs per figure (median or best, as each says).
-.PHONY: bench bench-bvh bench-grade bench-references bench-load bench-write bench-transport
-bench: bench-bvh bench-grade bench-references bench-load bench-write bench-transport  ## every benchmark (figures, not tests; see bench/RESULTS.md)
+.PHONY: bench bench-bvh bench-grade bench-references bench-load bench-write bench-transport bench-trace
+bench: bench-bvh bench-grade bench-references bench-load bench-write bench-transport bench-trace  ## every benchmark (figures, not tests; see bench/RESULTS.md)
 
 # ---- BVH (part 2): build time, rays per second, whole render; beside Embree when installed -------
 #   Embree (Debian's libembree-dev, used only here) ships no pkg-config file, so its header is the
@@ -63,3 +63,6 @@ bench-write: $(BIN)/write_bench $(BIN)/pathtracer  ## time to write a render's o
 # ---- light transport (parts 3-5): Cornell scenes at 480x360, -s 64 -l 4 -m 5, with relMSE --------
 bench-transport: $(BIN)/pathtracer $(BIN)/imgtool  ## parts 3-5 render times and relMSE against a converged render
 	@BIN=$(BIN) bench/transport.sh
+
+bench-trace: $(BIN)/pathtracer  ## --trace-pixel's cost, and a render with the trace hooks beside one without (BASE=commit)
+	$(Q)sh bench/trace.sh

@@ -1,7 +1,7 @@
 # Instructor-only targets: the release and its proof, the autograder bundle and its end-to-end test,
 # references (locally or on Slurm), mutants and calibration. The student release leaves course/ out,
 # and the Makefile includes this fragment only where it exists.
-.PHONY: release release-check test-autograder references test-slurm mutants grade-mutants calibrate test-judge
+.PHONY: release release-check test-autograder references test-slurm mutants trace-mutants grade-mutants calibrate test-judge
 
 COURSE_TOOL_OBJ := $(addprefix $(BUILD)/framework/,image.o file.o status.o) $(BUILD)/third_party/lodepng/lodepng.o
 
@@ -52,6 +52,9 @@ test-slurm:  ## references from a real Slurm job array equal the local ones, byt
 # ---- mutants: realistic student bugs, kept as patches of the solution ---------------------------
 mutants: all  ## each catalogued student bug is caught by its own part's suite
 	@course/mutants/run.sh
+
+trace-mutants: all $(BIN)/strip_solutions $(BIN)/grade  ## each --trace-pixel mark is triggered by a catalogued bug, and none fires on the solution
+	@course/mutants/trace.sh
 
 # Slow: one graded submission per mutant.
 grade-mutants: $(BIN)/grade $(BIN)/pathtracer  ## grade each catalogued bug: it must lose points on its own part only

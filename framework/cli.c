@@ -25,6 +25,7 @@ options options_default(void)
     o.adaptive_batch = 32;
     o.adaptive_tol = 0.05f;
     o.max_leaf_size = 4;
+    o.trace_last = -1;
     o.max_primitives = DAE_DEFAULT_MAX_PRIMITIVES;  /* the constants, not dae_limits_default(): the grader */
     o.max_instances = DAE_DEFAULT_MAX_INSTANCES;    /* links this file without the scene loader */
     return o;
@@ -60,6 +61,10 @@ void cli_print_usage(FILE *f, const char *prog)
             "  --max-instances N   refuse scenes whose nodes expand to more instances (1000000; guards time)\n"
             "  --heatmap FILE    write a PNG of BVH nodes visited per pixel\n"
             "  --samples A:B     render only samples A..B-1 of -s N (fixed rate; -f x.exr keeps what --merge needs)\n"
+            "  --trace-pixel X Y   print every path of pixel (X, Y) (0 0 = bottom-left), as the render computes it\n"
+            "  --trace-sample K    with --trace-pixel: print only sample K (or samples A:B, B excluded)\n"
+            "  --trace-format F    text (default) or json (schema: framework/trace.schema.json)\n"
+            "  --crop X0 Y0 X1 Y1  render only pixels X0 <= x < X1, Y0 <= y < Y1 (0 0 = bottom-left)\n"
             "  --merge -f OUT.(exr|png|hdr) IN.exr...  merge --samples ranges that tile 0..N into OUT\n"
             "                    (its options in any order: --merge IN.exr... -f OUT also works)\n",
             prog);
@@ -114,6 +119,105 @@ static char *join_args(int argc, char **argv)
     return s;
 }
 
+/* pathlab's long options (all but --threads, --trace-* and --crop): the number of values the flag
+ * argv[i] takes, or -1 when it is none of them; *s says whether they parsed. */
+static int parse_long_flag(int argc, char **argv, int i, options *o, pl_status *s, pl_diag *d)
+{
+#define VALUE(k) (i + (k) < argc ? argv[i + (k)] : NULL)
+    const char *a = argv[i];
+    int taken = 0;
+    if (!strcmp(a, "--seed")) *s = parse_u64(a, VALUE(1), &o->seed, d), taken = 1;
+    else if (!strcmp(a, "--normals")) o->normals = true;
+    else if (!strcmp(a, "--cs184-camera")) o->cs184_framing = true;
+    else if (!strcmp(a, "--no-bvh")) o->linear_scan = true;
+    else if (!strcmp(a, "--no-rr")) o->no_roulette = true;
+    else if (!strcmp(a, "--leaf-size")) *s = parse_int(a, VALUE(1), 1, 255, &o->max_leaf_size, d), taken = 1;
+    else if (!strcmp(a, "--max-primitives")) {
+        int v = 0;
+        *s = parse_int(a, VALUE(1), 1, 1 << 30, &v, d), taken = 1;
+        o->max_primitives = v;
+    }
+    else if (!strcmp(a, "--max-instances")) {
+        int v = 0;
+        *s = parse_int(a, VALUE(1), 1, 1 << 30, &v, d), taken = 1;
+        o->max_instances = v;
+    }
+    else if (!strcmp(a, "--samples")) {
+        char extra;
+        if (!VALUE(1) || sscanf(VALUE(1), "%d:%d%c", &o->sample_begin, &o->sample_end, &extra) != 2 ||
+            o->sample_begin < 0 || o->sample_begin >= o->sample_end)
+            *s = pl_fail(d, PL_ERR_INVALID, "--samples: expected A:B with 0 <= A < B, got '%s'", VALUE(1) ? VALUE(1) : "nothing");
+        taken = 1;
+    }
+    else if (!strcmp(a, "--heatmap")) { if (!VALUE(1)) *s = pl_fail(d, PL_ERR_INVALID, "--heatmap: expected a .png file name"); o->heatmap = VALUE(1); taken = 1; }
+    else taken = -1;
+#undef VALUE
+    return taken;
+}
+
+/* --trace-pixel, --trace-sample, --trace-format and --crop (framework/trace.h): the number of
+ * values the flag argv[i] takes, or -1 when it is none of them; *s says whether they parsed. */
+static int parse_trace_flag(int argc, char **argv, int i, options *o, pl_status *s, pl_diag *d)
+{
+    const char *a = argv[i], *v = i + 1 < argc ? argv[i + 1] : NULL;
+    if (!strcmp(a, "--trace-pixel")) {
+        *s = parse_int("--trace-pixel X", v, 0, 1 << 15, &o->trace_x, d);
+        if (*s == PL_OK) *s = parse_int("--trace-pixel Y", i + 2 < argc ? argv[i + 2] : NULL, 0, 1 << 15, &o->trace_y, d);
+        o->trace = true;
+        return 2;
+    }
+    if (!strcmp(a, "--trace-sample")) {
+        char extra;
+        int n = v ? sscanf(v, "%d:%d%c", &o->trace_first, &o->trace_last, &extra) : 0;
+        if (n == 1) o->trace_last = o->trace_first;
+        else if (n == 2) o->trace_last--;  /* A:B excludes B, like --samples */
+        if ((n != 1 && n != 2) || o->trace_first < 0 || o->trace_last < o->trace_first)
+            *s = pl_fail(d, PL_ERR_INVALID, "--trace-sample: expected K or A:B with 0 <= A < B, got '%s'", v ? v : "nothing");
+        return 1;
+    }
+    if (!strcmp(a, "--trace-format")) {
+        if (!v || (strcmp(v, "text") && strcmp(v, "json")))
+            *s = pl_fail(d, PL_ERR_INVALID, "--trace-format: expected text or json, got '%s'", v ? v : "nothing");
+        o->trace_json = v && !strcmp(v, "json");
+        return 1;
+    }
+    if (strcmp(a, "--crop")) return -1;
+    int *box[4] = {&o->crop_x0, &o->crop_y0, &o->crop_x1, &o->crop_y1};
+    const char *names[4] = {"--crop X0", "--crop Y0", "--crop X1", "--crop Y1"};
+    for (int k = 0; k < 4 && *s == PL_OK; k++)
+        *s = parse_int(names[k], i + 1 + k < argc ? argv[i + 1 + k] : NULL, 0, 1 << 15, box[k], d);
+    o->crop = true;
+    return 4;
+}
+
+/* The trace and crop options against the rest: each one a located refusal. */
+static pl_status check_trace_flags(const options *o, pl_diag *d)
+{
+    if (o->trace && (o->trace_x >= o->width || o->trace_y >= o->height))
+        return pl_fail(d, PL_ERR_INVALID, "--trace-pixel %d %d: outside the %dx%d image (x 0..%d, y 0..%d from the bottom-left)",
+                       o->trace_x, o->trace_y, o->width, o->height, o->width - 1, o->height - 1);
+    if (!o->trace && (o->trace_first || o->trace_last >= 0 || o->trace_json))
+        return pl_fail(d, PL_ERR_INVALID, "--trace-sample and --trace-format need --trace-pixel X Y");
+    if (o->crop && (o->crop_x0 >= o->crop_x1 || o->crop_y0 >= o->crop_y1 || o->crop_x1 > o->width || o->crop_y1 > o->height))
+        return pl_fail(d, PL_ERR_INVALID, "--crop %d %d %d %d: expected X0 < X1 <= %d and Y0 < Y1 <= %d (-r %d %d)", o->crop_x0,
+                       o->crop_y0, o->crop_x1, o->crop_y1, o->width, o->height, o->width, o->height);
+    if (o->crop && o->heatmap) return pl_fail(d, PL_ERR_INVALID, "--crop: --heatmap draws the whole image; use one or the other");
+    return PL_OK;
+}
+
+/* The options against each other, once all are read. */
+static pl_status check_options(const options *o, pl_diag *d)
+{
+    if (o->sample_end && o->adaptive)
+        return pl_fail(d, PL_ERR_INVALID, "--samples %d:%d: sample ranges are for fixed-rate renders; -a decides per pixel "
+                       "how many samples to take, so its renders cannot be split", o->sample_begin, o->sample_end);
+    if (o->sample_end > o->spp)
+        return pl_fail(d, PL_ERR_INVALID, "--samples %d:%d: B must be at most -s %d", o->sample_begin, o->sample_end, o->spp);
+    if (check_trace_flags(o, d) != PL_OK) return PL_ERR_INVALID;
+    if (o->envmap) return pl_fail(d, PL_ERR_INVALID, "-e %s: environment maps are not supported yet", o->envmap);
+    return PL_OK;
+}
+
 void cli_free(options *o)
 {
     if (!o) return;
@@ -128,7 +232,7 @@ pl_status cli_parse(int argc, char **argv, options *out, cli_action *action, pl_
     pl_status s = PL_OK;
     /* next(k): the k-th value after the flag at i, or NULL when the command line ends first. */
 #define VALUE(k) (i + (k) < argc ? argv[i + (k)] : NULL)
-    int i;
+    int i, taken;
     for (i = 1; i < argc && s == PL_OK; i++) {
         const char *a = argv[i];
         if (a[0] != '-' || a[1] == '\0') {
@@ -171,41 +275,14 @@ pl_status cli_parse(int argc, char **argv, options *out, cli_action *action, pl_
         else if (!strcmp(a, "-H")) o.hemisphere = true;
         else if (!strcmp(a, "-v")) o.verbose = true;
         else if (!strcmp(a, "-q")) o.quiet = true;
-        else if (!strcmp(a, "--seed")) s = parse_u64(a, VALUE(1), &o.seed, d), i++;
-        else if (!strcmp(a, "--normals")) o.normals = true;
-        else if (!strcmp(a, "--cs184-camera")) o.cs184_framing = true;
-        else if (!strcmp(a, "--no-bvh")) o.linear_scan = true;
-        else if (!strcmp(a, "--no-rr")) o.no_roulette = true;
-        else if (!strcmp(a, "--leaf-size")) s = parse_int(a, VALUE(1), 1, 255, &o.max_leaf_size, d), i++;
-        else if (!strcmp(a, "--max-primitives")) {
-            int v = 0;
-            s = parse_int(a, VALUE(1), 1, 1 << 30, &v, d), i++;
-            o.max_primitives = v;
-        }
-        else if (!strcmp(a, "--max-instances")) {
-            int v = 0;
-            s = parse_int(a, VALUE(1), 1, 1 << 30, &v, d), i++;
-            o.max_instances = v;
-        }
-        else if (!strcmp(a, "--samples")) {
-            char extra;
-            if (!VALUE(1) || sscanf(VALUE(1), "%d:%d%c", &o.sample_begin, &o.sample_end, &extra) != 2 ||
-                o.sample_begin < 0 || o.sample_begin >= o.sample_end)
-                s = pl_fail(d, PL_ERR_INVALID, "--samples: expected A:B with 0 <= A < B, got '%s'", VALUE(1) ? VALUE(1) : "nothing");
-            i++;
-        }
-        else if (!strcmp(a, "--heatmap")) { if (!VALUE(1)) s = pl_fail(d, PL_ERR_INVALID, "--heatmap: expected a .png file name"); o.heatmap = VALUE(1); i++; }
+        else if ((taken = parse_long_flag(argc, argv, i, &o, &s, d)) >= 0) i += taken;
+        else if ((taken = parse_trace_flag(argc, argv, i, &o, &s, d)) >= 0) i += taken;
         else return pl_fail(d, PL_ERR_INVALID, "unknown option '%s'", a);
     }
 #undef VALUE
     if (s != PL_OK) return s;
     if (!o.scene_path) return pl_fail(d, PL_ERR_INVALID, "expected a scene file (.dae)");
-    if (o.sample_end && o.adaptive)
-        return pl_fail(d, PL_ERR_INVALID, "--samples %d:%d: sample ranges are for fixed-rate renders; -a decides per pixel "
-                       "how many samples to take, so its renders cannot be split", o.sample_begin, o.sample_end);
-    if (o.sample_end > o.spp)
-        return pl_fail(d, PL_ERR_INVALID, "--samples %d:%d: B must be at most -s %d", o.sample_begin, o.sample_end, o.spp);
-    if (o.envmap) return pl_fail(d, PL_ERR_INVALID, "-e %s: environment maps are not supported yet", o.envmap);
+    if (check_options(&o, d) != PL_OK) return PL_ERR_INVALID;
     o.command_line = join_args(argc, argv);
     if (!o.command_line) return pl_fail(d, PL_ERR_NOMEM, "out of memory");
     *out = o;

@@ -4,6 +4,7 @@
 #include "light.h"
 #include "frame.h"
 #include "sampler.h"
+#include "trace.h"
 
 bool light_is_delta(const light *l)
 {
@@ -103,7 +104,7 @@ static bool sample_ambient(const light *l, vec2 u, light_sample *out)
     return out->pdf > 0.0f;
 }
 
-bool light_sample_L(const light *l, vec3 p, vec2 u, light_sample *out)
+static bool sample_light(const light *l, vec3 p, vec2 u, light_sample *out)
 {
     switch (l->kind) {
     case LIGHT_POINT:       return sample_point(l, p, out);
@@ -113,4 +114,12 @@ bool light_sample_L(const light *l, vec3 p, vec2 u, light_sample *out)
     case LIGHT_AMBIENT:     return sample_ambient(l, u, out);
     }
     return false;
+}
+
+/* A seam function (framework/seam.h): a trace of this thread sees every light sample. */
+bool light_sample_L(const light *l, vec3 p, vec2 u, light_sample *out)
+{
+    bool ok = sample_light(l, p, u, out);
+    if (pl_trace) trace_light(l, p, u, ok, out);
+    return ok;
 }

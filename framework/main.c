@@ -11,6 +11,7 @@
 #include "output.h"
 #include "file.h"
 #include "range.h"
+#include "trace.h"
 #include <errno.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -42,47 +43,105 @@ static int fail(const char *prog, pl_diag *d, int code)
     return code;
 }
 
+/* --trace-pixel: the pixel's paths on stdout instead of a render (framework/trace.h). */
+static int trace_run(const render_ctx *ctx, const options *o, const char *prog)
+{
+    trace_request req = {o->trace_x, o->trace_y, o->trace_first, o->trace_last, o->trace_json};
+    pl_diag diag = pl_diag_default();
+    double t0 = now_seconds();
+    if (trace_pixel(ctx, &req, stdout, NULL, &diag) != PL_OK) return fail(prog, &diag, 1);
+    /* -v: the cost of the trace itself, on stderr so the trace stays the same from run to run. */
+    if (o->verbose) fprintf(stderr, "[pathlab] traced pixel (%d, %d) in %.4f s (BVH built in %.4f s)\n", o->trace_x,
+                            o->trace_y, now_seconds() - t0, ctx->accel->build_seconds);
+    return 0;
+}
+
+/* The scene file and, with -c, its camera: exit status 2 for bad input, else 0. */
+static int load(const options *o, scene *s, const char *prog)
+{
+    pl_diag diag = pl_diag_default();
+    dae_limits limits = dae_limits_default();
+    limits.max_primitives = o->max_primitives;
+    limits.max_instances = o->max_instances;
+    if (dae_load_limited(o->scene_path, &limits, s, &diag) != PL_OK) return fail(prog, &diag, 2);
+    if (o->camera_file) {
+        if (camera_file_load(o->camera_file, &s->camera, &diag) != PL_OK) {
+            scene_free(s);
+            return fail(prog, &diag, 2);
+        }
+        s->has_camera = true;
+    }
+    return 0;
+}
+
+/* The summary lines of a render (not with -q). */
+static void print_summary(const options *o, const scene *s, const accel *a, const render_stats *stats,
+                          const output_set *out, double load_seconds, double write_seconds)
+{
+    double secs = stats->seconds > 0 ? stats->seconds : 1e-9;
+    printf("[pathlab] %d primitives (%d triangles, %d spheres), %d lights; loaded in %.4f s\n",
+           scene_prim_count(s), s->num_triangles, s->num_spheres, s->num_lights, load_seconds);
+    if (a->use_bvh) {
+        accel_shape shape = accel_bvh_shape(a);
+        printf("[pathlab] BVH: %d nodes built in %.4f s", shape.nodes, a->build_seconds);
+        if (o->verbose) printf(" (%d leaves, depth %d, leaf size <= %d)", shape.leaves, shape.depth, o->max_leaf_size);
+        printf("\n");
+    }
+    else
+        printf("[pathlab] no BVH (%s): linear scan over every primitive\n",
+               o->linear_scan ? "--no-bvh" : "part 2 not implemented");
+    int w = o->crop ? o->crop_x1 - o->crop_x0 : o->width, h = o->crop ? o->crop_y1 - o->crop_y0 : o->height;
+    printf("[pathlab] rendered %dx%d in %.4f s on %d threads: %llu rays, %.3f million rays/s, %.2f samples/pixel\n",
+           w, h, stats->seconds, o->threads, (unsigned long long)stats->rays, stats->rays / secs * 1e-6,
+           (double)stats->samples / ((double)w * h));
+    if (o->output)
+        printf("[pathlab] wrote %s, %s, %s%s%s in %.4f s\n", out->path[OUTPUT_IMAGE], out->path[OUTPUT_RATE_MAP],
+               out->path[OUTPUT_SIDECAR], o->heatmap ? ", " : "", o->heatmap ? o->heatmap : "", write_seconds);
+    else if (o->heatmap)
+        printf("[pathlab] wrote %s\n", o->heatmap);
+}
+
+/* Image, rate map, heat map and sidecar: encoded in parallel, renamed into place together (the
+ * sidecar last), or none. */
+static pl_status write_outputs(output_set *out, const options *o, const sidecar_info *info, const rate_map *rates,
+                               const exr_image *exr_out, const image *img, const heatmap *heat, pl_diag *diag)
+{
+    if (o->output) {
+        bool exr = file_has_extension(o->output, ".exr"), hdr = file_has_extension(o->output, ".hdr");
+        output_bind(out, OUTPUT_IMAGE, exr ? exr_encode : hdr ? image_encode_hdr : image_encode_png,
+                    exr ? (const void *)exr_out : (const void *)img);
+        output_bind(out, OUTPUT_RATE_MAP, rate_map_encode, rates);
+        output_bind(out, OUTPUT_SIDECAR, sidecar_encode, info);
+    }
+    if (o->heatmap) output_bind(out, OUTPUT_HEATMAP, heatmap_encode, heat);
+    return output_write(out, OUTPUT_IMAGE, OUTPUT_SIDECAR, diag);
+}
+
 /* Everything after the options are parsed; owns no memory the caller must free. The story of a
- * render: plan the outputs, load, build, render, write them as one unit. */
+ * render: plan the outputs, load, build, render (or trace one pixel), write them as one unit. */
 static int run(const options *o, const char *prog)
 {
     pl_diag diag = pl_diag_default();
     output_set out;
-    if (output_plan(&out, o, &diag) != PL_OK) {
-        output_free(&out);
-        return fail(prog, &diag, 2);
-    }
     scene s;
-    int code = 0;
+    int code = output_plan(&out, o, &diag) != PL_OK ? fail(prog, &diag, 2) : 0;
+    double t0 = now_seconds();
+    if (code || (code = load(o, &s, prog)) != 0) {
+        output_free(&out);
+        return code;
+    }
+    double load_seconds = now_seconds() - t0;
     image img = {0};
     film fm = {0};
     int *samples = NULL;
     heatmap heat = {0};
     accel a;
     memset(&a, 0, sizeof a);
-
-    double t0 = now_seconds();
-    dae_limits limits = dae_limits_default();
-    limits.max_primitives = o->max_primitives;
-    limits.max_instances = o->max_instances;
-    if (dae_load_limited(o->scene_path, &limits, &s, &diag) != PL_OK) {
-        output_free(&out);
-        return fail(prog, &diag, 2);
-    }
-    if (o->camera_file) {
-        if (camera_file_load(o->camera_file, &s.camera, &diag) != PL_OK) {
-            scene_free(&s);
-            output_free(&out);
-            return fail(prog, &diag, 2);
-        }
-        s.has_camera = true;
-    }
-    double load_seconds = now_seconds() - t0;
-
     if (accel_build(&a, &s, !o->linear_scan, o->max_leaf_size, &diag) != PL_OK) { code = fail(prog, &diag, 1); goto done; }
     render_ctx ctx;
     render_ctx_init(&ctx, &s, &a, o);
     if (!o->quiet && isatty(STDERR_FILENO)) ctx.on_progress = print_progress;
+    if (o->trace) { code = trace_run(&ctx, o, prog); goto done; }
 
     /* The heat map is drawn now (it reads the BVH's visit counter) but written with the other files. */
     if (o->heatmap && heatmap_render(&ctx, out.path[OUTPUT_HEATMAP], &heat, &diag) != PL_OK) { code = fail(prog, &diag, 1); goto done; }
@@ -90,61 +149,27 @@ static int run(const options *o, const char *prog)
     /* Every pixel's accumulators are kept only for an EXR, which stores them; other renders resolve
      * each pixel into the image as it finishes (render_image): same pixels, 144 bytes a pixel less. */
     bool exr = o->output && file_has_extension(o->output, ".exr");
-    samples = calloc((size_t)o->width * (size_t)o->height, sizeof *samples);
-    if (!samples || image_alloc(&img, o->width, o->height) != PL_OK || (exr && film_alloc(&fm, o->width, o->height) != PL_OK)) {
-        fprintf(stderr, "%s: out of memory for a %dx%d image\n", prog, o->width, o->height);
+    int w = ctx.x1 - ctx.x0, h = ctx.y1 - ctx.y0;  /* the window (--crop), else the image */
+    samples = calloc((size_t)w * (size_t)h, sizeof *samples);
+    if (!samples || image_alloc(&img, w, h) != PL_OK || (exr && film_alloc(&fm, w, h) != PL_OK)) {
+        fprintf(stderr, "%s: out of memory for a %dx%d image\n", prog, w, h);
         code = 1;
         goto done;
     }
     render_stats stats;
     pl_status rendered = exr ? render_film(&ctx, &fm, &stats, &diag) : render_image(&ctx, &img, samples, &stats, &diag);
-    if (rendered != PL_OK || (exr && film_to_image(&fm, &img, samples, &diag) != PL_OK)) {
-        code = fail(prog, &diag, 1);
-        goto done;
-    }
+    if (rendered != PL_OK || (exr && film_to_image(&fm, &img, samples, &diag) != PL_OK)) { code = fail(prog, &diag, 1); goto done; }
     if (stats.bad_pixels)
         fprintf(stderr, "%s: warning: %d pixels have NaN, infinite or negative radiance (first at x=%d y=%d, "
                         "counted from the bottom-left)\n", prog, stats.bad_pixels, stats.first_bad_x, stats.first_bad_y);
-
-    /* Image, rate map, heat map and sidecar: encoded in parallel, renamed into place together (the
-     * sidecar last), or none. */
     double t1 = now_seconds();
-    rate_map rates = {samples, o->width, o->height, o->spp};
+    rate_map rates = {samples, w, h, o->spp};
     sidecar_info info = {&ctx, load_seconds, a.build_seconds, &stats, o->adaptive ? samples : NULL};
     exr_info provenance;
     exr_image exr_out = {&fm, &provenance};
-    if (o->output) {
-        bool hdr = file_has_extension(o->output, ".hdr");
-        if (exr && range_info(o, &provenance, &diag) != PL_OK) { code = fail(prog, &diag, 1); goto done; }
-        output_bind(&out, OUTPUT_IMAGE, exr ? exr_encode : hdr ? image_encode_hdr : image_encode_png,
-                    exr ? (const void *)&exr_out : (const void *)&img);
-        output_bind(&out, OUTPUT_RATE_MAP, rate_map_encode, &rates);
-        output_bind(&out, OUTPUT_SIDECAR, sidecar_encode, &info);
-    }
-    if (o->heatmap) output_bind(&out, OUTPUT_HEATMAP, heatmap_encode, &heat);
-    if (output_write(&out, OUTPUT_IMAGE, OUTPUT_SIDECAR, &diag) != PL_OK) { code = fail(prog, &diag, 1); goto done; }
-    if (!o->quiet) {
-        double secs = stats.seconds > 0 ? stats.seconds : 1e-9;
-        printf("[pathlab] %d primitives (%d triangles, %d spheres), %d lights; loaded in %.4f s\n",
-               scene_prim_count(&s), s.num_triangles, s.num_spheres, s.num_lights, load_seconds);
-        if (a.use_bvh) {
-            accel_shape shape = accel_bvh_shape(&a);
-            printf("[pathlab] BVH: %d nodes built in %.4f s", shape.nodes, a.build_seconds);
-            if (o->verbose) printf(" (%d leaves, depth %d, leaf size <= %d)", shape.leaves, shape.depth, o->max_leaf_size);
-            printf("\n");
-        }
-        else
-            printf("[pathlab] no BVH (%s): linear scan over every primitive\n",
-                   o->linear_scan ? "--no-bvh" : "part 2 not implemented");
-        printf("[pathlab] rendered %dx%d in %.4f s on %d threads: %llu rays, %.3f million rays/s, %.2f samples/pixel\n",
-               o->width, o->height, stats.seconds, o->threads, (unsigned long long)stats.rays, stats.rays / secs * 1e-6,
-               (double)stats.samples / ((double)o->width * o->height));
-        if (o->output)
-            printf("[pathlab] wrote %s, %s, %s%s%s in %.4f s\n", out.path[OUTPUT_IMAGE], out.path[OUTPUT_RATE_MAP],
-                   out.path[OUTPUT_SIDECAR], o->heatmap ? ", " : "", o->heatmap ? o->heatmap : "", now_seconds() - t1);
-        else if (o->heatmap)
-            printf("[pathlab] wrote %s\n", o->heatmap);
-    }
+    if (exr && range_info(o, &provenance, &diag) != PL_OK) { code = fail(prog, &diag, 1); goto done; }
+    if (write_outputs(&out, o, &info, &rates, &exr_out, &img, &heat, &diag) != PL_OK) { code = fail(prog, &diag, 1); goto done; }
+    if (!o->quiet) print_summary(o, &s, &a, &stats, &out, load_seconds, now_seconds() - t1);
 done:
     free(samples);
     heatmap_free(&heat);

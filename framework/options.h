@@ -35,6 +35,12 @@ typedef struct {
     long max_primitives;      /* --max-primitives: the most triangles + spheres a scene may hold (2,000,000) */
     long max_instances;       /* --max-instances: the most node instances a scene may expand to (1,000,000) */
     const char *heatmap;      /* --heatmap FILE.png: BVH nodes visited per pixel */
+    bool trace;               /* --trace-pixel X Y: print that pixel's paths (framework/trace.h), no render */
+    int trace_x, trace_y;     /* the pixel, (0, 0) at the bottom-left */
+    int trace_first, trace_last; /* --trace-sample K or A:B: the samples printed, inclusive (0, -1 = all) */
+    bool trace_json;          /* --trace-format json: one JSON document (framework/trace.schema.json) */
+    bool crop;                /* --crop X0 Y0 X1 Y1: render only pixels X0 <= x < X1, Y0 <= y < Y1 */
+    int crop_x0, crop_y0, crop_x1, crop_y1;
     bool verbose;             /* -v: print build and traversal statistics */
     bool quiet;               /* -q: no progress bar or summary */
     const char *scene_path;   /* the positional argument */

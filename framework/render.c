@@ -1,6 +1,7 @@
 /* The render: estimator dispatch and the tiled, multi-threaded pixel loop. */
 #include "render.h"
 #include "counters.h"
+#include "trace.h"
 #include "../parts/part1_raygen/part1.h"  /* call sites: framework/parts.h */
 #include "../parts/part3_direct/part3.h"
 #include "../parts/part4_global/part4.h"
@@ -24,6 +25,10 @@ void render_ctx_init(render_ctx *ctx, const scene *s, const accel *a, const opti
     ctx->camera = camera_for_render(s, o);
     ctx->sample_begin = o->sample_end ? o->sample_begin : 0;  /* --samples A:B, else all of -s */
     ctx->sample_end = o->sample_end ? o->sample_end : o->spp;
+    ctx->x0 = o->crop ? o->crop_x0 : 0;
+    ctx->y0 = o->crop ? o->crop_y0 : 0;
+    ctx->x1 = o->crop ? o->crop_x1 : o->width;
+    ctx->y1 = o->crop ? o->crop_y1 : o->height;
 }
 
 rng render_rng(const render_ctx *ctx, int x, int y, int sample)
@@ -32,12 +37,29 @@ rng render_rng(const render_ctx *ctx, int x, int y, int sample)
     return rng_for_sample(ctx->opts->seed, pixel, (uint64_t)sample);
 }
 
-bool render_intersect(const render_ctx *ctx, ray *r, hit *h) { return accel_intersect(ctx->accel, r, h); }
-bool render_occluded(const render_ctx *ctx, const ray *r) { return accel_occluded(ctx->accel, r); }
+/* Seam functions (framework/seam.h): with a trace on this thread (trace.h) they log what they
+ * return, and the parts' functions are called through SEAM_RGB, which logs the call and its result. */
+bool render_intersect(const render_ctx *ctx, ray *r, hit *h)
+{
+    return pl_trace ? trace_intersect(ctx, r, h) : accel_intersect(ctx->accel, r, h);
+}
+bool render_occluded(const render_ctx *ctx, const ray *r)
+{
+    return pl_trace ? trace_occluded(ctx, r) : accel_occluded(ctx->accel, r);
+}
+
+#define SEAM_RGB(fn, ctx, r, h, call) \
+    (pl_trace ? trace_leave(PL_SEAM_##fn, (trace_enter(PL_SEAM_##fn, ctx, r, h), (call))) : (call))
+
+static rgb direct_light(const render_ctx *ctx, const ray *r, const hit *h, rng *g)
+{
+    return ctx->opts->hemisphere ? SEAM_RGB(direct_hemisphere, ctx, r, h, direct_hemisphere(ctx, r, h, g))
+                                 : SEAM_RGB(direct_importance, ctx, r, h, direct_importance(ctx, r, h, g));
+}
 
 rgb one_bounce_radiance(const render_ctx *ctx, const ray *r, const hit *h, rng *g)
 {
-    return ctx->opts->hemisphere ? direct_hemisphere(ctx, r, h, g) : direct_importance(ctx, r, h, g);
+    return SEAM_RGB(one_bounce_radiance, ctx, r, h, direct_light(ctx, r, h, g));
 }
 
 rgb radiance_estimate(const render_ctx *ctx, ray *r, rng *g)
@@ -47,15 +69,24 @@ rgb radiance_estimate(const render_ctx *ctx, ray *r, rng *g)
     hit h = {0};
     if (!render_intersect(ctx, r, &h)) return rgb_gray(0.0f);
     const options *o = ctx->opts;
-    if (o->normals) return normal_shade(&h);
+    if (o->normals) return SEAM_RGB(normal_shade, ctx, r, &h, normal_shade(&h));
 
     /* Emission seen directly counts when bounces accumulate, or when it is the only bounce asked for. */
-    rgb L = (o->accumulate || o->max_depth == 0) ? zero_bounce_radiance(ctx, r, &h) : rgb_gray(0.0f);
+    rgb L = (o->accumulate || o->max_depth == 0) ? SEAM_RGB(zero_bounce_radiance, ctx, r, &h, zero_bounce_radiance(ctx, r, &h))
+                                                   : rgb_gray(0.0f);
     if (o->max_depth == 1)
         L = rgb_add(L, one_bounce_radiance(ctx, r, &h, g));
     else if (o->max_depth >= 2)
-        L = rgb_add(L, at_least_one_bounce_radiance(ctx, r, &h, g));
+        L = rgb_add(L, SEAM_RGB(at_least_one_bounce_radiance, ctx, r, &h, at_least_one_bounce_radiance(ctx, r, &h, g)));
     return L;
+}
+
+/* Part 5's stopping rule on the pixel's luminance sums, through the seam. */
+static bool converged(const options *o, const film_pixel *p)
+{
+    double s1 = film_sum_value(p->sum[3]), s2 = film_sum_value(p->sum_sq[3]);
+    bool stop = adaptive_converged((int)p->n, s1, s2, o->adaptive_tol);
+    return pl_trace ? trace_converged((int)p->n, s1, s2, o->adaptive_tol, stop) : stop;
 }
 
 void render_pixel(const render_ctx *ctx, int x, int y, film_pixel *p)
@@ -66,14 +97,15 @@ void render_pixel(const render_ctx *ctx, int x, int y, film_pixel *p)
         /* Everything sample s draws comes from its own stream: no dependence on threads or ranges. */
         rng g = render_rng(ctx, x, y, s);
         vec2 u = o->spp == 1 ? vec2_make(0.5f, 0.5f) : rng_uniform2(&g);  /* one sample: the centre */
+        if (pl_trace) trace_sample_begin(s, u);
         ray r = pixel_sample_ray(&ctx->camera, x, y, ctx->width, ctx->height, u);
+        if (pl_trace) r = trace_camera_ray(r);
         /* A ray spanning no distance is no camera ray: task 1.1 or 1.4 is still a stub (or broken).
          * Show magenta, as every missing part does, rather than a black picture. */
         rgb L = r.max_t > r.min_t ? radiance_estimate(ctx, &r, &g) : rgb_magenta();
+        if (pl_trace) trace_sample_end(L);
         film_pixel_add(p, L);
-        if (o->adaptive && p->n % (uint32_t)batch == 0 &&
-            adaptive_converged((int)p->n, film_sum_value(p->sum[3]), film_sum_value(p->sum_sq[3]), o->adaptive_tol))
-            break;
+        if (o->adaptive && p->n % (uint32_t)batch == 0 && converged(o, p)) break;
     }
 }
 
@@ -95,13 +127,14 @@ typedef struct {
 static void render_tile(render_job *job, int tile)
 {
     const render_ctx *ctx = job->ctx;
-    int x0 = (tile % job->tiles_x) * TILE, y0 = (tile / job->tiles_x) * TILE;
-    int x1 = x0 + TILE < ctx->width ? x0 + TILE : ctx->width;
-    int y1 = y0 + TILE < ctx->height ? y0 + TILE : ctx->height;
+    int x0 = ctx->x0 + (tile % job->tiles_x) * TILE, y0 = ctx->y0 + (tile / job->tiles_x) * TILE;
+    int x1 = x0 + TILE < ctx->x1 ? x0 + TILE : ctx->x1;
+    int y1 = y0 + TILE < ctx->y1 ? y0 + TILE : ctx->y1;
     uint64_t samples = 0;
     for (int y = y0; y < y1; y++)
         for (int x = x0; x < x1; x++) {
-            int index = (ctx->height - 1 - y) * ctx->width + x;  /* pixel y counts from the bottom */
+            /* Pixel y counts from the bottom; the window's top row is stored first. */
+            int index = (ctx->y1 - 1 - y) * (ctx->x1 - ctx->x0) + (x - ctx->x0);
             film_pixel local = {0};
             film_pixel *p = job->out ? &job->out->pixels[index] : &local;
             uint32_t before = p->n, bad_before = p->bad;
@@ -148,8 +181,9 @@ static double now_seconds(void)
 static pl_status render_run(render_job job, render_stats *stats, pl_diag *diag)
 {
     const render_ctx *ctx = job.ctx;
-    job.tiles_x = (ctx->width + TILE - 1) / TILE;
-    job.tiles_total = job.tiles_x * ((ctx->height + TILE - 1) / TILE);
+    int w = ctx->x1 - ctx->x0, h = ctx->y1 - ctx->y0;
+    job.tiles_x = (w + TILE - 1) / TILE;
+    job.tiles_total = job.tiles_x * ((h + TILE - 1) / TILE);
     atomic_init(&job.next_tile, 0);
     atomic_init(&job.tiles_done, 0);
     atomic_init(&job.rays, 0);
@@ -188,17 +222,17 @@ static pl_status render_run(render_job job, render_stats *stats, pl_diag *diag)
         stats->bad_pixels = atomic_load(&job.bad_pixels);
         int first = atomic_load(&job.first_bad);
         /* Report the bad pixel in the same bottom-left coordinates the estimators use. */
-        stats->first_bad_x = stats->bad_pixels ? first % ctx->width : -1;
-        stats->first_bad_y = stats->bad_pixels ? ctx->height - 1 - first / ctx->width : -1;
+        stats->first_bad_x = stats->bad_pixels ? ctx->x0 + first % w : -1;
+        stats->first_bad_y = stats->bad_pixels ? ctx->y1 - 1 - first / w : -1;
     }
     return PL_OK;
 }
 
 pl_status render_film(const render_ctx *ctx, film *out, render_stats *stats, pl_diag *diag)
 {
-    if (out->width != ctx->width || out->height != ctx->height)
+    if (out->width != ctx->x1 - ctx->x0 || out->height != ctx->y1 - ctx->y0)
         return pl_fail(diag, PL_ERR_INVALID, "render_film: film is %dx%d, the render %dx%d",
-                       out->width, out->height, ctx->width, ctx->height);
+                       out->width, out->height, ctx->x1 - ctx->x0, ctx->y1 - ctx->y0);
     render_job job = {.ctx = ctx, .out = out};
     return render_run(job, stats, diag);
 }
@@ -208,9 +242,9 @@ pl_status render_film(const render_ctx *ctx, film *out, render_stats *stats, pl_
  * its mean goes straight to the image: the same values film_to_image would give. */
 pl_status render_image(const render_ctx *ctx, image *out, int *samples_per_pixel, render_stats *stats, pl_diag *diag)
 {
-    if (out->width != ctx->width || out->height != ctx->height)
+    if (out->width != ctx->x1 - ctx->x0 || out->height != ctx->y1 - ctx->y0)
         return pl_fail(diag, PL_ERR_INVALID, "render_image: image is %dx%d, the render %dx%d",
-                       out->width, out->height, ctx->width, ctx->height);
+                       out->width, out->height, ctx->x1 - ctx->x0, ctx->y1 - ctx->y0);
     render_job job = {.ctx = ctx, .image = out, .samples = samples_per_pixel};
     return render_run(job, stats, diag);
 }

@@ -24,6 +24,10 @@ typedef struct render_ctx {
     /* The camera samples to take of every pixel: sample_begin .. sample_end - 1 (--samples A:B;
      * 0 .. opts->spp by default). Sample s is the same whatever range it is rendered in. */
     int sample_begin, sample_end;
+    /* The window rendered: pixels x0 <= x < x1, y0 <= y < y1 (--crop; the whole image by default).
+     * Cameras and random streams are the whole image's, so each pixel is the same as in a full
+     * render; the film or image rendered into is the window's size, top row first. */
+    int x0, y0, x1, y1;
     /* Progress reports while render_image runs (from the calling thread); NULL for none. */
     void (*on_progress)(void *user, int tiles_done, int tiles_total);
     void *progress_user;
@@ -66,12 +70,12 @@ typedef struct {
  * stops when it says so; it never goes past sample_end, so the last batch may be shorter. */
 void render_pixel(const render_ctx *ctx, int x, int y, film_pixel *p);
 
-/* Renders every pixel's samples into out (film_alloc'ed by the caller at ctx->width x
- * ctx->height, zeroed) with opts->threads threads. The same bytes for any thread count. */
+/* Renders every pixel's samples into out (film_alloc'ed by the caller at the window's size,
+ * ctx->x1 - ctx->x0 by ctx->y1 - ctx->y0, zeroed) with opts->threads threads. The same bytes for any thread count. */
 pl_status render_film(const render_ctx *ctx, film *out, render_stats *stats, pl_diag *diag);
 
-/* render_film, then the image of the means into out (allocated by the caller at ctx->width x
- * ctx->height). samples_per_pixel (may be NULL) receives the camera samples each pixel took,
+/* render_film, then the image of the means into out (allocated by the caller at the window's
+ * size). samples_per_pixel (may be NULL) receives the camera samples each pixel took,
  * indexed like the image (top row first). */
 pl_status render_image(const render_ctx *ctx, image *out, int *samples_per_pixel, render_stats *stats, pl_diag *diag);
 

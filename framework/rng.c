@@ -2,6 +2,7 @@
  * Streams are selected by the increment; (seed, pixel, sample) are mixed with SplitMix64 first so
  * that neighbouring pixels and samples get unrelated sequences. */
 #include "rng.h"
+#include "trace.h"
 
 static uint64_t splitmix64(uint64_t x)
 {
@@ -39,4 +40,12 @@ uint32_t rng_u32(rng *r)
 }
 
 /* 24 random bits scaled by 2^-24: exactly representable, so the result is < 1. */
-float rng_uniform(rng *r) { return (float)(rng_u32(r) >> 8) * (1.0f / 16777216.0f); }
+float rng_uniform(rng *r)
+{
+    if (!pl_trace) return (float)(rng_u32(r) >> 8) * (1.0f / 16777216.0f);
+    /* A seam function (framework/seam.h): a trace replays part 4's roulette from the state. */
+    rng before = *r;
+    float v = (float)(rng_u32(r) >> 8) * (1.0f / 16777216.0f);
+    trace_rng(before, v);
+    return v;
+}

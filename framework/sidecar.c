@@ -45,6 +45,7 @@ pl_status sidecar_encode(FILE *f, const void *user, pl_diag *diag)
     const scene *s = ctx->scene;
     accel_shape shape = accel_bvh_shape(ctx->accel);
     double mrays = r->seconds > 0 ? r->rays / r->seconds * 1e-6 : 0.0;
+    int w = ctx->x1 - ctx->x0, h = ctx->y1 - ctx->y0;
     json_t *root = json_pack(
         "{s:s, s:o, s:o, s:o, s:I, s:i, s:i,"
         " s:{s:i, s:i, s:i, s:b, s:b, s:b, s:i, s:f, s:b, s:b, s:i},"
@@ -63,13 +64,15 @@ pl_status sidecar_encode(FILE *f, const void *user, pl_diag *diag)
         "timings_seconds", "load", info->load_seconds, "build", info->build_seconds, "render", r->seconds,
         "rays_traced", (json_int_t)r->rays, "node_visits", (json_int_t)r->node_visits,
         "primitive_tests", (json_int_t)r->prim_tests, "million_rays_per_second", mrays, "camera_samples", (json_int_t)r->samples,
-        "mean_samples_per_pixel", (double)r->samples / ((double)ctx->width * ctx->height), "bad_pixels", r->bad_pixels);
+        "mean_samples_per_pixel", (double)r->samples / ((double)w * h), "bad_pixels", r->bad_pixels);
+    /* --crop: the window rendered; the image and the per-pixel counts are the window's. */
+    if (root && o->crop) json_object_set_new(root, "crop", json_pack("[iiii]", ctx->x0, ctx->y0, ctx->x1, ctx->y1));
     if (root && info->samples_per_pixel) {
         json_t *rows = json_array();
-        for (int y = 0; y < ctx->height && rows; y++) {
+        for (int y = 0; y < h && rows; y++) {
             json_t *row = json_array();
-            for (int x = 0; x < ctx->width && row; x++)
-                json_array_append_new(row, json_integer(info->samples_per_pixel[y * ctx->width + x]));
+            for (int x = 0; x < w && row; x++)
+                json_array_append_new(row, json_integer(info->samples_per_pixel[y * w + x]));
             json_array_append_new(rows, row);
         }
         json_object_set_new(root, "samples_per_pixel", rows);

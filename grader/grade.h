@@ -84,6 +84,9 @@ typedef struct {
     double work, course_work;  /* work_per_ray cases: node visits + primitive tests per camera ray */
     double score;
     char images[3][320];       /* candidate, reference, z-map PNGs, relative to the report folder */
+    /* A failing case: the pixels that differ most from the reference, one line each with the
+     * --trace-pixel command that replays the render of that pixel (framework/trace.h); or "". */
+    char trace[1536];
 } grade_case_result;
 
 typedef struct {

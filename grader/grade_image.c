@@ -116,6 +116,41 @@ static bool scene_for_child(const grade_env *env, int part, const grade_case *k,
     return st == PL_OK;
 }
 
+/* The GRADE_TRACE_PIXELS pixels whose luminance differs most from the reference's, as lines
+ * "pixel (x, y) ...: bin/pathtracer <the case's flags> --trace-pixel x y <scene>" with x, y from
+ * the bottom-left: the command replays exactly the samples the render took of that pixel. */
+#define GRADE_TRACE_PIXELS 3
+static void point_at_pixels(const grade_env *env, const grade_case *k, const image *cand, const image *ref,
+                            grade_case_result *c)
+{
+    int best[GRADE_TRACE_PIXELS];
+    float diff[GRADE_TRACE_PIXELS];
+    for (int i = 0; i < GRADE_TRACE_PIXELS; i++) best[i] = -1, diff[i] = -1.0f;
+    long n = (long)cand->width * cand->height;
+    for (long i = 0; i < n && cand->width == ref->width && cand->height == ref->height; i++) {
+        float d = fabsf(rgb_luminance(cand->pixels[i]) - rgb_luminance(ref->pixels[i]));
+        if (!(d >= 0.0f)) d = INFINITY;  /* a NaN pixel differs most */
+        for (int j = 0; j < GRADE_TRACE_PIXELS; j++)
+            if (d > diff[j]) {  /* insert at j, shifting the smaller ones down */
+                memmove(&diff[j + 1], &diff[j], (GRADE_TRACE_PIXELS - 1 - j) * sizeof *diff);
+                memmove(&best[j + 1], &best[j], (GRADE_TRACE_PIXELS - 1 - j) * sizeof *best);
+                diff[j] = d, best[j] = (int)i;
+                break;
+            }
+    }
+    char flags[512] = "";
+    for (int f = 0, len = 0; f < k->num_flags && len < (int)sizeof flags; f++)
+        len += snprintf(flags + len, sizeof flags - len, "%s ", k->flags[f]);
+    int len = 0;
+    for (int j = 0; j < GRADE_TRACE_PIXELS && best[j] >= 0 && len < (int)sizeof c->trace; j++) {
+        int x = best[j] % cand->width, y = cand->height - 1 - best[j] / cand->width;
+        len += snprintf(c->trace + len, sizeof c->trace - len,
+                        "pixel (%d, %d), luminance off by %.4g: bin/pathtracer %s-r %d %d -s %d --seed %llu "
+                        "--trace-pixel %d %d %s%s\n", x, y, (double)diff[j], flags, k->width, k->height, k->samples,
+                        (unsigned long long)env->seed, x, y, k->scene, k->hidden ? " (a hidden case's scene: not in your tree)" : "");
+    }
+}
+
 void grade_image_case(const grade_env *env, const grade_spec *spec, const char *tree, int part, grade_case_result *c)
 {
     const grade_case *k = c->spec;
@@ -206,6 +241,7 @@ void grade_image_case(const grade_env *env, const grade_spec *spec, const char *
         }
         c->pass = c->v.pass && figures_ok;
         c->score = c->pass ? k->points : 0.0;
+        if (!c->pass) point_at_pixels(env, k, &cand, &refimg, c);
         /* Pictures for the report: candidate, reference, z-map. */
         static const char *const kinds[3] = {"candidate", "reference", "z"};
         for (int i = 0; i < 3; i++) {

@@ -56,6 +56,25 @@ static void case_text(const grade_case_result *c, char *out, size_t size)
     }
 }
 
+/* A failing case's pixels and the commands that trace them (grade_image.c), after its text. */
+static void append_trace(const grade_case_result *c, char *text, size_t size)
+{
+    size_t len = strlen(text);
+    if (c->trace[0] && len < size)
+        snprintf(text + len, size - len, "\n\nThe pixels that differ most, and the command that shows every path of "
+                 "each as your render computed it (handout: \"Debugging with a trace\"):\n\n```\n%s```\n", c->trace);
+}
+
+/* make grade: the same pixels and commands under the table. */
+static void print_trace_pixels(const grade_result *r, FILE *out)
+{
+    for (int i = 0; i < r->num_parts; i++)
+        for (int k = 0; k < r->parts[i].num_cases; k++) {
+            const grade_case_result *c = &r->parts[i].cases[k];
+            if (c->trace[0]) fprintf(out, "part %d, %s: the pixels that differ most:\n%s", r->parts[i].part, c->spec->name, c->trace);
+        }
+}
+
 void grade_print_table(const grade_result *r, FILE *out)
 {
     double total = 0, max = 0;
@@ -74,6 +93,7 @@ void grade_print_table(const grade_result *r, FILE *out)
     }
     fprintf(out, "total%52.1f / %.1f   (seed %llu, %.0f s)\n", total, max, (unsigned long long)r->seed, r->seconds);
     if (r->unprotected[0]) fprintf(out, "unavailable protections: %s\n", r->unprotected);
+    print_trace_pixels(r, out);
 }
 
 /* ---- one function for every string shown -------------------------------------------------------- */
@@ -133,6 +153,7 @@ pl_status grade_write_results_json(const grade_result *r, const char *path, pl_d
             const grade_case_result *c = &p->cases[k];
             snprintf(name, sizeof name, "Part %d: image %s%s", p->part, c->spec->name, c->spec->hidden ? " (hidden)" : "");
             case_text(c, text, sizeof text);
+            append_trace(c, text, sizeof text);
             complete = complete && append_entry(tests, test_entry(name, c->score, c->spec->points, c->pass, text,
                                                                   c->spec->hidden));
         }
@@ -176,6 +197,15 @@ static void html_escape(FILE *f, const char *text)
     }
     if (bold) fputs("</b>", f);
     free(valid);
+}
+
+static void html_trace(FILE *f, const grade_case_result *c)
+{
+    if (!c->trace[0]) return;
+    fprintf(f, "<p>The pixels that differ most, and the command that shows every path of each as your render "
+               "computed it (handout: \"Debugging with a trace\"):</p><pre>");
+    html_escape(f, c->trace);
+    fprintf(f, "</pre>\n");
 }
 
 pl_status grade_write_html(const grade_result *r, const char *folder, pl_diag *diag)
@@ -246,6 +276,7 @@ pl_status grade_write_html(const grade_result *r, const char *folder, pl_diag *d
             fprintf(f, "</i></p><p>");
             html_escape(f, text);
             fprintf(f, "</p>\n");
+            html_trace(f, c);
             if (c->ran && c->images[0][0]) {
                 static const char *const captions[3] = {
                     "your render", "the reference",

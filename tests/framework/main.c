@@ -11,6 +11,7 @@ int dae_tests(void);
 int scenes_tests(void);
 int buf_tests(void);      /* the growable-array helper */
 int file_tests(void);     /* whole-file reads and their refusals */
+int trace_tests(void);    /* --trace-pixel and --crop */
 int bvh_tests(void);      /* the BVH validator (framework/bvh.c) */
 int output_tests(void);   /* a render's outputs as one unit */
 int lights_tests(void);
@@ -37,5 +38,6 @@ int main(void)
     failed += sampler_tests();
     failed += stats_tests();
     failed += bvh_tests();
+    failed += trace_tests();
     return failed ? 1 : 0;
 }

@@ -1,0 +1,64 @@
+#!/bin/sh
+# Test machinery: not part of any assignment.
+# The marks of --trace-pixel (framework/trace.h) against the mutant catalogue: each row below names a
+# catalogued student bug, a trace command and the "!!" line the bug must produce in it. The patch is
+# applied to a scratch copy (as course/mutants/run.sh does), bin/pathtracer built there, and the same
+# command run on the solution must print no "!!" line at all (a mark that fires on correct code is a
+# defect too). Last, the grader's pointer: a failing case's --trace-pixel command shows the bug.
+# Usage: course/mutants/trace.sh           (make trace-mutants)
+set -u
+root=$(cd "$(dirname "$0")/../.." && pwd)
+scratch="$root/build/trace-mutants"
+mkdir -p "$scratch"
+failed=0
+# patch | flags of the trace (scene relative to the root) | text the mark must contain. The row
+# "stub:FILE" strips FILE's solutions as the student release does (a half-written tree) instead.
+rows='stub:parts/part3_direct/direct.c|-r 64 48 -m 1 --trace-pixel 32 30 scenes/cornell_spheres.dae|stub: Part 3, task 3.3: zero_bounce_radiance() is not implemented yet
+part3-emission-signed-cosine|-r 64 48 -m 0 --trace-pixel 32 41 scenes/cornell_spheres.dae|radiance must be finite and not negative
+part3-pdf-zero-with-f|-r 64 48 -m 2 --trace-pixel 20 10 scenes/cornell_spheres.dae|pdf is 0 but f is
+part3-sample-points-into-surface|-r 64 48 -m 2 --trace-pixel 20 10 scenes/cornell_spheres.dae|below the surface it leaves
+part1-triangle-normal-not-normalised|-r 64 48 --normals --trace-pixel 30 15 scenes/cornell_bunny.dae|not 1
+part3-bsdf-without-pi|-r 64 48 -m 2 --trace-pixel 20 10 scenes/cornell_spheres.dae|throughput above 1 after a diffuse bounce
+part3-shadow-ray-ignored|-r 64 48 -s 4 -m 1 --trace-pixel 20 6 scenes/cornell_spheres.dae|nearer than the light and is still counted
+part3-shadow-ray-hits-light|-r 64 48 -m 1 --trace-pixel 32 30 scenes/cornell_spheres.dae|the light samples add up to
+part4-no-roulette-compensation|-r 64 48 -s 16 -m 8 --trace-pixel 20 10 scenes/cornell_spheres.dae|does not divide the throughput
+part5-standard-deviation-not-error|-r 64 48 -s 64 -l 4 -a 8 0.1 -m 1 --trace-pixel 32 30 scenes/cornell_spheres.dae|adaptive_converged says go on'
+echo "$rows" | while IFS='|' read -r name flags expect; do
+    dir="$scratch/$(echo "$name" | tr ':/' '__')"
+    rm -rf "$dir"
+    mkdir -p "$dir"
+    (cd "$root" && cp -a Makefile framework parts tests scenes third_party "$dir"/)
+    [ -d "$root/build/release" ] && mkdir -p "$dir/build" && cp -a "$root/build/release" "$dir/build/"
+    case "$name" in
+    stub:*)
+        file=${name#stub:}
+        "$root/bin/strip_solutions" "$root/$file" "$dir/$file" || { echo "BROKEN  $name: cannot strip $file"; exit 1; } ;;
+    *)
+        if ! patch -s -p1 -d "$dir" < "$root/course/mutants/$name.patch"; then echo "BROKEN  $name: the patch no longer applies"; exit 1; fi
+        touch $(sed -n 's/^+++ b\///p' "$root/course/mutants/$name.patch" | sed "s|^|$dir/|") ;;
+    esac
+    if ! make -C "$dir" --no-print-directory bin/pathtracer > "$dir/log.txt" 2>&1; then echo "BROKEN  $name: does not build"; exit 1; fi
+    clean=$(cd "$root" && bin/pathtracer $flags 2>/dev/null | grep -c '^ *!! ')
+    line=$(cd "$dir" && bin/pathtracer $flags 2>/dev/null | grep -m 1 -F "$expect")
+    if [ "$clean" != 0 ]; then echo "FALSE   $name: the solution's trace has $clean marks: bin/pathtracer $flags"; exit 1; fi
+    if [ -z "$line" ]; then echo "MISSED  $name: no mark containing '$expect' in bin/pathtracer $flags"; exit 1; fi
+    echo "marked  $name: $(echo "$line" | sed 's/^ *//' | cut -c 1-110)"
+done || failed=1
+[ $failed -eq 0 ] && echo "trace marks: every mutant marked, no mark on the solution"
+
+# The grader points at it: a submission with part3-bsdf-without-pi fails its part 3 image cases, and
+# the first --trace-pixel command results.json names, run in that submission's tree, marks the bug.
+name=part3-bsdf-without-pi
+sub="$scratch/grade-$name"
+rm -rf "$sub" && mkdir -p "$sub" && cp -a "$root/parts" "$sub/"
+patch -s -p1 -d "$sub" < "$root/course/mutants/$name.patch"
+"$root/bin/grade" --submission "$sub" --public --parts 3 --out "$sub/out" > "$sub/grade.txt" 2>&1 || true
+cmd=$(grep -o 'bin/pathtracer [^`"\\]*--trace-pixel [0-9]* [0-9]* [^ `"\\]*' "$sub/out/results.json" | head -n 1)
+if [ -z "$cmd" ] || ! grep -q -- '--trace-pixel' "$sub/grade.txt"; then
+    echo "MISSED  grader: no --trace-pixel command in results.json or make grade's output ($sub/out)"; failed=1
+elif ! (cd "$scratch/$name" && $cmd 2>/dev/null | grep -q '^ *!! '); then
+    echo "MISSED  grader: '$cmd' shows no mark in the $name tree"; failed=1
+else
+    echo "pointed grader: results.json names '$cmd', whose trace marks the bug"
+fi
+exit $failed

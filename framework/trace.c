@@ -1,0 +1,544 @@
+/* --trace-pixel: the seam hooks, the replay of what the parts compute between them, and the
+ * printed tree (text or JSON). framework/trace.h explains the approach. */
+#include "trace.h"
+#include "accel.h"
+#include "frame.h"
+#include "sampler.h"
+#include "todo.h"
+#include "../parts/part3_direct/part3.h"  /* replayed part functions: framework/parts.h */
+#include "../parts/part4_global/part4.h"
+#include <jansson.h>
+#include <math.h>
+#include <stdarg.h>
+#include <string.h>
+
+_Thread_local struct trace_log *pl_trace;
+
+#define MAX_NEST 16
+
+/* Set while the trace itself calls a part function: its draws are no part of the render's. */
+static _Thread_local bool replaying;
+
+static const char *const seam_names[] = {
+#define PL_SEAM_NAME(name, extra) #name,
+    PL_SEAM_PART_FUNCTIONS(PL_SEAM_NAME)
+    PL_SEAM_FRAMEWORK_FUNCTIONS(PL_SEAM_NAME)
+#undef PL_SEAM_NAME
+};
+static const char *const seam_tasks[] = {
+#define PL_SEAM_TASK(name, task) task,
+    PL_SEAM_PART_FUNCTIONS(PL_SEAM_TASK)
+#undef PL_SEAM_TASK
+};
+
+/* A part function the framework called and that has not returned yet. */
+typedef struct {
+    pl_seam_id fn;
+    const render_ctx *ctx;  /* as passed (part 4 may pass its own copy with other options) */
+    ray r;
+    hit h;
+    int todo_before;        /* pl_todo_count() at the call: a stub shows as a rise */
+} trace_frame;
+
+/* The replay of one at_least_one_bounce_radiance call: the path as f cos / pdf and the roulette
+ * say it should go, compared with what the part returns. */
+typedef struct {
+    bool active;
+    int bounce;             /* one_bounce_radiance calls so far: the vertex being lit */
+    rgb beta;               /* throughput of the vertex being lit */
+    rgb expected;           /* the sum of what each bounce added */
+    ray cur;                /* the ray that reached the vertex, and its hit */
+    hit at;
+    int draws;              /* random numbers drawn since the vertex's direct light returned */
+    rng state[4];           /* the generator before each of them */
+    float value[4];
+    bool bounced;           /* a bounce ray left since then */
+} trace_path;
+
+/* The replay of one direct_importance call: the light samples' contributions. */
+typedef struct {
+    rgb visible;            /* sum of contributions the framework finds unoccluded */
+    rgb hidden;             /* sum of those that hit something nearer than the light */
+} trace_direct;
+
+typedef struct trace_log {
+    const render_ctx *ctx;
+    trace_request req;
+    FILE *out;
+    bool recording;         /* the current sample is one to print */
+    int sample;
+    json_t *doc, *samples, *events, *checks;  /* JSON mode only */
+    trace_frame stack[MAX_NEST];
+    int depth;
+    trace_path path;
+    trace_direct direct;
+    int marks;
+    int stubs_marked;       /* pl_todo_count() when the last stub was marked */
+} trace_log;
+
+/* ---- output: one line of the tree, as text or as a JSON event ------------------------------- */
+
+/* JSON has no NaN or infinity: such a value is written as the string "nan", "inf" or "-inf". */
+static json_t *jnum(float v)
+{
+    return isfinite(v) ? json_real((double)v) : json_string(isnan(v) ? "nan" : v > 0 ? "inf" : "-inf");
+}
+static json_t *jv3(float a, float b, float c) { return json_pack("[ooo]", jnum(a), jnum(b), jnum(c)); }
+static json_t *jvec(vec3 v) { return jv3(v.x, v.y, v.z); }
+static json_t *jrgb(rgb c) { return jv3(c.r, c.g, c.b); }
+
+/* Prints one line at the current nesting; fields (owned, may be NULL) go into its JSON event. */
+static void emit(trace_log *t, const char *kind, json_t *fields, const char *fmt, ...)
+{
+    if (!t->recording) {
+        json_decref(fields);
+        return;
+    }
+    char line[512];
+    va_list ap;
+    va_start(ap, fmt);
+    vsnprintf(line, sizeof line, fmt, ap);
+    va_end(ap);
+    int level = t->depth + 1;
+    if (!t->doc) {
+        fprintf(t->out, "%*s%s\n", 2 * level, "", line);
+        json_decref(fields);
+        return;
+    }
+    json_t *e = fields ? fields : json_object();
+    json_object_set_new(e, "kind", json_string(kind));
+    json_object_set_new(e, "level", json_integer(level));
+    json_object_set_new(e, "text", json_string(line));
+    json_array_append_new(t->events ? t->events : t->checks, e);
+}
+
+#define V3 "(%.5g, %.5g, %.5g)"
+#define XYZ(v) (double)(v).x, (double)(v).y, (double)(v).z
+#define RGB(c) (double)(c).r, (double)(c).g, (double)(c).b
+
+/* An invariant broken or a replay that disagrees: one line saying what is wrong. */
+static void mark(trace_log *t, const char *fmt, ...)
+{
+    char line[400];
+    va_list ap;
+    va_start(ap, fmt);
+    vsnprintf(line, sizeof line, fmt, ap);
+    va_end(ap);
+    if (t->recording) t->marks++;
+    emit(t, "mark", NULL, "!! %s", line);
+}
+
+static bool rgb_bad(rgb c) { return !rgb_is_finite(c) || c.r < 0.0f || c.g < 0.0f || c.b < 0.0f; }
+
+static void check_radiance(trace_log *t, const char *what, rgb c)
+{
+    if (rgb_bad(c)) mark(t, "%s is " V3 ": radiance must be finite and not negative", what, RGB(c));
+}
+
+/* Within float rounding of each other (sums in another order differ in the last bits). */
+static bool rgb_close(rgb a, rgb b)
+{
+    float d = fmaxf(fabsf(a.r - b.r), fmaxf(fabsf(a.g - b.g), fabsf(a.b - b.b)));
+    return d <= 1e-5f + 1e-3f * fmaxf(rgb_max(a), rgb_max(b));
+}
+
+static trace_frame *top(trace_log *t) { return t->depth ? &t->stack[t->depth - 1] : NULL; }
+static bool in(trace_log *t, pl_seam_id fn) { return t->depth && top(t)->fn == fn; }
+
+/* ---- the pixel loop and the wrapped part functions (render.c calls these) ------------------- */
+
+void trace_sample_begin(int sample, vec2 u)
+{
+    trace_log *t = pl_trace;
+    t->sample = sample;
+    t->recording = sample >= t->req.first && (t->req.last < 0 || sample <= t->req.last);
+    if (!t->recording) return;
+    if (t->doc) {
+        t->events = json_array();
+        json_array_append_new(t->samples, json_pack("{s:i, s:o, s:o}", "index", sample, "u",
+                                                     json_pack("[ff]", (double)u.x, (double)u.y), "events", t->events));
+    }
+    t->depth = -1;  /* the sample's own line sits one level above its events */
+    emit(t, "sample", NULL, "sample %d: offset in the pixel u = (%.5g, %.5g)", sample, (double)u.x, (double)u.y);
+    t->depth = 0;
+}
+
+void trace_sample_end(rgb L)
+{
+    trace_log *t = pl_trace;
+    t->depth = 0;
+    check_radiance(t, "the sample's value", L);
+    emit(t, "value", json_pack("{s:o}", "value", jrgb(L)), "sample %d's value: " V3, t->sample, RGB(L));
+    if (t->doc && t->events) {
+        json_object_set_new(json_array_get(t->samples, json_array_size(t->samples) - 1), "value", jrgb(L));
+        t->events = NULL;
+    }
+    t->recording = false;
+}
+
+void trace_enter(pl_seam_id fn, const render_ctx *ctx, const ray *r, const hit *h)
+{
+    trace_log *t = pl_trace;
+    if (fn == PL_SEAM_one_bounce_radiance && t->path.active && in(t, PL_SEAM_at_least_one_bounce_radiance)) {
+        t->path.bounce++;
+        emit(t, "bounce", json_pack("{s:i, s:o}", "bounce", t->path.bounce, "throughput", jrgb(t->path.beta)),
+             "bounce %d: direct light at this vertex, throughput " V3, t->path.bounce, RGB(t->path.beta));
+    }
+    else if (fn != PL_SEAM_one_bounce_radiance)
+        emit(t, "call", json_pack("{s:s, s:s}", "function", seam_names[fn], "task", seam_tasks[fn]),
+             "%s (task %s):", seam_names[fn], seam_tasks[fn]);
+    else
+        emit(t, "call", json_pack("{s:s}", "function", seam_names[fn]),
+             "one_bounce_radiance (the framework's: -H picks direct_hemisphere, else direct_importance):");
+    if (t->depth >= MAX_NEST) return;
+    trace_frame *f = &t->stack[t->depth++];
+    *f = (trace_frame){fn, ctx, *r, *h, pl_todo_count()};
+    if (fn == PL_SEAM_at_least_one_bounce_radiance)
+        t->path = (trace_path){.active = true, .beta = rgb_gray(1.0f), .cur = *r, .at = *h};
+    if (fn == PL_SEAM_direct_importance) t->direct = (trace_direct){rgb_gray(0.0f), rgb_gray(0.0f)};
+}
+
+/* Once per stub call, at the innermost wrapped call it happened in. */
+static void stub_mark(trace_log *t, const trace_frame *f)
+{
+    int now = pl_todo_count();
+    if (now > f->todo_before && now > t->stubs_marked && pl_todo_last())
+        mark(t, "stub: %s is not implemented yet (its placeholder answer is used)", pl_todo_last());
+    if (now > t->stubs_marked) t->stubs_marked = now;
+}
+
+static void direct_check(trace_log *t, rgb L)
+{
+    trace_direct *d = &t->direct;
+    if (rgb_close(L, d->visible)) return;
+    if (!rgb_is_black(d->hidden) && rgb_close(L, rgb_add(d->visible, d->hidden)))
+        mark(t, "a light sample hits something nearer than the light and is still counted");
+    else
+        mark(t, "the light samples add up to " V3 " but direct_importance returned " V3, RGB(d->visible), RGB(L));
+}
+
+static void path_end(trace_log *t, rgb L);
+
+rgb trace_leave(pl_seam_id fn, rgb L)
+{
+    trace_log *t = pl_trace;
+    if (t->depth == 0) return L;
+    trace_frame *f = top(t);
+    stub_mark(t, f);
+    if (fn == PL_SEAM_at_least_one_bounce_radiance) path_end(t, L);
+    if (fn == PL_SEAM_direct_importance && pl_todo_count() == f->todo_before) direct_check(t, L);
+    check_radiance(t, seam_names[fn], L);
+    if (fn != PL_SEAM_one_bounce_radiance)  /* it returns what direct_* returned, shown already */
+        emit(t, "return", json_pack("{s:s, s:o}", "function", seam_names[fn], "value", jrgb(L)), "%s returns " V3,
+         seam_names[fn], RGB(L));
+    t->depth--;
+    if (fn == PL_SEAM_one_bounce_radiance && t->path.active && in(t, PL_SEAM_at_least_one_bounce_radiance)) {
+        trace_path *p = &t->path;
+        rgb added = rgb_mul(p->beta, L);
+        const options *o = t->stack[t->depth - 1].ctx->opts;
+        bool kept = o->accumulate || p->bounce == o->max_depth;
+        if (kept) p->expected = rgb_add(p->expected, added);
+        emit(t, "added", json_pack("{s:i, s:o, s:b}", "bounce", p->bounce, "added", jrgb(added), "kept", kept),
+             "bounce %d adds throughput x direct = " V3 "%s", p->bounce, RGB(added), kept ? "" : " (not kept: -o 0)");
+        p->draws = 0;
+        p->bounced = false;
+    }
+    return L;
+}
+
+ray trace_camera_ray(ray r)
+{
+    trace_log *t = pl_trace;
+    emit(t, "camera_ray", json_pack("{s:o, s:o, s:o, s:o}", "origin", jvec(r.o), "direction", jvec(r.d), "min_t",
+                                    jnum(r.min_t), "max_t", jnum(r.max_t)),
+         "camera ray from " V3 " along " V3 ", t in [%.5g, %.5g]", XYZ(r.o), XYZ(r.d), (double)r.min_t, (double)r.max_t);
+    if (!(r.max_t > r.min_t))
+        mark(t, "the camera ray spans no distance: pixel_sample_ray or camera_generate_ray is a stub or broken");
+    return r;
+}
+
+/* CS184's stopping rule, recomputed so the check shows its numbers beside the part's verdict. */
+bool trace_converged(int n, double s1, double s2, float tol, bool verdict)
+{
+    trace_log *t = pl_trace;
+    double mean = s1 / n, var = n > 1 ? fmax(0.0, (s2 - s1 * s1 / n) / (n - 1)) : 0.0;
+    double half = 1.96 * sqrt(var / n), bound = tol * mean;
+    bool was = t->recording;
+    json_t *saved = t->events;
+    t->recording = true;
+    t->events = NULL;
+    t->depth = -1;
+    emit(t, "batch_check", json_pack("{s:i, s:f, s:f, s:f, s:b}", "samples", n, "mean", mean, "half_width", half,
+                                     "tolerance", bound, "stop", verdict),
+         "batch check after %d samples: mean luminance %.6g, half-width %.6g, tolerance %.6g -> %s", n, mean, half,
+         bound, verdict ? "stop" : "go on");
+    if (verdict != (half <= bound) && n > 1)
+        mark(t, "adaptive_converged says %s, but I = %.6g %s T * mean = %.6g", verdict ? "stop" : "go on", half,
+             half <= bound ? "<=" : ">", bound);
+    t->depth = 0;
+    t->recording = was;
+    t->events = saved;
+    return verdict;
+}
+
+/* ---- framework functions the parts call ----------------------------------------------------- */
+
+static void describe_hit(trace_log *t, const char *role, const ray *r, bool found, const hit *h)
+{
+    const scene *s = t->ctx->scene;
+    if (!found) {
+        emit(t, "miss", json_pack("{s:s, s:o, s:o}", "role", role, "origin", jvec(r->o), "direction", jvec(r->d)),
+             "%s from " V3 " along " V3 ": misses everything", role, XYZ(r->o), XYZ(r->d));
+        return;
+    }
+    bool tri = h->prim < s->num_triangles;
+    bool valid = h->prim >= 0 && h->prim < scene_prim_count(s) && h->material >= 0 && h->material < s->num_materials;
+    const material *m = valid ? &s->materials[h->material] : NULL;
+    vec3 p = ray_at(r, h->t);
+    emit(t, "hit",
+         json_pack("{s:s, s:o, s:o, s:i, s:s, s:o, s:o, s:o, s:o, s:o}", "role", role, "origin", jvec(r->o), "direction",
+                   jvec(r->d), "primitive", h->prim, "primitive_kind", tri ? "triangle" : "sphere", "distance",
+                   jnum(h->t), "point", jvec(p), "normal", jvec(h->n), "reflectance",
+                   jrgb(m ? m->albedo : rgb_gray(0)), "emission", jrgb(m ? m->Le : rgb_gray(0))),
+         "%s along " V3 " hits %s %d (material \"%s\") at distance %.6g, point " V3 ", normal " V3
+         "; reflectance " V3 ", emission " V3,
+         role, XYZ(r->d), tri ? "triangle" : "sphere", h->prim, m ? m->name : "?", (double)h->t, XYZ(p), XYZ(h->n),
+         RGB(m ? m->albedo : rgb_gray(0)), RGB(m ? m->Le : rgb_gray(0)));
+    float len = vec3_length(h->n);
+    if (!(fabsf(len - 1.0f) <= 1e-3f)) mark(t, "the normal at this hit has length %.6g, not 1", (double)len);
+    if (!valid) mark(t, "the hit names primitive %d, material %d: not in the scene", h->prim, h->material);
+}
+
+static void bounce_ray(trace_log *t, const ray *r);
+
+bool trace_intersect(const render_ctx *ctx, ray *r, hit *h)
+{
+    trace_log *t = pl_trace;
+    const char *role = "camera ray";
+    if (in(t, PL_SEAM_at_least_one_bounce_radiance) && t->path.active) {
+        bounce_ray(t, r);
+        role = "bounce ray";
+    }
+    else if (in(t, PL_SEAM_direct_hemisphere)) {
+        trace_frame *f = top(t);
+        frame sf = shading_frame(&f->r, &f->h);
+        vec3 wi = frame_to_local(&sf, r->d);
+        role = "hemisphere ray";
+        if (wi.z < 0.0f) mark(t, "this ray leaves below the surface (cos theta = %.5g)", (double)wi.z);
+    }
+    else if (t->depth)
+        role = "ray";
+    bool found = accel_intersect(ctx->accel, r, h);
+    describe_hit(t, role, r, found, h);
+    if (found && in(t, PL_SEAM_direct_hemisphere)) {
+        int before = pl_todo_count();
+        rgb Le = zero_bounce_radiance(top(t)->ctx, r, h);
+        if (pl_todo_count() == before)
+            emit(t, "emission", json_pack("{s:o}", "emission", jrgb(Le)), "  emission towards the surface " V3, RGB(Le));
+    }
+    if (role[0] == 'b') {
+        t->path.cur = *r;
+        if (found) t->path.at = *h;
+    }
+    return found;
+}
+
+bool trace_occluded(const render_ctx *ctx, const ray *r)
+{
+    trace_log *t = pl_trace;
+    bool blocked = accel_occluded(ctx->accel, r);
+    emit(t, "shadow_ray", json_pack("{s:o, s:o, s:o, s:o, s:b}", "origin", jvec(r->o), "direction", jvec(r->d), "min_t",
+                                    jnum(r->min_t), "max_t", jnum(r->max_t), "occluded", blocked),
+         "shadow ray along " V3 " for t in [%.5g, %.6g]: %s", XYZ(r->d), (double)r->min_t, (double)r->max_t,
+         blocked ? "occluded" : "clear");
+    return blocked;
+}
+
+/* One light sample, with what it adds by the framework's own visibility test (to dist - EPS_F). */
+void trace_light(const light *l, vec3 p, vec2 u, bool ok, const light_sample *ls)
+{
+    trace_log *t = pl_trace;
+    const scene *s = t->ctx->scene;
+    long index = l - s->lights;
+    if (!ok) {
+        emit(t, "light_sample", json_pack("{s:i, s:b}", "light", (int)index, "ok", 0),
+             "light %ld, u = (%.5g, %.5g): contributes nothing at this point", index, (double)u.x, (double)u.y);
+        return;
+    }
+    trace_frame *f = top(t);
+    rgb c = rgb_gray(0.0f);
+    float cosine = 0.0f;
+    bool visible = true;
+    rgb bright = rgb_gray(0.0f);  /* an f above 1/pi, or black */
+    if (f && f->fn == PL_SEAM_direct_importance) {
+        frame sf = shading_frame(&f->r, &f->h);
+        vec3 wo = frame_to_local(&sf, vec3_neg(f->r.d)), wi = frame_to_local(&sf, ls->wi);
+        cosine = wi.z;
+        int n = light_is_delta(l) ? 1 : (f->ctx->opts->light_samples > 0 ? f->ctx->opts->light_samples : 1);
+        ray probe = ray_make(p, ls->wi, EPS_F, ls->dist - EPS_F);
+        visible = !accel_occluded(t->ctx->accel, &probe);
+        if (ls->pdf > 0.0f && cosine > 0.0f && f->h.material >= 0 && f->h.material < s->num_materials) {
+            rgb fr = bsdf_f(&s->materials[f->h.material], wo, wi);
+            c = rgb_scale(rgb_mul(ls->L, fr), cosine / ls->pdf / (float)n);
+            bright = rgb_max(fr) > 1.0001f * PL_INV_PI ? fr : bright;
+        }
+        if (visible) t->direct.visible = rgb_add(t->direct.visible, c);
+        else t->direct.hidden = rgb_add(t->direct.hidden, c);
+    }
+    emit(t, "light_sample",
+         json_pack("{s:i, s:b, s:o, s:o, s:o, s:o, s:o, s:b, s:o}", "light", (int)index, "ok", 1, "direction", jvec(ls->wi),
+                   "distance", jnum(ls->dist), "pdf", jnum(ls->pdf), "radiance", jrgb(ls->L), "cosine",
+                   jnum(cosine), "occluded", !visible, "contribution", jrgb(visible ? c : rgb_gray(0))),
+         "light %ld: direction " V3 ", distance %.6g, pdf %.6g, radiance " V3 ", cos %.5g, %s, adds " V3, index,
+         XYZ(ls->wi), (double)ls->dist, (double)ls->pdf, RGB(ls->L), (double)cosine,
+         visible ? "visible" : "occluded", RGB(visible ? c : rgb_gray(0)));
+    if (!rgb_is_black(bright))
+        mark(t, "bsdf_f is " V3 " here: a diffuse f is at most 1/pi = 0.3183, or the surface reflects more light "
+             "than it receives", RGB(bright));
+}
+
+void trace_rng(rng before, float value)
+{
+    trace_path *p = &pl_trace->path;
+    if (replaying || !p->active || !in(pl_trace, PL_SEAM_at_least_one_bounce_radiance) || p->draws >= 4) return;
+    p->state[p->draws] = before;
+    p->value[p->draws++] = value;
+}
+
+/* ---- the replay of part 4's path between seam calls ----------------------------------------- */
+
+static const material *material_at(trace_log *t, const hit *h)
+{
+    const scene *s = t->ctx->scene;
+    return h->material >= 0 && h->material < s->num_materials ? &s->materials[h->material] : NULL;
+}
+
+
+/* The BSDF sample that sent wi (local) from the current vertex; returns the new throughput. */
+static rgb bsdf_step(trace_log *t, vec3 wo, vec3 wi, const char *how)
+{
+    trace_path *p = &t->path;
+    const material *m = material_at(t, &p->at);
+    rgb fr = m ? bsdf_f(m, wo, wi) : rgb_gray(0.0f);
+    float pdf = m ? bsdf_pdf(m, wo, wi) : 0.0f;
+    rgb factor = pdf > 0.0f ? rgb_scale(fr, wi.z / pdf) : rgb_gray(0.0f);
+    rgb beta = rgb_mul(p->beta, factor);
+    emit(t, "bsdf_sample",
+         json_pack("{s:o, s:o, s:o, s:o, s:o}", "direction", jvec(wi), "f", jrgb(fr), "pdf", jnum(pdf), "cosine",
+                   jnum(wi.z), "throughput", jrgb(beta)),
+         "BSDF sample%s: direction " V3 " (local, +z the normal), f " V3 ", pdf %.6g, cos %.5g -> throughput " V3,
+         how, XYZ(wi), RGB(fr), (double)pdf, (double)wi.z, RGB(beta));
+    if (wi.z <= 0.0f) mark(t, "the bounce direction is below the surface it leaves (cos theta = %.5g)", (double)wi.z);
+    if (!(pdf > 0.0f) && !rgb_is_black(fr)) mark(t, "pdf is 0 but f is " V3 " (not black)", RGB(fr));
+    bool cosine_pdf = fabsf(pdf - wi.z * PL_INV_PI) <= 1e-3f * pdf;
+    if (m && ((cosine_pdf && rgb_max(factor) > 1.0001f) || rgb_max(fr) > 1.0001f * PL_INV_PI))
+        mark(t, "throughput above 1 after a diffuse bounce: f cos / pdf = " V3 ", f = " V3 " (a diffuse f is at most 1/pi)",
+             RGB(factor), RGB(fr));
+    return beta;
+}
+
+/* Replays russian_roulette with the generator as it was before its draw (draw 3 of the vertex). */
+static rgb roulette(trace_log *t, rgb beta, bool went_on)
+{
+    trace_path *p = &t->path;
+    if (p->draws < 3) return beta;
+    rgb after = beta, sure = beta;
+    rng before = p->state[2], zero = {0, 1};  /* a generator whose first draw is exactly 0 */
+    replaying = true;
+    bool go = russian_roulette(&after, p->bounce + 1, &before);
+    bool go_at_zero = russian_roulette(&sure, p->bounce + 1, &zero);
+    replaying = false;
+    float q = go_at_zero && rgb_max(sure) > 0.0f ? rgb_max(beta) / rgb_max(sure) : 0.0f;
+    emit(t, "roulette", json_pack("{s:o, s:o, s:b, s:o}", "u", jnum(p->value[2]), "probability", jnum(q), "continue",
+                                  went_on, "throughput", jrgb(went_on ? after : rgb_gray(0))),
+         "Russian roulette before bounce %d: drew %.5g, goes on with probability %.5g -> %s", p->bounce + 1,
+         (double)p->value[2], (double)q, went_on ? "continue" : "stop");
+    if (go != went_on)
+        mark(t, "russian_roulette replayed with the throughput f cos / pdf gives says %s, the path did %s",
+             go ? "continue" : "stop", went_on ? "continue" : "stop");
+    if (!go && q >= 0.9999f && p->value[2] > 0.0f)
+        mark(t, "russian_roulette ends paths but does not divide the throughput of those that go on by its probability");
+    if (went_on && go) emit(t, "throughput", json_pack("{s:o}", "throughput", jrgb(after)), "throughput / probability = " V3, RGB(after));
+    return after;
+}
+
+static void bounce_ray(trace_log *t, const ray *r)
+{
+    trace_path *p = &t->path;
+    frame sf = shading_frame(&p->cur, &p->at);
+    vec3 wo = frame_to_local(&sf, vec3_neg(p->cur.d)), wi = frame_to_local(&sf, r->d);
+    p->beta = roulette(t, bsdf_step(t, wo, wi, ""), true);
+    p->bounced = true;
+}
+
+static void path_end(trace_log *t, rgb L)
+{
+    trace_path *p = &t->path;
+    if (!p->bounced && p->draws >= 2 && material_at(t, &p->at)) {
+        /* The path ended after drawing its next direction: replay bsdf_sample_f with those numbers. */
+        frame sf = shading_frame(&p->cur, &p->at);
+        vec3 wo = frame_to_local(&sf, vec3_neg(p->cur.d)), wi;
+        float pdf;
+        replaying = true;
+        (void)bsdf_sample_f(material_at(t, &p->at), wo, vec2_make(p->value[0], p->value[1]), &wi, &pdf);
+        replaying = false;
+        rgb beta = bsdf_step(t, wo, wi, " (replayed; the path ends after it)");
+        roulette(t, beta, false);
+    }
+    p->active = false;
+    if (pl_todo_count() == t->stack[t->depth - 1].todo_before && !rgb_close(L, p->expected))
+        mark(t, "the bounces add up to " V3 " but at_least_one_bounce_radiance returned " V3
+             ": the throughput is not the product of f cos / pdf over the roulette's probabilities", RGB(p->expected), RGB(L));
+}
+
+/* ---- the driver ----------------------------------------------------------------------------- */
+
+static void summary(trace_log *t, const film_pixel *px)
+{
+    rgb mean = film_pixel_rgb(px);
+    rgb var = rgb_make((float)film_pixel_variance_of_mean(px, 0), (float)film_pixel_variance_of_mean(px, 1),
+                       (float)film_pixel_variance_of_mean(px, 2));
+    if (t->doc) {
+        json_object_set_new(t->doc, "mean", jrgb(mean));
+        json_object_set_new(t->doc, "variance_of_mean", jrgb(var));
+        json_object_set_new(t->doc, "sample_count", json_integer(px->n));
+        json_object_set_new(t->doc, "bad_samples", json_integer(px->bad));
+        json_object_set_new(t->doc, "marks", json_integer(t->marks));
+        return;
+    }
+    fprintf(t->out, "pixel (%d, %d): %u samples, mean %.9g %.9g %.9g (the image's value), variance of the mean %.5g %.5g %.5g\n",
+            t->req.x, t->req.y, px->n, RGB(mean), RGB(var));
+    if (px->bad) fprintf(t->out, "  %u samples were NaN, infinite or negative: the image counts them as black\n", px->bad);
+    fprintf(t->out, "%d line%s marked !! above\n", t->marks, t->marks == 1 ? "" : "s");
+}
+
+pl_status trace_pixel(const render_ctx *ctx, const trace_request *req, FILE *out, trace_result *result, pl_diag *diag)
+{
+    if (req->x < 0 || req->y < 0 || req->x >= ctx->width || req->y >= ctx->height)
+        return pl_fail(diag, PL_ERR_INVALID, "--trace-pixel %d %d: outside the %dx%d image (x 0..%d, y 0..%d from the bottom-left)",
+                       req->x, req->y, ctx->width, ctx->height, ctx->width - 1, ctx->height - 1);
+    trace_log t = {.ctx = ctx, .req = *req, .out = out};
+    if (req->json) {
+        t.samples = json_array();
+        t.checks = json_array();
+        t.doc = json_pack("{s:s, s:[ii], s:s, s:I, s:o, s:o}", "format", "pathlab-trace-1", "pixel", req->x, req->y,
+                          "command", ctx->opts->command_line ? ctx->opts->command_line : "", "seed",
+                          (json_int_t)ctx->opts->seed, "samples", t.samples, "batch_checks", t.checks);
+    }
+    else
+        fprintf(out, "pixel (%d, %d) of %s, %dx%d, seed %llu (counted from the bottom-left; lines marked !! break a rule)\n",
+                req->x, req->y, ctx->scene->path, ctx->width, ctx->height, (unsigned long long)ctx->opts->seed);
+    film_pixel px = {0};
+    pl_trace = &t;
+    render_pixel(ctx, req->x, req->y, &px);
+    pl_trace = NULL;
+    summary(&t, &px);
+    pl_status st = PL_OK;
+    if (t.doc) {
+        if (json_dumpf(t.doc, out, JSON_INDENT(1)) != 0) st = pl_fail(diag, PL_ERR_IO, "--trace-format json: could not write");
+        fputc('\n', out);
+        json_decref(t.doc);
+    }
+    if (result) *result = (trace_result){px, t.marks};
+    return st;
+}

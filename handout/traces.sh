@@ -1,0 +1,54 @@
+#!/bin/sh
+# The traces the handouts show (section "Debugging with a trace" of handout/part1.md .. part5.md). A
+# block in a handout is written as
+#     <!-- trace: ARGS -->
+#     ```text
+#     ...the output of bin/pathtracer ARGS...
+#     ```
+# and this script either rewrites every block from a fresh run of the course's solution (--write), or
+# checks that each is what the run prints today (--check, the default: a handout's trace cannot go
+# stale). handout/figures.sh calls it with --out to keep each part's traces under out/figures/.
+# Usage: handout/traces.sh [--check | --write | --out DIR]
+set -eu
+cd "$(dirname "$0")/.."
+BIN=${BIN:-bin}
+mode=${1:---check}
+${MAKE:-make} --no-print-directory -s "$BIN/pathtracer"
+status=0
+for md in handout/part1.md handout/part2.md handout/part3.md handout/part4.md handout/part5.md; do
+    part=$(basename "$md" .md)
+    n=0
+    grep -n '^<!-- trace: .* -->$' "$md" | while IFS=: read -r line rest; do
+        args=$(echo "$rest" | sed 's/^<!-- trace: \(.*\) -->$/\1/')
+        n=$((n + 1))
+        got=$(mktemp)
+        # shellcheck disable=SC2086  # the arguments are words on purpose
+        "$BIN/pathtracer" $args > "$got"
+        case "$mode" in
+        --out)
+            mkdir -p "${2:-out/figures}/$part"
+            cp "$got" "${2:-out/figures}/$part/trace$n.txt"
+            echo "$BIN/pathtracer $args > ${2:-out/figures}/$part/trace$n.txt" ;;
+        --write)
+            # Replace the fenced block after the marker line with the fresh output.
+            awk -v start="$line" -v file="$got" '
+                NR == start + 1 { print "```text"; while ((getline l < file) > 0) print l; skipping = 1; next }
+                skipping && /^```$/ { print; skipping = 0; next }
+                !skipping { print }' "$md" > "$md.tmp" && mv "$md.tmp" "$md"
+            echo "wrote $md:$line" ;;
+        *)
+            shown=$(mktemp)
+            awk -v start="$line" 'NR > start + 1 && /^```$/ { exit } NR > start + 1 { print }' "$md" > "$shown"
+            if ! cmp -s "$shown" "$got"; then
+                echo "$md:$line: the trace differs from what 'bin/pathtracer $args' prints now (handout/traces.sh --write):"
+                diff "$shown" "$got" | head -5
+                rm -f "$shown" "$got"
+                exit 1
+            fi
+            rm -f "$shown" ;;
+        esac
+        rm -f "$got"
+    done || status=1
+done
+[ "$mode" = --check ] && [ $status -eq 0 ] && echo "handout traces: every one is what bin/pathtracer prints"
+exit $status
