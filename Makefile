@@ -167,7 +167,7 @@ clean:  ## remove build/, bin/ and release/
 # `make help`: every `target: ... ## text` line and every `## target: text` line of the makefiles
 # read, in the order read, so a new target documents itself where it is defined.
 help:  ## this list
-	@echo "pathlab targets (settings: V=1 full commands, WERROR=1, SAN=1, OPT=-O0):"
+	@echo "pathlab targets (settings: V=1 full commands, WERROR=1, SAN=1, OPT=-O0, STB=vendored):"
 	@awk -F'## ' '/^[$$()A-Za-z0-9_.%<>\/-]+:[^=]*## / { split($$1, t, ":"); sub(/^\$$\(BIN\)/, "$(BIN)", t[1]); \
 	                                                     printf "  make %-22s %s\n", t[1], $$2; next } \
 	              /^## [^:]+: / { s = $$2; i = index(s, ": "); printf "  make %-22s %s\n", substr(s, 1, i - 1), substr(s, i + 2) }' \

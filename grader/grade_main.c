@@ -83,6 +83,14 @@ static int calibrate(const grade_env *base, const grade_spec *spec, const char *
     return worst > 0;
 }
 
+/* Whether this machine confines student code as the autograder does (namespaces). A student's
+ * laptop often cannot (macOS, a user without privileges): make grade then runs their own code
+ * unconfined, which is safe for their own code and gives the same verdicts. */
+static bool sandbox_confines(const grade_sandbox *s)
+{
+    return s->no_network;
+}
+
 /* mkdir -p: the default out/grade may be the first thing made under out/. */
 static bool make_dir(const char *path)
 {
@@ -147,6 +155,9 @@ int main(int argc, char **argv)
     }
     /* A student's own tree is their code on their machine: containment is the autograder's concern. */
     if (submission) grade_sandbox_describe(&env.sandbox, result.unprotected, sizeof result.unprotected);
+    else if (!sandbox_confines(&env.sandbox))
+        fprintf(stderr, "grade: no sandbox on this machine: your own code runs unconfined; "
+                        "your official grade comes from the autograder\n");
     if (result.unprotected[0]) fprintf(stderr, "grade: unavailable protections: %s\n", result.unprotected);
     if (calibrate_runs > 0) {
         int code = calibrate(&env, &spec, parts, calibrate_runs);
