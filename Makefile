@@ -55,6 +55,9 @@ FEATURES := -D_POSIX_C_SOURCE=200809L
 XOPEN_SRC := framework/output.c grader/grade_main.c
 # The autograder's Linux-only sandbox code (namespaces, setgroups, pipe2): glibc's extensions.
 LINUX_SRC := grader/grade_run.c
+# Their objects in any build folder (build/release, build/san, build/fuzz) take these instead.
+$(addprefix %/,$(XOPEN_SRC:.c=.o)): FEATURES += -D_XOPEN_SOURCE=700
+$(addprefix %/,$(LINUX_SRC:.c=.o)): FEATURES := -D_GNU_SOURCE
 # Apple's headers hide some names (PATH_MAX, RTLD_NEXT, sysconf's _SC_PHYS_PAGES) under a strict
 # _POSIX_C_SOURCE that glibc shows; _DARWIN_C_SOURCE shows them again.
 ifeq ($(shell uname -s),Darwin)
@@ -87,9 +90,6 @@ else
   BUILD    := build/release
   BIN      := bin
 endif
-# The files named above, after BUILD is known (a target's own value wins over the global one).
-$(XOPEN_SRC:%.c=$(BUILD)/%.o): FEATURES += -D_XOPEN_SOURCE=700
-$(LINUX_SRC:%.c=$(BUILD)/%.o): FEATURES := -D_GNU_SOURCE
 ifeq ($(V),1)
   Q :=
   say = @true
