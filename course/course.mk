@@ -1,7 +1,7 @@
 # Instructor-only targets: the release and its proof, the autograder bundle and its end-to-end test,
 # references (locally or on Slurm), mutants and calibration. The student release leaves course/ out,
 # and the Makefile includes this fragment only where it exists.
-.PHONY: release release-check test-autograder references test-slurm mutants trace-mutants grade-mutants calibrate test-judge
+.PHONY: release release-check test-autograder references test-slurm mutants trace-mutants grade-mutants calibrate test-judge test-portable test-grade-local
 
 COURSE_TOOL_OBJ := $(addprefix $(BUILD)/framework/,image.o file.o status.o) $(BUILD)/third_party/lodepng/lodepng.o
 
@@ -34,6 +34,15 @@ test-judge:  ## the split suites (subject | judge per test) agree with test-part
 # Slow (about 10 minutes on 2 cores): the bundle graded in a temporary Gradescope root, as root.
 test-autograder: release  ## the autograder bundle end to end in Gradescope's layout (solution, stubs, mutants, adversaries)
 	$(Q)bash course/autograder/test.sh
+
+# ---- portability: a student's laptop, imitated here (course/platform/portable.sh says what it proves) -
+# About 5 minutes on 2 cores: two full builds of the release and their suites.
+test-portable: release  ## the student release, solved, in strict C11 + POSIX with gcc and clang, vendored stb; refusals of old OpenEXR
+	$(Q)sh course/platform/portable.sh
+
+# make grade where the machine has no sandbox (a laptop) against the autograder, at one seed.
+test-grade-local: release $(BIN)/grade  ## make grade without the sandbox: the autograder's verdicts (the solution, two catalogued bugs)
+	$(Q)sh course/platform/grade_local.sh
 
 # ---- references: the solution's renders of every grading case, locally or as a Slurm job array ---
 REF_OBJ := $(BUILD)/course/references/references.o $(BUILD)/grader/grade_cases.o $(BUILD)/grader/grade_run.o $(LIB_OBJ)

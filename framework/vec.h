@@ -11,6 +11,11 @@
 /* pi, and angles: files and flags speak degrees (fields of view, cone angles, <rotate>), the maths
  * radians. */
 #define PL_PI 3.14159265358979323846f
+/* M_PI, for the double arithmetic of statistics and tests: it is X/Open's, in neither C11 nor POSIX's
+ * base, so a strict build's <math.h> (included above) may leave it out. */
+#ifndef M_PI
+#define M_PI 3.14159265358979323846
+#endif
 static inline float deg_to_rad(float degrees) { return degrees * (PL_PI / 180.0f); }
 static inline float rad_to_deg(float radians) { return radians * (180.0f / PL_PI); }
 

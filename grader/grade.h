@@ -149,6 +149,8 @@ grade_run_result grade_run(char *const argv[], const grade_run_opts *o);
 /* grade_run with pipe ends for the split suite (grade_judge.c): in_fd > 0 becomes the child's stdin
  * (else /dev/null), fd3 > 0 its fd 3. */
 grade_run_result grade_run_piped(char *const argv[], const grade_run_opts *o, int in_fd, int fd3);
+/* pipe(2) with both ends close-on-exec (POSIX has no pipe2): a child gets only the ends it is given. */
+bool grade_pipe(int fds[2]);
 /* A one-line reason for a child that did not exit normally ("killed by signal 11", "timed out"). */
 void grade_run_describe(const grade_run_result *r, char *out, size_t size);
 

@@ -196,7 +196,11 @@ void grade_image_case(const grade_env *env, const grade_spec *spec, const char *
      * through that descriptor. */
     int fd = grade_guard_open_child_file(out, RENDER_MAX);
     char by_fd[64];
+#ifdef __linux__
     snprintf(by_fd, sizeof by_fd, "/proc/self/fd/%d", fd);
+#else
+    snprintf(by_fd, sizeof by_fd, "/dev/fd/%d", fd);  /* macOS: the same descriptor, offset 0 */
+#endif
     pl_status st = fd < 0 ? pl_fail(&diag, PL_ERR_IO, "%s: missing, a link, not a regular file, or over %ld MiB",
                                     out, RENDER_MAX >> 20)
                           : read_film(by_fd, &cand, NULL, &bad, &cand_n, &diag);

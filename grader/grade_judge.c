@@ -113,7 +113,7 @@ static void run_test(const grade_env *env, const char *tree, const char *judge, 
     unlink(xml);  /* cmocka does not overwrite a results file */
     int fds[2];
     grade_run_result rr = {false, -1, false, 0.0};
-    if (pipe2(fds, O_CLOEXEC) == 0) {
+    if (grade_pipe(fds)) {
         pid_t helper = start_subject(tree, n, name, dir, k, fds[1]);
         close(fds[1]);
         char *envv[] = {filter, "PL_SEAM_FD=0", "CMOCKA_MESSAGE_OUTPUT=xml", xml_env, NULL}, *argv[] = {(char *)judge, NULL};

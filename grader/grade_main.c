@@ -16,7 +16,6 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
-#include <sys/random.h>
 #include <sys/stat.h>
 #include <time.h>
 #include <unistd.h>
@@ -35,11 +34,14 @@ static int usage(const char *msg)
     return 2;
 }
 
-/* The grading seed: fresh from the kernel unless given, and recorded in every output. */
+/* The grading seed: fresh from the kernel unless given, and recorded in every output. /dev/urandom
+ * is on Linux and macOS alike (getrandom is Linux's). */
 static uint64_t fresh_seed(void)
 {
     uint64_t s = 0;
-    if (getrandom(&s, sizeof s, 0) != (ssize_t)sizeof s) s = (uint64_t)time(NULL) * 2654435761u;
+    FILE *f = fopen("/dev/urandom", "rb");
+    if (!f || fread(&s, sizeof s, 1, f) != 1) s = (uint64_t)time(NULL) * 2654435761u;
+    if (f) fclose(f);
     return s % 1000000000000ull;
 }
 
@@ -81,6 +83,14 @@ static int calibrate(const grade_env *base, const grade_spec *spec, const char *
         }
     }
     return worst > 0;
+}
+
+/* Whether this machine confines student code as the autograder does (namespaces). A student's
+ * laptop often cannot (macOS, a user without privileges): make grade then runs their own code
+ * unconfined, which is safe for their own code and gives the same verdicts. */
+static bool sandbox_confines(const grade_sandbox *s)
+{
+    return s->no_network;
 }
 
 /* mkdir -p: the default out/grade may be the first thing made under out/. */
@@ -154,6 +164,9 @@ int main(int argc, char **argv)
     }
     /* A student's own tree is their code on their machine: containment is the autograder's concern. */
     if (submission) grade_sandbox_describe(&env.sandbox, result.unprotected, sizeof result.unprotected);
+    else if (!sandbox_confines(&env.sandbox))
+        fprintf(stderr, "grade: no sandbox on this machine: your own code runs unconfined; "
+                        "your official grade comes from the autograder\n");
     if (result.unprotected[0]) fprintf(stderr, "grade: unavailable protections: %s\n", result.unprotected);
     if (calibrate_runs > 0) {
         int code = calibrate(&env, &spec, parts, calibrate_runs);

@@ -151,12 +151,20 @@ static bool pump(int pipe_fd, int log_fd, long max, long *written, int ms)
 
 grade_run_result grade_run(char *const argv[], const grade_run_opts *o) { return grade_run_piped(argv, o, 0, 0); }
 
+bool grade_pipe(int fds[2])
+{
+    if (pipe(fds) != 0) return false;
+    if (fcntl(fds[0], F_SETFD, FD_CLOEXEC) == 0 && fcntl(fds[1], F_SETFD, FD_CLOEXEC) == 0) return true;
+    close(fds[0]), close(fds[1]);
+    return false;
+}
+
 grade_run_result grade_run_piped(char *const argv[], const grade_run_opts *o, int in_fd, int fd3)
 {
     grade_run_result r = {false, -1, false, 0.0};
     double t0 = now();
     int log_fd = open_log(o->log_path), fds[2] = {-1, -1};
-    if (log_fd < 0 || pipe2(fds, O_CLOEXEC) != 0) {
+    if (log_fd < 0 || !grade_pipe(fds)) {
         if (log_fd >= 0) close(log_fd);
         return r;
     }

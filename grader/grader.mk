@@ -21,7 +21,7 @@ test-grader: $(BIN)/grade
 # The grader's paths and messages live in fixed buffers on purpose: a long path is cut in a message
 # (or makes a file not found, which fails safe), never overflows. GCC's truncation analysis, which
 # sees more at -O1 (SAN=1) than at -O2, would make every such snprintf an error under WERROR=1.
-$(BUILD)/grader/%.o: CFLAGS += -Wno-format-truncation
+$(BUILD)/grader/%.o: CFLAGS += $(NO_FORMAT_TRUNCATION)
 
 .PHONY: grade test-report test-grader-process
 grade: $(BIN)/grade  ## grade your parts on the public cases (PARTS=3: one part; SEED=N: repeat a run); report in out/grade/

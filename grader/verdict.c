@@ -40,7 +40,7 @@ static double known_p(const diff_acc *a, double *t)
     *t = 0.0;
     if (a->var <= 0.0) return fabs(a->s1) <= 1e-5 * (1.0 + fabs(a->ref)) ? 1.0 : 0.0;
     *t = a->s1 / sqrt(a->var);
-    return erfc(fabs(*t) / M_SQRT2);
+    return erfc(fabs(*t) / sqrt(2.0));
 }
 
 /* The p-value of one paired test: Johnson's t for skewed populations (N. J. Johnson, JASA 73, 1978),

@@ -2,14 +2,13 @@
  * One test at a time: `make test-part3 FILTER=name` runs only the tests whose name matches
  * (cmocka's pattern: * and ? wildcards, e.g. FILTER='*hemisphere*'); `make test-part3 LIST=1`
  * lists a suite's tests (with FILTER: the matching ones). The Makefile passes FILTER as
- * $PL_TEST_FILTER and LIST as $PL_TEST_LIST. Every group runs through pl_run_group (test.h
+ * $PL_TEST_FILTER and LIST as $PL_TEST_LIST, and the suite's name as $PL_TEST_SUITE. Every group runs through pl_run_group (test.h
  * redefines cmocka_run_group_tests_name), so no suite's main() needs to know:
  * - a group with no matching test prints nothing;
  * - a FILTER that matches no test of the suite fails the suite (a typo must not look green),
  *   unless $PL_TEST_MATCHED names a file: then `make test` judges over all suites, and a suite
  *   with a match creates that file. */
 #include "test.h"
-#include <errno.h>  /* program_invocation_short_name (GNU): the suite binary, test-part2 */
 #include <stdio.h>
 #include <stdlib.h>
 #include <unistd.h>
@@ -44,7 +43,8 @@ static void judge_filter_at_exit(void)
         return;
     }
     if (matched > 0) return;
-    const char *suite = program_invocation_short_name;
+    const char *suite = getenv("PL_TEST_SUITE");  /* the Makefile's name for it, test-part2 */
+    if (!suite || !*suite) suite = "test-<suite>";
     fflush(stdout);
     fprintf(stderr,
             "ERROR: no test matches FILTER='%s' (the suite's tests are listed by `make %s LIST=1`; "

@@ -54,18 +54,31 @@ static void load_ok(const char *path, scene *s, warn_log *w)
     if (st != PL_OK) fail_msg("%s: %s: %s", path, pl_status_name(st), d.error);
 }
 
+/* printf into a new string (asprintf is GNU's and BSD's, not POSIX). Caller frees. */
+static char *format(const char *fmt, ...) CMOCKA_PRINTF_ATTRIBUTE(1, 2);
+static char *format(const char *fmt, ...)
+{
+    va_list args;
+    va_start(args, fmt);
+    int n = vsnprintf(NULL, 0, fmt, args);
+    va_end(args);
+    assert_true(n >= 0);
+    char *text = malloc((size_t)n + 1);
+    assert_non_null(text);
+    va_start(args, fmt);
+    vsnprintf(text, (size_t)n + 1, fmt, args);
+    va_end(args);
+    return text;
+}
+
 /* A whole document around the given libraries and visual-scene nodes. Caller frees. */
 static char *document(const char *up_axis, const char *libraries, const char *nodes)
 {
-    char *text = NULL;
-    int n = asprintf(&text,
-                     "<COLLADA xmlns=\"http://www.collada.org/2005/11/COLLADASchema\" version=\"1.4.1\">\n"
-                     "<asset><up_axis>%s</up_axis></asset>\n%s\n"
-                     "<library_visual_scenes><visual_scene id=\"vs\">\n%s\n</visual_scene></library_visual_scenes>\n"
-                     "<scene><instance_visual_scene url=\"#vs\"/></scene></COLLADA>\n",
-                     up_axis, libraries, nodes);
-    assert_true(n > 0);
-    return text;
+    return format("<COLLADA xmlns=\"http://www.collada.org/2005/11/COLLADASchema\" version=\"1.4.1\">\n"
+                  "<asset><up_axis>%s</up_axis></asset>\n%s\n"
+                  "<library_visual_scenes><visual_scene id=\"vs\">\n%s\n</visual_scene></library_visual_scenes>\n"
+                  "<scene><instance_visual_scene url=\"#vs\"/></scene></COLLADA>\n",
+                  up_axis, libraries, nodes);
 }
 
 static void load_document_ok(const char *up_axis, const char *libraries, const char *nodes, scene *s,
@@ -123,16 +136,14 @@ static void test_dae_load__numbers_match_strtof_exactly(void **state)
     assert_non_null(p);
     at = p;
     for (int i = 0; i < TRIS * 3; i++) at += sprintf(at, "%d ", i);
-    char *lib = NULL, *node = NULL;
-    assert_true(asprintf(&lib,
-                         "<library_geometries><geometry id=\"g\"><mesh><source id=\"s\">"
-                         "<float_array id=\"a\" count=\"%d\">%s</float_array><technique_common>"
-                         "<accessor source=\"#a\" count=\"%d\" stride=\"3\"/></technique_common></source>"
-                         "<vertices id=\"v\"><input semantic=\"POSITION\" source=\"#s\"/></vertices>"
-                         "<triangles count=\"%d\"><input semantic=\"VERTEX\" source=\"#v\" offset=\"0\"/>"
-                         "<p>%s</p></triangles></mesh></geometry></library_geometries>",
-                         NUMS, floats, TRIS * 3, TRIS, p) > 0);
-    assert_true(asprintf(&node, "<node id=\"n\"><instance_geometry url=\"#g\"/></node>") > 0);
+    char *lib = format("<library_geometries><geometry id=\"g\"><mesh><source id=\"s\">"
+                       "<float_array id=\"a\" count=\"%d\">%s</float_array><technique_common>"
+                       "<accessor source=\"#a\" count=\"%d\" stride=\"3\"/></technique_common></source>"
+                       "<vertices id=\"v\"><input semantic=\"POSITION\" source=\"#s\"/></vertices>"
+                       "<triangles count=\"%d\"><input semantic=\"VERTEX\" source=\"#v\" offset=\"0\"/>"
+                       "<p>%s</p></triangles></mesh></geometry></library_geometries>",
+                       NUMS, floats, TRIS * 3, TRIS, p);
+    char *node = format("<node id=\"n\"><instance_geometry url=\"#g\"/></node>");
     scene sc;
     warn_log w = {0};
     load_document_ok("Y_UP", lib, node, &sc, &w);

@@ -1,0 +1,82 @@
+#!/bin/sh
+# make test-grade-local: a student's `make grade` on a machine without the autograder's sandbox
+# gives the autograder's verdicts. For the solution and two catalogued bugs (course/mutants/), a
+# student tree (release/student with the parts solved, the bug applied) is graded twice at one seed:
+#   local       bin/grade built in that tree, run there as a user who cannot have namespaces (nobody
+#               when this runs as root, else the caller): it must say once, on one line, that the
+#               code runs unconfined and the official grade comes from the autograder;
+#   autograder  this repository's bin/grade --submission TREE (the course's other parts, the sandbox
+#               this machine allows);
+# and each public test's name, status and score in the two results.json must be equal. A bug is
+# compared on its own part only: locally a later part is built on the student's buggy part, in the
+# autograder on the course's. Ends with "N passed, N failed".
+set -u
+cd "$(dirname "$0")/../.." || exit 2
+root=$PWD
+SEED=${SEED:-20261124}
+STUDENT=release/student
+MESSAGE="grade: no sandbox on this machine: your own code runs unconfined; your official grade comes from the autograder"
+[ -d "$STUDENT" ] && [ -x bin/grade ] || { echo "grade-local: run make release bin/grade first" >&2; exit 2; }
+# jq reads results.json (the grader's own reading is jansson's).
+if ! command -v jq >/dev/null; then
+    [ "$(id -u)" = 0 ] || { echo "grade-local: SKIPPED: jq is missing and installing it needs root"; exit 0; }
+    DEBIAN_FRONTEND=noninteractive apt-get install -y -qq --no-install-recommends jq >/dev/null 2>&1 ||
+        { apt-get update -qq && DEBIAN_FRONTEND=noninteractive apt-get install -y -qq --no-install-recommends jq >/dev/null; }
+fi
+# Scratch outside the repository, readable by nobody on the way down.
+work=$(mktemp -d /tmp/pathlab-grade-local-XXXXXX) && chmod 755 "$work" || exit 2
+trap 'rm -rf "$work"' EXIT INT TERM
+passed=0 failed=0
+pass() { passed=$((passed + 1)); echo "  ok    $1"; }
+fail() { failed=$((failed + 1)); echo "  FAIL  $1"; [ -z "${2:-}" ] || sed 's/^/        /' "$2" | tail -n 20; }
+
+# Runs a shell command in the student tree $1 as a user without namespaces.
+as_student() {
+    if [ "$(id -u)" = 0 ]; then
+        chown -R nobody "$work/$1" && setpriv --reuid=nobody --regid="$(id -g nobody)" --clear-groups \
+            env HOME="$work" sh -c "cd '$work/$1' && $2"
+    else
+        (cd "$work/$1" && sh -c "$2")
+    fi
+}
+
+# Each test of results.json $1 as "name<TAB>status<TAB>score", public ones only.
+verdicts() { jq -r '.tests[] | select(.visibility == "visible") | "\(.name)\t\(.status)\t\(.score)"' "$1"; }
+
+# Grades tree $1 (patch $2 applied, or none) on part(s) $3 both ways and compares.
+compare() {
+    name=$1 patch=$2 parts=$3 tree=$work/$1
+    cp -a "$STUDENT" "$tree" && cp -a parts/. "$tree/parts/" || { fail "$name: cannot copy the release"; return; }
+    if [ -n "$patch" ] && ! patch -s -p1 -d "$tree" <"course/mutants/$patch.patch"; then
+        fail "$name: the patch no longer applies"; return
+    fi
+    bin/grade --submission "$tree" --public --parts "$parts" --seed "$SEED" --out "$work/$name-autograder" \
+        >"$work/$name-autograder.log" 2>&1
+    as_student "$name" "make -s bin/grade >/dev/null && bin/grade --parts $parts --seed $SEED --out out/grade" \
+        >"$work/$name-local.log" 2>&1
+    n=$(grep -cxF "$MESSAGE" "$work/$name-local.log")
+    if [ "$n" = 1 ]; then pass "$name: make grade says once that it runs unconfined"
+    else fail "$name: make grade should say once: $MESSAGE" "$work/$name-local.log"; fi
+    a=$work/$name-autograder/results.json l=$tree/out/grade/results.json
+    if [ ! -s "$a" ] || [ ! -s "$l" ]; then
+        fail "$name: both graders write results.json" "$work/$name-autograder.log"; return
+    fi
+    verdicts "$a" >"$work/$name-a.txt" && verdicts "$l" >"$work/$name-l.txt"
+    if [ -s "$work/$name-a.txt" ] && diff "$work/$name-a.txt" "$work/$name-l.txt" >"$work/$name.diff"; then
+        pass "$name, part $parts: the same $(wc -l <"$work/$name-a.txt") verdicts ($(cut -f2 "$work/$name-a.txt" | sort | uniq -c | xargs))"
+    else
+        fail "$name, part $parts: the verdicts differ (< autograder, > local)" "$work/$name.diff"
+    fi
+}
+
+echo "== make grade without the sandbox vs the autograder (seed $SEED)"
+compare solution "" 1,3,5
+compare part1-pixel-corner-not-centre part1-pixel-corner-not-centre 1
+compare part3-bsdf-without-pi part3-bsdf-without-pi 3
+# A comparison that cannot fail proves nothing: the bugs must have lost points.
+for m in part1-pixel-corner-not-centre part3-bsdf-without-pi; do
+    if grep -q "	failed	" "$work/$m-a.txt" 2>/dev/null; then pass "$m: fails in both"
+    else fail "$m: expected failed verdicts, got none"; fi
+done
+echo "grade-local: $passed passed, $failed failed"
+[ "$failed" = 0 ]
