@@ -14,7 +14,7 @@ V       ?= 0   # 1: print whole commands instead of "CC file.c"
 LTO     ?= 1   # 0: no link-time optimisation (the grader's builds: objects hold machine code it can inspect)
 PKGS    := libxml-2.0 stb jansson zlib OpenEXR
 TPKGS   := cmocka
-# The test suites: tests/<suite>/ each, plus the instructor's own (course/) where the tree has it.
+# The test suites: tests/<suite>/ each, plus the course's own (course/) where the tree has it.
 SUITES  := framework grader part1 part2 part3 part4 part5 $(if $(wildcard course/course.mk),course)
 
 # ---- flags ------------------------------------------------------------------------------------
@@ -126,7 +126,7 @@ help:  ## this list
 
 # ---- the folders' own targets -----------------------------------------------------------------
 # One fragment per folder that has targets. A tree may lack a folder, and then its targets: the
-# student release has no course/ (instructor-only), a part's grading tree holds only what the part's
+# student release has no course/ (the course's own tools), a part's grading tree holds only what the part's
 # build and tests need.
 -include grader/grader.mk
 -include tools/tools.mk
