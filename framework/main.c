@@ -2,6 +2,7 @@
  * Exit status: 0 success, 2 bad input (flags, scene, camera file, output names), 1 failure while
  * rendering or writing. */
 #include "cli.h"
+#include "clock.h"
 #include "dae.h"
 #include "camera_file.h"
 #include "render.h"
@@ -16,15 +17,7 @@
 #include <stdlib.h>
 #include <string.h>
 #include <strings.h>
-#include <time.h>
 #include <unistd.h>
-
-static double now_seconds(void)
-{
-    struct timespec ts;
-    clock_gettime(CLOCK_MONOTONIC, &ts);
-    return ts.tv_sec + ts.tv_nsec * 1e-9;
-}
 
 static void print_progress(void *user, int done, int total)
 {
@@ -61,7 +54,7 @@ static int run(const options *o, const char *prog)
     accel a;
     memset(&a, 0, sizeof a);
 
-    double t0 = now_seconds();
+    double t0 = clock_seconds();
     dae_limits limits = dae_limits_default();
     limits.max_primitives = o->max_primitives;
     limits.max_instances = o->max_instances;
@@ -77,7 +70,7 @@ static int run(const options *o, const char *prog)
         }
         s.has_camera = true;
     }
-    double load_seconds = now_seconds() - t0;
+    double load_seconds = clock_seconds() - t0;
 
     if (accel_build(&a, &s, !o->linear_scan, o->max_leaf_size, &diag) != PL_OK) { code = fail(prog, &diag, 1); goto done; }
     render_ctx ctx;
@@ -108,7 +101,7 @@ static int run(const options *o, const char *prog)
 
     /* Image, rate map, heat map and sidecar: encoded in parallel, renamed into place together (the
      * sidecar last), or none. */
-    double t1 = now_seconds();
+    double t1 = clock_seconds();
     rate_map rates = {samples, o->width, o->height, o->spp};
     sidecar_info info = {&ctx, load_seconds, a.build_seconds, &stats, o->adaptive ? samples : NULL};
     exr_info provenance;
@@ -141,7 +134,7 @@ static int run(const options *o, const char *prog)
                (double)stats.samples / ((double)o->width * o->height));
         if (o->output)
             printf("[pathlab] wrote %s, %s, %s%s%s in %.4f s\n", out.path[OUTPUT_IMAGE], out.path[OUTPUT_RATE_MAP],
-                   out.path[OUTPUT_SIDECAR], o->heatmap ? ", " : "", o->heatmap ? o->heatmap : "", now_seconds() - t1);
+                   out.path[OUTPUT_SIDECAR], o->heatmap ? ", " : "", o->heatmap ? o->heatmap : "", clock_seconds() - t1);
         else if (o->heatmap)
             printf("[pathlab] wrote %s\n", o->heatmap);
     }

@@ -1,5 +1,6 @@
 /* The render: estimator dispatch and the tiled, multi-threaded pixel loop. */
 #include "render.h"
+#include "clock.h"
 #include "counters.h"
 #include "../parts/part1_raygen/part1.h"  /* call sites: framework/parts.h */
 #include "../parts/part3_direct/part3.h"
@@ -137,13 +138,6 @@ static void *render_worker(void *arg)
     return NULL;
 }
 
-static double now_seconds(void)
-{
-    struct timespec ts;
-    clock_gettime(CLOCK_MONOTONIC, &ts);
-    return ts.tv_sec + ts.tv_nsec * 1e-9;
-}
-
 /* The loop behind render_film and render_image: into a film, or straight into an image. */
 static pl_status render_run(render_job job, render_stats *stats, pl_diag *diag)
 {
@@ -162,7 +156,7 @@ static pl_status render_run(render_job job, render_stats *stats, pl_diag *diag)
     int nthreads = ctx->opts->threads > 0 ? ctx->opts->threads : 1;
     pthread_t *threads = calloc((size_t)nthreads, sizeof *threads);
     if (!threads) return pl_fail(diag, PL_ERR_NOMEM, "render: out of memory");
-    double t0 = now_seconds();
+    double t0 = clock_seconds();
     int started = 0;
     for (; started < nthreads; started++)
         if (pthread_create(&threads[started], NULL, render_worker, &job) != 0) break;
@@ -180,7 +174,7 @@ static pl_status render_run(render_job job, render_stats *stats, pl_diag *diag)
 
     if (stats) {
         memset(stats, 0, sizeof *stats);
-        stats->seconds = now_seconds() - t0;
+        stats->seconds = clock_seconds() - t0;
         stats->rays = atomic_load(&job.rays);
         stats->node_visits = atomic_load(&job.node_visits);
         stats->prim_tests = atomic_load(&job.prim_tests);

@@ -227,3 +227,12 @@ double stats_binomial_p2(long k, long n, double p)
     double two = 2.0 * (lower < upper ? lower : upper);
     return two < 1.0 ? two : 1.0;
 }
+
+/* ---- image error ---------------------------------------------------------------------------- */
+
+double stats_rel_mse(const float *candidate, const float *reference, long count)
+{
+    double sum = 0.0;
+    for (long i = 0; i < count; i++) sum += stats_rel_se(candidate[i], reference[i]);
+    return count > 0 ? sum / (double)count : 0.0;
+}

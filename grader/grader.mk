@@ -5,7 +5,7 @@ GRADER_SRC := $(filter-out grader/grade_main.c,$(wildcard grader/*.c))
 GRADER_OBJ := $(patsubst %.c,$(BUILD)/%.o,$(GRADER_SRC))
 # bin/grade links the framework's file, image and statistics code, never a part: it must not run
 # student code in its own process.
-GRADER_FRAMEWORK_OBJ := $(addprefix $(BUILD)/framework/,image.o file.o exr.o film.o status.o stats.o) \
+GRADER_FRAMEWORK_OBJ := $(addprefix $(BUILD)/framework/,image.o file.o exr.o film.o status.o stats.o clock.o) \
                         $(BUILD)/third_party/lodepng/lodepng.o
 $(BIN)/grade: $(BUILD)/grader/grade_main.o $(GRADER_OBJ) $(GRADER_FRAMEWORK_OBJ)
 	$(say) LD $@

@@ -20,6 +20,7 @@
  *   --out DIR (reference_images) and --work DIR (build/references) move the results and the ranges.
  * CASE is a case name or part<N>; none means every case. */
 #include "../../grader/grade.h"
+#include "../../framework/clock.h"
 #include "../../framework/exr.h"
 #include "../../framework/file.h"
 #include <dirent.h>
@@ -30,19 +31,11 @@
 #include <stdlib.h>
 #include <string.h>
 #include <sys/stat.h>
-#include <time.h>
 #include <unistd.h>
 
 #define RANGE_SAMPLES 256        /* samples per range: one range is a few seconds to a minute */
 #define REFERENCE_SEED 1000000000000ull  /* above every grading seed (grade draws them below 10^12) */
 #define RENDER_SECONDS 3600.0
-
-static double now(void)
-{
-    struct timespec ts;
-    clock_gettime(CLOCK_MONOTONIC, &ts);
-    return (double)ts.tv_sec + ts.tv_nsec * 1e-9;
-}
 
 /* ---- the key: what a reference was made from ------------------------------------------------ */
 
@@ -358,7 +351,7 @@ static void *worker(void *arg)
             p->failed = true;
             fprintf(stderr, "\nreferences: %s range %d failed; see %s\n", rc->spec->name, r, log);
         }
-        double elapsed = now() - p->start, eta = elapsed / p->done * (p->total - p->done);
+        double elapsed = clock_seconds() - p->start, eta = elapsed / p->done * (p->total - p->done);
         fprintf(stderr, "\r  %d/%d ranges (%s), %.0f s, about %.0f s to go   ", p->done, p->total, rc->spec->name,
                 elapsed, eta);
         pthread_mutex_unlock(&p->lock);
@@ -527,7 +520,7 @@ int main(int argc, char **argv)
 
     int code_exit = 0;
     if (!merge_only) {
-        pool p = {cases, n, 0, 0, 0, 0, now(), false, PTHREAD_MUTEX_INITIALIZER};
+        pool p = {cases, n, 0, 0, 0, 0, clock_seconds(), false, PTHREAD_MUTEX_INITIALIZER};
         for (int i = 0; i < n; i++) p.total += cases[i].num_ranges - ranges_done(&cases[i]);
         fprintf(stderr, "references: %d case(s), %d range(s) of %d samples to render on %d job(s)\n", n, p.total,
                 RANGE_SAMPLES, jobs);

@@ -1,4 +1,4 @@
-/* Test machinery and benchmark: not part of any assignment. */
+/* Procedural meshes (procmesh.h): a bumpy sphere of any size. */
 #include "procmesh.h"
 #include <math.h>
 
