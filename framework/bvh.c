@@ -1,6 +1,7 @@
 /* The BVH's storage, counters and validator: owned by the framework, so the tree can be freed,
  * counted and checked whatever state part 2 is in. */
 #include "bvh.h"
+#include "check.h"
 #include "counters.h"
 #include <stdlib.h>
 #include <string.h>
@@ -15,6 +16,7 @@ void bvh_free(bvh *b)
 
 const bvh_node *bvh_visit(const bvh *b, int index)
 {
+    PL_CHECK(index >= 0 && index < b->num_nodes);  /* a traversal's bug, caught before the read */
     counters_add_visit(index);
     return &b->nodes[index];
 }

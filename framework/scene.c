@@ -1,8 +1,9 @@
 /* The scene container: growable arrays and primitive numbering. */
 #include "scene.h"
 #include "buf.h"
+#include "check.h"
 #include "counters.h"
-#include "../parts/part1_raygen/part1.h"  /* call sites: framework/parts.h */
+#include "../parts/part1_raygen/part1.h"  /* call sites of the parts (framework/README.md) */
 #include <stdlib.h>
 #include <string.h>
 
@@ -74,6 +75,7 @@ aabb scene_bounds(const scene *s)
 
 bool scene_prim_intersect(const scene *s, int prim, ray *r, hit *h)
 {
+    PL_CHECK(prim >= 0 && prim < scene_prim_count(s));
     counters_add_prim(prim);
     bool found;
     int mat;
