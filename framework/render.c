@@ -1,8 +1,9 @@
 /* The render: estimator dispatch and the tiled, multi-threaded pixel loop. */
 #include "render.h"
+#include "check.h"
 #include "clock.h"
 #include "counters.h"
-#include "../parts/part1_raygen/part1.h"  /* call sites: framework/parts.h */
+#include "../parts/part1_raygen/part1.h"  /* call sites of the parts (framework/README.md) */
 #include "../parts/part3_direct/part3.h"
 #include "../parts/part4_global/part4.h"
 #include "../parts/part5_adaptive/part5.h"
@@ -41,6 +42,13 @@ rgb one_bounce_radiance(const render_ctx *ctx, const ray *r, const hit *h, rng *
     return ctx->opts->hemisphere ? direct_hemisphere(ctx, r, h, g) : direct_importance(ctx, r, h, g);
 }
 
+int render_light_samples(const render_ctx *ctx, const ray *r)
+{
+    PL_CHECK(r->depth >= 0);
+    int asked = ctx->opts->light_samples;
+    return r->depth == 0 && asked > 1 ? asked : 1;
+}
+
 rgb radiance_estimate(const render_ctx *ctx, ray *r, rng *g)
 {
     /* Zeroed: a hit is filled only on a hit, and with parts 2-4 stubbed link-time optimisation
@@ -62,6 +70,7 @@ rgb radiance_estimate(const render_ctx *ctx, ray *r, rng *g)
 void render_pixel(const render_ctx *ctx, int x, int y, film_pixel *p)
 {
     const options *o = ctx->opts;
+    PL_CHECK(x >= 0 && x < ctx->width && y >= 0 && y < ctx->height && ctx->sample_begin <= ctx->sample_end);
     int batch = o->adaptive_batch > 0 ? o->adaptive_batch : 1;
     for (int s = ctx->sample_begin; s < ctx->sample_end; s++) {
         /* Everything sample s draws comes from its own stream: no dependence on threads or ranges. */
