@@ -1,6 +1,6 @@
 /* Ray-scene queries: part 2's BVH when implemented, the linear scan otherwise. */
 #include "accel.h"
-#include "../parts/part2_bvh/part2.h"  /* a call site: framework/parts.h */
+#include "../parts/part2_bvh/part2.h"  /* a call site of the parts (framework/README.md) */
 #include "clock.h"
 #include "counters.h"
 #include "todo.h"

@@ -1,6 +1,6 @@
 /* Instructor tooling: not part of any assignment.
  * bin/references: renders the reference image of every grading case (grading/cases.json) with the
- * solution, as sample ranges merged exactly (DESIGN.md sections 4 and 8), into
+ * solution, as sample ranges merged exactly (framework/range.h; grading/README.md), into
  *   reference_images/part<N>/<case>.exr   mean, variance of the mean, sample count, provenance
  *   reference_images/part<N>/<case>.png   a preview
  *   reference_images/part<N>/<case>.json  the provenance: the key it was made from, command, seed,

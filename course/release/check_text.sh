@@ -192,7 +192,7 @@ check_paths() {
             case "$hit" in *.md:*) ;; *) case "$ref" in course/*|grading/hidden*|reference_images/hidden*) continue ;; esac ;; esac
             [ -e "$OUT/$ref" ] || echo "${hit#$OUT/} (no such file or folder in the release)"
         done >>"$LOGS/paths.txt"
-    # Documents by name (DESIGN.md, ../shared/...): the tree must hold a file of that name somewhere.
+    # Documents by name (NAME.md, ../elsewhere/NAME.md): the tree must hold a file of that name somewhere.
     grep -rnoIE '[A-Za-z0-9_./-]*[A-Za-z0-9_]\.md\b' "$OUT" | while IFS= read -r hit; do
         doc=${hit##*:}
         case "$doc" in out/*|build/*|*/out/*) continue ;; esac  # files a script writes
