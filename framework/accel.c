@@ -46,6 +46,8 @@ void accel_free(accel *a)
     a->shape = (bvh_shape){0, 0, 0};
 }
 
+/* ---- the queries: every ray traced is counted here, once, whichever structure answers -------- */
+
 bool accel_intersect(const accel *a, ray *r, hit *h)
 {
     counters_add_ray();
@@ -58,6 +60,8 @@ bool accel_occluded(const accel *a, const ray *r)
     return a->use_bvh ? bvh_occluded(&a->bvh, a->scene, r) : linear_occluded(a->scene, r);
 }
 
+/* The linear scan: every primitive, in order. Slow, but obviously right: the oracle part 2's tests
+ * compare the BVH with, and the renderer's fallback while part 2 is a stub. */
 bool linear_intersect(const scene *s, ray *r, hit *h)
 {
     bool found = false;

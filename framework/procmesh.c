@@ -2,6 +2,7 @@
 #include "procmesh.h"
 #include <math.h>
 
+/* 4 rows^2 triangles make `triangles`: rows = sqrt(triangles / 4), at least 2 for a closed mesh. */
 int procmesh_rows_for(long triangles)
 {
     int rows = (int)lround(sqrt((double)triangles / 4.0));

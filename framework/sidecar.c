@@ -36,6 +36,9 @@ static json_t *string_lossy(const char *s)
     return j;
 }
 
+/* The whole sidecar in one json_pack: the keys read in the order the file lists them (README.md
+ * names what a render records). Strings from the user (paths, the command line) go through
+ * string_lossy; numbers are the render's own. */
 pl_status sidecar_encode(FILE *f, const void *user, pl_diag *diag)
 {
     const sidecar_info *info = user;
@@ -44,6 +47,7 @@ pl_status sidecar_encode(FILE *f, const void *user, pl_diag *diag)
     const render_stats *r = info->render;
     const scene *s = ctx->scene;
     accel_shape shape = accel_bvh_shape(ctx->accel);
+    /* Rays per second over the pixel loop's wall time; 0 for a loop too quick for the clock. */
     double mrays = r->seconds > 0 ? r->rays / r->seconds * 1e-6 : 0.0;
     json_t *root = json_pack(
         "{s:s, s:o, s:o, s:o, s:I, s:i, s:i,"
@@ -64,6 +68,7 @@ pl_status sidecar_encode(FILE *f, const void *user, pl_diag *diag)
         "rays_traced", (json_int_t)r->rays, "node_visits", (json_int_t)r->node_visits,
         "primitive_tests", (json_int_t)r->prim_tests, "million_rays_per_second", mrays, "camera_samples", (json_int_t)r->samples,
         "mean_samples_per_pixel", (double)r->samples / ((double)ctx->width * ctx->height), "bad_pixels", r->bad_pixels);
+    /* Per-pixel sample counts only when the caller asks: top row first, as the image. */
     if (root && info->samples_per_pixel) {
         json_t *rows = json_array();
         for (int y = 0; y < ctx->height && rows; y++) {
