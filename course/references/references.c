@@ -309,8 +309,7 @@ static bool merge_case(const ref_case *rc)
 typedef struct {
     ref_case *cases;
     int num_cases;
-    int next_case, next_range;  /* the queue */
-    int done, total;
+    int next_case, next_range, done, total;  /* the queue; ranges rendered, of all */
     double start;
     bool failed;
     pthread_mutex_t lock;
