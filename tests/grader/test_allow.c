@@ -94,9 +94,9 @@ static char *handout_section(void)
     char *text = slurp("handout/README.md");
     char *start = strstr(text, "\n## What your part may call");
     if (!start) fail_msg("handout/README.md has no \"## What your part may call\" section");
-    char *end = strstr(start + 1, "\n## ");
+    char *end = start ? strstr(start + 1, "\n## ") : NULL;  /* (fail_msg does not return) */
     if (end) *end = '\0';
-    memmove(text, start, strlen(start) + 1);
+    if (start) memmove(text, start, strlen(start) + 1);
     return text;
 }
 
