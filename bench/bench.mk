@@ -13,7 +13,7 @@ EMBREE_HDR   := /usr/include/embree3/rtcore.h
 embree_flags  = $(if $(wildcard $(EMBREE_HDR)),-DPL_HAVE_EMBREE $(shell pkg-config --cflags embree3 2>/dev/null))
 embree_libs   = $(if $(wildcard $(EMBREE_HDR)),$(or $(shell pkg-config --libs embree3 2>/dev/null),-lembree3))
 
-$(BIN)/bvh_bench: bench/bvh_bench.c $(BUILD)/tests/common/procmesh.o $(LIB_OBJ)
+$(BIN)/bvh_bench: bench/bvh_bench.c $(LIB_OBJ)
 	$(say) CC $<
 	@mkdir -p $(dir $@)
 	$(Q)$(CC) $(CPPFLAGS) $(CFLAGS) $(embree_flags) -o $@ $^ $(LDLIBS) $(embree_libs)

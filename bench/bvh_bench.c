@@ -14,8 +14,8 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
-#include <time.h>
 #include "../framework/accel.h"
+#include "../framework/clock.h"
 #include "../framework/counters.h"
 #include "../parts/part2_bvh/part2.h"
 #include "../framework/dae.h"
@@ -24,7 +24,7 @@
 #include "../framework/rng.h"
 #include "../framework/sampler.h"
 #include "../parts/part1_raygen/part1.h"
-#include "../tests/common/procmesh.h"
+#include "../framework/procmesh.h"
 #ifdef PL_HAVE_EMBREE
 #include <embree3/rtcore.h>
 #endif
@@ -34,13 +34,6 @@
 #define MAX_THREADS 2
 #define BLOCK 256      /* rays per work item: threads take blocks in turn, so both get sky and mesh */
 #define MAX_RUNS 15
-
-static double now_seconds(void)
-{
-    struct timespec ts;
-    clock_gettime(CLOCK_MONOTONIC, &ts);
-    return ts.tv_sec + ts.tv_nsec * 1e-9;
-}
 
 static int compare_doubles(const void *a, const void *b)
 {
@@ -160,14 +153,14 @@ static double trace_all(trace_fn trace, const void *engine, const ray *rays, int
 {
     trace_job jobs[MAX_THREADS];
     pthread_t tid[MAX_THREADS];
-    double t0 = now_seconds();
+    double t0 = clock_seconds();
     for (int k = 0; k < threads; k++) {
         jobs[k] = (trace_job){trace, engine, rays, n, k, threads, q, 0};
         if (k > 0) pthread_create(&tid[k], NULL, trace_worker, &jobs[k]);
     }
     trace_worker(&jobs[0]);
     for (int k = 1; k < threads; k++) pthread_join(tid[k], NULL);
-    double seconds = now_seconds() - t0;
+    double seconds = clock_seconds() - t0;
     *hits = 0;
     for (int k = 0; k < threads; k++) *hits += jobs[k].hits;
     return seconds;
@@ -201,7 +194,7 @@ typedef struct {
 /* Builds an Embree scene of s's triangles (medium quality, Embree's default); returns seconds. */
 static double embree_build(embree *e, const scene *s)
 {
-    double t0 = now_seconds();
+    double t0 = clock_seconds();
     e->scene = rtcNewScene(e->device);
     RTCGeometry geom = rtcNewGeometry(e->device, RTC_GEOMETRY_TYPE_TRIANGLE);
     float *v = rtcSetNewGeometryBuffer(geom, RTC_BUFFER_TYPE_VERTEX, 0, RTC_FORMAT_FLOAT3, 3 * sizeof(float),
@@ -223,7 +216,7 @@ static double embree_build(embree *e, const scene *s)
     rtcReleaseGeometry(geom);
     rtcSetSceneBuildQuality(e->scene, RTC_BUILD_QUALITY_MEDIUM);
     rtcCommitScene(e->scene);
-    return now_seconds() - t0;
+    return clock_seconds() - t0;
 }
 
 static int trace_embree(const void *engine, const ray *r, query q)

@@ -1,16 +1,9 @@
 /* Benchmark, not a test: how long dae_load takes, best of N runs per file (`make bench-load`).
  * Best-of, not mean: the figure is the loader's cost, not the machine's other load. */
+#include "../framework/clock.h"
 #include "../framework/dae.h"
 #include <stdio.h>
 #include <stdlib.h>
-#include <time.h>
-
-static double now(void)
-{
-    struct timespec ts;
-    clock_gettime(CLOCK_MONOTONIC, &ts);
-    return (double)ts.tv_sec + ts.tv_nsec * 1e-9;
-}
 
 int main(int argc, char **argv)
 {
@@ -22,12 +15,12 @@ int main(int argc, char **argv)
         for (int r = 0; r < runs; r++) {
             scene s;
             pl_diag d = pl_diag_default();
-            double t0 = now();
+            double t0 = clock_seconds();
             if (dae_load(argv[i], &s, &d) != PL_OK) {
                 fprintf(stderr, "load_bench: %s\n", d.error);
                 return 1;
             }
-            double t = now() - t0;
+            double t = clock_seconds() - t0;
             best = t < best ? t : best;
             triangles = s.num_triangles;
             scene_free(&s);

@@ -21,10 +21,11 @@ $(BIN)/release_points: $(BUILD)/course/release/release_points.o $(BUILD)/grader/
 	$(Q)$(CC) $(LDFLAGS) -o $@ $^ $(LDLIBS)
 
 release: $(BIN)/strip_solutions $(BIN)/release_points  ## cut release/student and release/autograder.zip
-	$(Q)bash course/release/make_release build $(BIN)/strip_solutions $(BIN)/release_points
+	$(Q)bash course/release/cut $(BIN)/strip_solutions $(BIN)/release_points
+	$(Q)bash course/release/bundle
 
-release-check: release $(BIN)/imgtool  ## cut the release, then prove it sound (course/release/make_release says what)
-	$(Q)bash course/release/make_release check $(BIN)/strip_solutions $(BIN)/imgtool $(BIN)/release_points
+release-check: release $(BIN)/imgtool  ## cut the release, then prove it sound (course/release/check says what)
+	$(Q)bash course/release/check $(BIN)/strip_solutions $(BIN)/imgtool $(BIN)/release_points
 
 # The grader's split suites (tests/seam/seam.h) in a scratch tree: same verdicts as test-partN on the
 # solution and the stubs, and nothing gained by the attacks in course/judge/attacks/ (a few minutes).

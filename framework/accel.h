@@ -3,6 +3,8 @@
 #ifndef PL_ACCEL_H
 #define PL_ACCEL_H
 
+#include "part_api.h"
+
 #include <stdbool.h>
 #include "scene.h"
 #include "status.h"
@@ -24,13 +26,13 @@ pl_status accel_build(accel *out, const scene *s, bool want_bvh, int max_leaf_si
 void accel_free(accel *a);  /* NULL-safe */
 
 /* Closest hit in [r->min_t, r->max_t]; shrinks r->max_t and fills *h on a hit. */
-bool accel_intersect(const accel *a, ray *r, hit *h);
+PL_PART_API bool accel_intersect(const accel *a, ray *r, hit *h);
 /* Any hit in [r->min_t, r->max_t] (shadow rays). */
-bool accel_occluded(const accel *a, const ray *r);
+PL_PART_API bool accel_occluded(const accel *a, const ray *r);
 
 /* The oracle: every primitive, in order. */
-bool linear_intersect(const scene *s, ray *r, hit *h);
-bool linear_occluded(const scene *s, const ray *r);
+PL_PART_API bool linear_intersect(const scene *s, ray *r, hit *h);
+PL_PART_API bool linear_occluded(const scene *s, const ray *r);
 
 /* The shape of the BVH in use, for -v, the JSON sidecar and the benchmark (bvh_validate measured
  * it); zeros for the linear scan. */

@@ -1,10 +1,15 @@
 /* The BVH's storage, counters and validator: owned by the framework, so the tree can be freed,
  * counted and checked whatever state part 2 is in. */
 #include "bvh.h"
+#include "check.h"
 #include "counters.h"
 #include <stdlib.h>
 #include <string.h>
 
+/* ---- Storage and counted access ---------------------------------------------------------------- */
+
+/* The framework frees what part 2 allocated (bvh_build fills nodes and prim_index with malloc), so a
+ * tree is released the same way whatever state the part is in. */
 void bvh_free(bvh *b)
 {
     if (!b) return;
@@ -15,12 +20,14 @@ void bvh_free(bvh *b)
 
 const bvh_node *bvh_visit(const bvh *b, int index)
 {
+    PL_CHECK(index >= 0 && index < b->num_nodes);  /* a traversal's bug, caught before the read */
     counters_add_visit(index);
     return &b->nodes[index];
 }
 
 /* ---- Validation ------------------------------------------------------------------------------ */
 
+/* Exact equality, for the tight check: a tight box is the union of the same floats, so no epsilon. */
 static bool aabb_equal(aabb a, aabb b)
 {
     return a.min.x == b.min.x && a.min.y == b.min.y && a.min.z == b.min.z && a.max.x == b.max.x &&
@@ -55,6 +62,7 @@ static pl_status check_leaf(const bvh *b, const scene *s, int id, int max_leaf_s
     if (node->first < 0 || node->first > n - node->count)
         return pl_fail(diag, PL_ERR_INVALID, "node %d: leaf covers slots %d .. %d, prim_index has %d", id, node->first,
                        node->first + node->count - 1, n);
+    /* Every slot and every primitive may be claimed once: a second claim names the node at fault. */
     *box = aabb_empty();
     for (int i = node->first; i < node->first + node->count; i++) {
         int p = b->prim_index[i];
@@ -79,12 +87,14 @@ static pl_status walk(const bvh *b, const scene *s, int max_leaf_size, bool tigh
         top--;
         int id = w->stack[top].node, depth = w->stack[top].depth;
         const bvh_node *node = &b->nodes[id];
+        /* A second arrival at a node means a cycle or a shared child: refused before it is walked. */
         if (w->node_seen[id]++) return pl_fail(diag, PL_ERR_INVALID, "node %d: reached twice from the root (a cycle or a shared child)", id);
         if (depth > BVH_MAX_DEPTH)
             return pl_fail(diag, PL_ERR_INVALID, "node %d: depth %d exceeds BVH_MAX_DEPTH (%d)", id, depth, BVH_MAX_DEPTH);
         shape->nodes++;
         if (depth > shape->depth) shape->depth = depth;
         if (node->count < 0) return pl_fail(diag, PL_ERR_INVALID, "node %d: count %d < 0", id, node->count);
+        /* A leaf: its primitives, then its box against their bounds. */
         if (node->count > 0) {
             shape->leaves++;
             aabb box = aabb_empty();
@@ -110,6 +120,7 @@ static pl_status walk(const bvh *b, const scene *s, int max_leaf_size, bool tigh
             w->stack[top++].depth = depth + 1;
         }
     }
+    /* After the walk: nothing left out, neither a primitive nor a node. */
     for (int p = 0; p < b->num_prims; p++)
         if (!w->prim_seen[p]) return pl_fail(diag, PL_ERR_INVALID, "primitive %d is in no leaf", p);
     for (int i = 0; i < b->num_nodes; i++)
@@ -117,6 +128,7 @@ static pl_status walk(const bvh *b, const scene *s, int max_leaf_size, bool tigh
     return PL_OK;
 }
 
+/* The sizes first (cheap, and they bound every index the walk reads), then the walk itself. */
 pl_status bvh_validate(const bvh *b, const scene *s, int max_leaf_size, bool tight, bvh_shape *shape, pl_diag *diag)
 {
     bvh_shape ignored;

@@ -14,6 +14,8 @@
 #ifndef PL_BVH_H
 #define PL_BVH_H
 
+#include "part_api.h"
+
 #include <stdbool.h>
 #include "aabb.h"
 #include "scene.h"
@@ -37,7 +39,7 @@ typedef struct {
 } bvh;
 
 /* Releases the arrays and zeroes b. NULL-safe. */
-void bvh_free(bvh *b);
+PL_PART_API void bvh_free(bvh *b);
 
 /* ---- Counted access ------------------------------------------------------------------------ */
 
@@ -46,7 +48,7 @@ void bvh_free(bvh *b);
  * the root included, and never reads b->nodes directly: the framework counts visits here for the
  * heat map, the sidecar and the complexity test, and a traversal has no way to report or reset
  * its own. index must be valid: bvh_validate has checked every index a traversal can reach. */
-const bvh_node *bvh_visit(const bvh *b, int index);
+PL_PART_API const bvh_node *bvh_visit(const bvh *b, int index);
 
 /* ---- The one validator ----------------------------------------------------------------------- */
 

@@ -1,4 +1,5 @@
-/* False-colour maps. */
+/* False-colour maps: numbers shown as colour for the teaching pictures (sample-rate maps here; the
+ * BVH heat map in heatmap.c uses the same ramp). */
 #include "colormap.h"
 #include "image.h"
 #include <stdlib.h>
@@ -19,6 +20,7 @@ void colormap_rate(float t, uint8_t out[3])
     out[2] = (uint8_t)(b * 255.0f + 0.5f);
 }
 
+/* The sample-rate map: each pixel's share of the -s budget (1: every sample was taken), as a PNG. */
 pl_status rate_map_encode(FILE *f, const void *user, pl_diag *diag)
 {
     const rate_map *m = user;

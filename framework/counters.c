@@ -6,6 +6,8 @@
 static _Thread_local work_counts counts;
 static _Thread_local counters_trace *trace;  /* NULL unless a test is tracing this thread */
 
+/* Read and reset in one step, on the thread that did the work (the render loop's workers hand
+ * theirs to the loop; a test takes its own). */
 work_counts counters_take(void)
 {
     work_counts c = counts;
@@ -24,24 +26,26 @@ void counters_add(work_counts w)
 
 void counters_add_ray(void) { counts.rays++; }
 
+/* A traced count also records which node or primitive: appended while the test's list has room,
+ * else the trace says it overflowed (the test then knows its record is incomplete). */
+static void trace_append(counters_trace *t, int *list, int *num, int cap, int value)
+{
+    if (*num < cap) list[(*num)++] = value;
+    else t->overflow = true;
+}
+
 void counters_add_visit(int node)
 {
     counts.node_visits++;
     counters_trace *t = trace;
-    if (t) {
-        if (t->num_nodes < t->cap_nodes) t->nodes[t->num_nodes++] = node;
-        else t->overflow = true;
-    }
+    if (t) trace_append(t, t->nodes, &t->num_nodes, t->cap_nodes, node);
 }
 
 void counters_add_prim(int prim)
 {
     counts.prim_tests++;
     counters_trace *t = trace;
-    if (t) {
-        if (t->num_prims < t->cap_prims) t->prims[t->num_prims++] = prim;
-        else t->overflow = true;
-    }
+    if (t) trace_append(t, t->prims, &t->num_prims, t->cap_prims, prim);
 }
 
 void counters_trace_begin(counters_trace *t)

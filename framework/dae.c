@@ -82,6 +82,8 @@ static void on_entity_decl(void *user, const xmlChar *name, int type, const xmlC
     xmlStopParser(parser);
 }
 
+/* The document tree from memory, with the handlers above installed: errors recorded with their
+ * line, entities refused, the network never touched. */
 static pl_status parse_xml(dae_ctx *c, const char *xml, size_t len)
 {
     if (len > INT_MAX) return pl_fail(c->diag, PL_ERR_PARSE, "%s:1: XML: file too large", c->name);
@@ -110,6 +112,7 @@ static pl_status parse_xml(dae_ctx *c, const char *xml, size_t len)
 
 /* ---- transforms -------------------------------------------------------------------------- */
 
+/* The rotation from the file's up axis to pathlab's Y up, applied above every node's transform. */
 static pl_status read_up_axis(dae_ctx *c, const xmlNode *root)
 {
     c->up = mat4_identity();
@@ -168,6 +171,7 @@ static pl_status node_transform(dae_ctx *c, const xmlNode *node, mat4 *out)
                                "expected eye != target and an up vector not along the view direction");
             step = mat4_lookat(eye, target, up);
         } else if (dae_is(t, "skew")) {
+            /* Valid COLLADA that pathlab cannot apply: warned about once, never silently dropped. */
             dae_warn_once(c, t, "skew", "<skew> transforms are not supported; ignored");
             continue;
         } else {
@@ -184,12 +188,15 @@ static pl_status node_transform(dae_ctx *c, const xmlNode *node, mat4 *out)
 
 static pl_status visit_node(dae_ctx *c, const xmlNode *node, mat4 parent, int depth);
 
+/* Transform elements are read by node_transform, so visit_child passes over them quietly. */
 static bool is_transform(const xmlNode *n)
 {
     return dae_is(n, "matrix") || dae_is(n, "translate") || dae_is(n, "rotate") || dae_is(n, "scale") ||
            dae_is(n, "lookat") || dae_is(n, "skew");
 }
 
+/* One child of a node, under the node's world transform m: a nested node, an instance of geometry,
+ * a light, a camera or another node; anything else is warned about once. */
 static pl_status visit_child(dae_ctx *c, const xmlNode *e, mat4 m, int depth)
 {
     if (dae_is(e, "node")) return visit_node(c, e, m, depth + 1);
@@ -227,6 +234,7 @@ static pl_status visit_node(dae_ctx *c, const xmlNode *node, mat4 parent, int de
     return st;
 }
 
+/* The whole document: its root, its up axis and id index, then the visual scene's node tree. */
 static pl_status load_document(dae_ctx *c)
 {
     xmlNode *root = xmlDocGetRootElement(c->doc);
@@ -236,6 +244,7 @@ static pl_status load_document(dae_ctx *c)
     if (!st) st = dae_index_build(c);
     if (st) return st;
 
+    /* What loads but is not honoured is said once, so a scene never differs silently. */
     const xmlNode *animations = dae_child(root, "library_animations");
     if (animations && dae_first(animations))
         dae_warn_once(c, animations, "animation", "animations are not supported; the scene loads at rest");
@@ -257,6 +266,7 @@ static pl_status load_document(dae_ctx *c)
 
 /* ---- entry points ------------------------------------------------------------------------ */
 
+/* The caps README.md states: 2,000,000 primitives, 1,000,000 node instances. */
 dae_limits dae_limits_default(void)
 {
     dae_limits l = {DAE_DEFAULT_MAX_PRIMITIVES, DAE_DEFAULT_MAX_INSTANCES};
@@ -277,6 +287,7 @@ pl_status dae_load_memory_limited(const char *xml, size_t len, const char *name,
     c.limits = limits ? *limits : dae_limits_default();
     c.diag->error[0] = '\0';
 
+    /* Parse, convert, and free the document whatever happened: a failed load leaves no scene. */
     pl_status st = parse_xml(&c, xml ? xml : "", xml ? len : 0);
     if (!st) st = load_document(&c);
     dae_index_free(&c.index);

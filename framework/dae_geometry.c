@@ -37,6 +37,8 @@ typedef struct {
 
 /* ---- sources ----------------------------------------------------------------------------- */
 
+/* The numbers of a <float_array>, read once per source and kept in its index entry (a source
+ * shared by several lists is parsed once); exactly `count` of them, or a located error. */
 static pl_status read_float_array(dae_ctx *c, dae_entry *entry, const xmlNode *array)
 {
     int declared;
@@ -87,6 +89,7 @@ static pl_status read_source(dae_ctx *c, const xmlNode *at, const char *attr, co
     return PL_OK;
 }
 
+/* Element i of a source: its first three floats (extra components, e.g. a w, are ignored). */
 static vec3 element(const accessor *a, int i)
 {
     const float *p = a->data + (size_t)i * (size_t)a->stride;
@@ -95,6 +98,8 @@ static vec3 element(const accessor *a, int i)
 
 /* ---- inputs ------------------------------------------------------------------------------ */
 
+/* A VERTEX input points at <vertices>, which names the POSITION source (and may add NORMAL, then
+ * indexed with the positions). */
 static pl_status read_vertices(dae_ctx *c, const xmlNode *input, inputs *in)
 {
     dae_entry *vertices;
@@ -116,6 +121,8 @@ static pl_status read_vertices(dae_ctx *c, const xmlNode *input, inputs *in)
     return st;
 }
 
+/* A primitive list's <input>s: which offset in each corner's run of indices is the vertex and
+ * which the normal; other semantics (TEXCOORD, COLOR) only widen the run. */
 static pl_status read_inputs(dae_ctx *c, const xmlNode *prim, inputs *in)
 {
     memset(in, 0, sizeof *in);
@@ -151,6 +158,8 @@ static pl_status read_inputs(dae_ctx *c, const xmlNode *prim, inputs *in)
 /* One corner, transformed to world space; has_normal false when the file gives none. */
 typedef struct { vec3 p, n; bool has_normal; } corner;
 
+/* Every index is checked against its source before use: a hostile file gets an error, not a read
+ * past the array. */
 static pl_status read_corner(dae_ctx *c, const xmlNode *p, const inputs *in, const int *idx, corner *out)
 {
     int v = idx[in->position_offset];
@@ -191,6 +200,8 @@ static pl_status transform_inputs(dae_ctx *c, inputs *in, const instance *inst)
     return PL_OK;
 }
 
+/* One triangle into the scene; the file's normals replace the face normal at the corners that
+ * have one. */
 static pl_status add_triangle(dae_ctx *c, const instance *inst, corner a, corner b, corner d, int mat)
 {
     if (inst->mirrored) { corner t = b; b = d; d = t; }
@@ -225,6 +236,7 @@ static pl_status read_list(dae_ctx *c, const xmlNode *prim, const inputs *in, co
     int *vcount = NULL, *idx = NULL, num_vcount = count, num_idx = 0;
     pl_status st = PL_OK;
     bool polylist = dae_is(prim, "polylist");
+    /* A polylist's vcount: one corner count per polygon, each at least 3, exactly `count` of them. */
     if (polylist) {
         const xmlNode *vc = dae_child(prim, "vcount");
         if (!vc && count > 0) return dae_error(c, prim, PL_ERR_PARSE, "expected a <vcount> (count is %d)", count);
@@ -238,6 +250,7 @@ static pl_status read_list(dae_ctx *c, const xmlNode *prim, const inputs *in, co
             if (vcount[i] < 3)
                 st = dae_error(c, vc, PL_ERR_PARSE, "polygon %d has %d vertices: expected at least 3", i, vcount[i]);
     }
+    /* The corners fix how many indices <p> must hold, and the triangles the scene must have room for. */
     long long corners = 0;
     for (int i = 0; i < count && !st; i++) corners += polylist ? vcount[i] : 3;
     if (!st) st = dae_check_room(c, inst->elem, (long)(corners - 2LL * count));  /* n - 2 triangles per polygon */
@@ -250,6 +263,7 @@ static pl_status read_list(dae_ctx *c, const xmlNode *prim, const inputs *in, co
     else if (!st && num_idx != want)
         st = dae_error(c, p ? p : prim, PL_ERR_PARSE, "expected %lld indices (%lld corners x %d inputs), found %d",
                        want, corners, in->stride, num_idx);
+    /* Then the polygons, each a run of n corners in <p>. */
     size_t at = 0;
     for (int i = 0; i < count && !st; i++) {
         int n = polylist ? vcount[i] : 3;
@@ -291,6 +305,8 @@ static pl_status read_polygons(dae_ctx *c, const xmlNode *prim, const inputs *in
     return st;
 }
 
+/* One <triangles>, <polylist> or <polygons>: its inputs, its material, its world-space vertices,
+ * then its polygons. */
 static pl_status read_primitive(dae_ctx *c, const xmlNode *prim, const instance *inst)
 {
     int count, mat;
@@ -307,6 +323,8 @@ static pl_status read_primitive(dae_ctx *c, const xmlNode *prim, const instance 
     return st;
 }
 
+/* Every surface list of a mesh; lines and strips draw nothing a path tracer can hit, so they are
+ * warned about and skipped. */
 static pl_status read_mesh(dae_ctx *c, const xmlNode *mesh, const instance *inst)
 {
     pl_status st = PL_OK;
@@ -353,6 +371,7 @@ static pl_status read_sphere(dae_ctx *c, const xmlNode *shape, const instance *i
 
 /* ---- instances --------------------------------------------------------------------------- */
 
+/* The determinant of the linear part: negative when the transform mirrors (a scale by -1). */
 static float det3(mat4 a)
 {
     float (*m)[4] = a.m;

@@ -10,6 +10,8 @@
 /* The node's local -Z in world space: where directional and spot lights point, unit length. */
 static vec3 local_minus_z(mat4 m) { return vec3_normalize(mat4_dir(m, vec3_make(0, 0, -1))); }
 
+/* One light from its type element, placed by the node's transform m. Every kind starts at the
+ * node's origin with no attenuation (constant 1); each branch reads what its kind has. */
 static pl_status read_light(dae_ctx *c, const xmlNode *shape, mat4 m, light *l)
 {
     memset(l, 0, sizeof *l);
@@ -37,6 +39,7 @@ static pl_status read_light(dae_ctx *c, const xmlNode *shape, mat4 m, light *l)
         l->kind = LIGHT_DIRECTIONAL;
         l->direction = local_minus_z(m);
     } else if (dae_is(shape, "ambient")) {
+        /* Light from the whole upper hemisphere (world +Y, light.c); the sampler ignores direction. */
         l->kind = LIGHT_AMBIENT;
         l->direction = vec3_make(0, 1, 0);
     } else {  /* area: the node's unit square [-1/2, 1/2]^2 at z = 0, emitting towards its -Z */
@@ -51,6 +54,8 @@ static pl_status read_light(dae_ctx *c, const xmlNode *shape, mat4 m, light *l)
     return st;
 }
 
+/* An <instance_light>: the CGL technique when there is one (CS184's area lights live there), else
+ * technique_common; an unknown light type is warned about and skipped, never guessed. */
 pl_status dae_instance_light(dae_ctx *c, const xmlNode *inst, mat4 to_world)
 {
     dae_entry *entry;
@@ -74,6 +79,7 @@ pl_status dae_instance_light(dae_ctx *c, const xmlNode *inst, mat4 to_world)
 
 /* ---- camera ------------------------------------------------------------------------------ */
 
+/* A field of view a pinhole camera can have: strictly between 0 and 180 degrees. */
 static pl_status check_fov(dae_ctx *c, const xmlNode *perspective, const char *name, float fov)
 {
     if (fov > 0 && fov < 180) return PL_OK;
@@ -85,6 +91,7 @@ pl_status dae_instance_camera(dae_ctx *c, const xmlNode *inst, mat4 to_world)
     dae_entry *entry;
     pl_status st = dae_resolve(c, inst, "url", "camera", &entry);
     if (st) return st;
+    /* The first camera instanced wins, as in CS184; later ones are warned about. */
     if (c->has_camera) {
         dae_warn_once(c, inst, "second camera", "the scene has more than one camera; using the first");
         return PL_OK;

@@ -7,6 +7,10 @@
 #include <stdlib.h>
 #include <string.h>
 
+/* ---- the default ----------------------------------------------------------------------------- */
+
+/* Grey 0.5, made on first use and shared: geometry with no material still renders, and a scene
+ * that binds everything has no unused material. */
 pl_status dae_default_material(dae_ctx *c, int *out)
 {
     if (c->default_material < 0) {
@@ -18,6 +22,8 @@ pl_status dae_default_material(dae_ctx *c, int *out)
     *out = c->default_material;
     return PL_OK;
 }
+
+/* ---- reading one effect ---------------------------------------------------------------------- */
 
 /* The shading model element of profile_COMMON (phong, lambert, blinn or constant), or NULL. */
 static const xmlNode *common_shader(const xmlNode *effect)
@@ -66,6 +72,8 @@ static float conductor_f0(float eta, float k)
     return ((eta - 1) * (eta - 1) + k * k) / ((eta + 1) * (eta + 1) + k * k);
 }
 
+/* A valid material pathlab cannot shade yet: loaded as diffuse, and said once per kind, never
+ * silently dropped. */
 static void not_supported(dae_ctx *c, const xmlNode *bsdf, const char *kind)
 {
     dae_warn_once(c, bsdf, kind, "%s materials are not supported yet, shaded as diffuse", kind);
@@ -88,6 +96,7 @@ static pl_status read_cgl(dae_ctx *c, const xmlNode *technique, material *m)
         st = dae_child_color(c, bsdf, "reflectance", false, &m->albedo);
         not_supported(c, bsdf, "mirror");
     } else if (dae_is(bsdf, "glass")) {
+        /* Read in full even though unsupported: a malformed value is still an error with its line. */
         m->kind = MATERIAL_GLASS;
         float ior, roughness;
         st = dae_child_color(c, bsdf, "transmittance", false, &m->albedo);
@@ -102,6 +111,7 @@ static pl_status read_cgl(dae_ctx *c, const xmlNode *technique, material *m)
         if (!st) st = dae_child_float(c, bsdf, "ior", 1.5f, &ior);
         not_supported(c, bsdf, "refraction");
     } else if (dae_is(bsdf, "microfacet")) {
+        /* The diffuse stand-in takes the metal's colour at normal incidence. */
         m->kind = MATERIAL_MICROFACET;
         float alpha;
         rgb eta = rgb_gray(1.5f), k = rgb_gray(0.0f);
@@ -117,6 +127,10 @@ static pl_status read_cgl(dae_ctx *c, const xmlNode *technique, material *m)
     return st;
 }
 
+/* ---- materials and their bindings ------------------------------------------------------------- */
+
+/* One <material> into one scene material: profile_COMMON first, then a CGL technique over it.
+ * The index is kept in the entry, so a material bound again is not converted twice. */
 static pl_status convert_material(dae_ctx *c, dae_entry *entry, int *out)
 {
     const xmlNode *inst = dae_child(entry->node, "instance_effect");
@@ -139,6 +153,7 @@ pl_status dae_bind_materials(dae_ctx *c, const xmlNode *inst, dae_binding **out,
 {
     *out = NULL;
     *count = 0;
+    /* Count first, then fill: one allocation of exactly the bindings the instance declares. */
     const xmlNode *common = dae_child(dae_child(inst, "bind_material"), "technique_common");
     int n = 0;
     for (const xmlNode *im = dae_first(common); im; im = dae_next(im)) n += dae_is(im, "instance_material");
@@ -165,6 +180,8 @@ pl_status dae_bind_materials(dae_ctx *c, const xmlNode *inst, dae_binding **out,
     return PL_OK;
 }
 
+/* The material a primitive list's symbol names through its instance's bindings; an unbound one is
+ * warned about and drawn in the default grey. */
 pl_status dae_bound_material(dae_ctx *c, const xmlNode *at, const dae_binding *b, int count,
                              const char *symbol, int *out)
 {

@@ -15,6 +15,8 @@
 
 /* ---- elements ---------------------------------------------------------------------------- */
 
+/* Element walking that skips text, comments and processing instructions, and takes NULL anywhere:
+ * dae_child(dae_child(a, "b"), "c") is NULL when any step is missing, so callers test once. */
 bool dae_is(const xmlNode *n, const char *name)
 {
     return n && n->type == XML_ELEMENT_NODE && strcmp((const char *)n->name, name) == 0;
@@ -58,6 +60,7 @@ long dae_line(const xmlNode *n)
     return xmlGetLineNo(n);
 }
 
+/* CS184's extensions: <extra><technique profile="CGL"> under the element they extend. */
 xmlNode *dae_cgl_technique(const xmlNode *parent)
 {
     for (xmlNode *e = dae_first(parent); e; e = dae_next(e)) {
@@ -72,6 +75,8 @@ xmlNode *dae_cgl_technique(const xmlNode *parent)
 
 /* ---- messages ---------------------------------------------------------------------------- */
 
+/* "scene.dae:212: <polylist>: " and then the message: every loader message names file, line and
+ * element. */
 static void locate(char *buf, size_t size, dae_ctx *c, const xmlNode *at, const char *fmt, va_list ap)
 {
     int n = snprintf(buf, size, "%s:%ld: <%s>: ", c->name, dae_line(at), dae_name(at));
@@ -88,6 +93,7 @@ pl_status dae_error(dae_ctx *c, const xmlNode *at, pl_status status, const char 
     return pl_fail(c->diag, status, "%s", msg);
 }
 
+/* One warning per kind per file: a mesh of a million unsupported lines warns once, at the first. */
 void dae_warn_once(dae_ctx *c, const xmlNode *at, const char *kind, const char *fmt, ...)
 {
     for (int i = 0; i < c->num_warned; i++)
@@ -102,6 +108,8 @@ void dae_warn_once(dae_ctx *c, const xmlNode *at, const char *kind, const char *
 }
 
 /* ---- ids --------------------------------------------------------------------------------- */
+/* An open-addressing hash table of every element with an id, keyed by (id, element name), built
+ * once per file: each url="#id" reference resolves in constant time, however large the file. */
 
 static size_t hash_id(const char *s)
 {
@@ -151,6 +159,8 @@ static pl_status insert_ids(dae_ctx *c, xmlNode *n)
     return PL_OK;
 }
 
+/* Sized to at most half full (a power of two, so the probe masks), then filled; a duplicate id is
+ * refused with both lines. */
 pl_status dae_index_build(dae_ctx *c)
 {
     xmlNode *root = xmlDocGetRootElement(c->doc);
@@ -177,6 +187,7 @@ dae_entry *dae_index_find(const dae_index *ix, const char *id, const char *eleme
     return e->node ? e : NULL;
 }
 
+/* Only references inside the file ("#id"): a scene never names another file or a URL. */
 pl_status dae_resolve(dae_ctx *c, const xmlNode *at, const char *attr, const char *element,
                       dae_entry **out)
 {
@@ -206,6 +217,7 @@ static const char *text_of(const xmlNode *n, xmlChar **copy)
     return *copy ? (const char *)*copy : "";
 }
 
+/* The offending token, cut at 32 characters so a megabyte of junk makes a one-line message. */
 static pl_status bad_token(dae_ctx *c, const xmlNode *n, const char *what, const char *tok, const char *end)
 {
     int len = (int)(end - tok);
@@ -322,6 +334,9 @@ static pl_status read_numbers(dae_ctx *c, const xmlNode *n, bool ints, int max, 
     return st;
 }
 
+/* ---- the readers the modules call ---------------------------------------------------------------- */
+
+/* Exactly `want` numbers (or `want_alt`: an rgb or rgba colour) into a fixed array. */
 pl_status dae_floats(dae_ctx *c, const xmlNode *n, float *out, int want, int want_alt, int *found)
 {
     int k, cap = want > want_alt ? want : want_alt;
@@ -360,6 +375,7 @@ pl_status dae_child_float(dae_ctx *c, const xmlNode *parent, const char *name, f
     return n ? dae_floats(c, n, out, 1, 0, NULL) : PL_OK;
 }
 
+/* An integer attribute (count, stride, offset): whole text, no overflow, at least min. */
 pl_status dae_attr_int(dae_ctx *c, const xmlNode *n, const char *name, bool required, int def,
                        int min, int *out)
 {
@@ -380,6 +396,7 @@ pl_status dae_attr_int(dae_ctx *c, const xmlNode *n, const char *name, bool requ
     return PL_OK;
 }
 
+/* A colour is radiance or reflectance: rgb, with an alpha that is read and ignored; never negative. */
 pl_status dae_color(dae_ctx *c, const xmlNode *n, rgb *out)
 {
     float v[4];
@@ -415,6 +432,7 @@ pl_status dae_check_coord(dae_ctx *c, const xmlNode *at, const char *what, vec3 
                      "(check the node transforms above it)", what, p.x, p.y, p.z, DAE_MAX_COORD);
 }
 
+/* Asked before a list's primitives are made, so the cap refuses the memory before it is spent. */
 pl_status dae_check_room(dae_ctx *c, const xmlNode *at, long more)
 {
     long have = (long)c->out->num_triangles + c->out->num_spheres;

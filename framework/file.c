@@ -22,6 +22,7 @@ pl_status file_read_all(const char *path, const char *what, size_t max_bytes, ch
     /* O_NONBLOCK: opening a FIFO must not wait for a writer; the type check below refuses it. */
     int fd = open(path, O_RDONLY | O_NONBLOCK | O_CLOEXEC);
     if (fd < 0) return pl_fail(diag, PL_ERR_IO, "%s: cannot open %s: %s", path, what, strerror(errno));
+    /* The checks on the open descriptor, not the name: what is read is what was checked. */
     struct stat st;
     if (fstat(fd, &st) != 0) {
         pl_status s = pl_fail(diag, PL_ERR_IO, "%s: cannot read %s: %s", path, what, strerror(errno));
@@ -59,6 +60,7 @@ pl_status file_read_all(const char *path, const char *what, size_t max_bytes, ch
         got += (size_t)n;
     }
     close(fd);
+    /* NUL-terminated for the text parsers; the length stays exact for binary readers. */
     if (got > max_bytes) {
         free(buf);
         return pl_fail(diag, PL_ERR_IO, "%s: the %s grew past the limit of %zu bytes while being read", path, what,
@@ -70,6 +72,7 @@ pl_status file_read_all(const char *path, const char *what, size_t max_bytes, ch
     return PL_OK;
 }
 
+/* Case-insensitive, as file managers show extensions (x.PNG is a PNG). */
 bool file_has_extension(const char *path, const char *ext)
 {
     size_t n = strlen(path), e = strlen(ext);
@@ -88,6 +91,8 @@ static volatile sig_atomic_t temp_used[FILE_MAX_TEMPS];
 static bool cleanup_installed;
 static pthread_mutex_t temp_lock = PTHREAD_MUTEX_INITIALIZER;
 
+/* The handler: remove every registered temporary, then die of the same signal (the exit status
+ * the shell expects of a killed program). */
 static void remove_temps_and_die(int sig)
 {
     for (int i = 0; i < FILE_MAX_TEMPS; i++)
@@ -191,6 +196,7 @@ pl_status file_temp_create(const char *path, file_temp *t, pl_diag *diag)
     return PL_OK;
 }
 
+/* Close, reporting the errors a buffered FILE keeps until then (a full disk, a quota). */
 pl_status file_temp_close(file_temp *t, pl_diag *diag)
 {
     if (!t->f) return PL_OK;
@@ -201,6 +207,7 @@ pl_status file_temp_close(file_temp *t, pl_diag *diag)
     return PL_OK;
 }
 
+/* rename() within one folder is atomic: a reader sees the old file or the new one, never half. */
 pl_status file_temp_commit(file_temp *t, pl_diag *diag)
 {
     pl_status st = file_temp_close(t, diag);

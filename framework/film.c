@@ -4,6 +4,9 @@
 #include <stdio.h>
 #include <stdlib.h>
 
+/* ---- the film ------------------------------------------------------------------------------------ */
+
+/* Zeroed: every pixel starts with no samples and zero sums. */
 pl_status film_alloc(film *f, int width, int height)
 {
     f->width = width;
@@ -36,6 +39,10 @@ static film_sum square_of(uint64_t q)
     return (sq + ((film_sum)1 << (FILM_FRAC_BITS - 1))) >> FILM_FRAC_BITS;
 }
 
+/* ---- one pixel's accumulators ------------------------------------------------------------------ */
+
+/* All four values (r, g, b and luminance) are checked before any is added, so a bad sample leaves
+ * the sums untouched and counts only in n and bad. */
 bool film_pixel_add(film_pixel *p, rgb L)
 {
     float v[4] = {L.r, L.g, L.b, rgb_luminance(L)};
@@ -53,6 +60,7 @@ bool film_pixel_add(film_pixel *p, rgb L)
     return true;
 }
 
+/* Integer sums: adding two ranges' accumulators gives exactly the accumulators of both. */
 bool film_pixel_merge(film_pixel *into, const film_pixel *from)
 {
     if (from->n > UINT32_MAX - into->n || from->bad > UINT32_MAX - into->bad) return false;
@@ -117,6 +125,8 @@ double film_pixel_variance_of_mean(const film_pixel *p, int c)
     double var = fmax(0.0, (s2 - s1 * s1 / n) / (n - 1));  /* rounding can dip below 0 */
     return var / n;
 }
+
+/* ---- what the film shows -------------------------------------------------------------------------- */
 
 pl_status film_to_image(const film *f, image *out, int *samples, pl_diag *diag)
 {

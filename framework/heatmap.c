@@ -5,7 +5,7 @@
 #include "counters.h"
 #include "render.h"
 #include "colormap.h"
-#include "../parts/part1_raygen/part1.h"  /* call sites: framework/parts.h */
+#include "../parts/part1_raygen/part1.h"  /* call sites of the parts (framework/README.md) */
 #include "../parts/part2_bvh/part2.h"
 #include <stdio.h>
 #include <stdlib.h>

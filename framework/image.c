@@ -37,6 +37,8 @@ static unsigned char *zlib_compress(unsigned char *data, int data_len, int *out_
 #include <stb_image_write.h>
 #pragma GCC diagnostic pop
 
+/* ---- memory and the tone curve ------------------------------------------------------------------ */
+
 pl_status image_alloc(image *img, int width, int height)
 {
     img->width = width;
@@ -200,12 +202,15 @@ pl_status image_write_hdr(const image *img, const char *path, pl_diag *diag)
     return write_one(path, image_encode_hdr, img, diag);
 }
 
+/* The format follows the name, as CS184's -f does: .png tone-mapped for people, .hdr linear. */
 pl_status image_write(const image *img, const char *path, pl_diag *diag)
 {
     if (file_has_extension(path, ".png")) return image_write_png(img, path, diag);
     if (file_has_extension(path, ".hdr")) return image_write_hdr(img, path, diag);
     return pl_fail(diag, PL_ERR_INVALID, "%s: expected an output name ending in .png or .hdr", path);
 }
+
+/* ---- reading back (tests, tools, the grader's previews) -------------------------------------------- */
 
 pl_status image_read(const char *path, image *out, pl_diag *diag)
 {

@@ -3,6 +3,8 @@
 #ifndef PL_LIGHT_H
 #define PL_LIGHT_H
 
+#include "part_api.h"
+
 #include <stdbool.h>
 #include "scene.h"
 
@@ -16,8 +18,8 @@ typedef struct {
 
 /* Samples light l as seen from point p with uniform numbers u in [0,1)^2. Returns false when the
  * light contributes nothing at p (behind a one-sided area light, outside a spot cone, pdf 0). */
-bool light_sample_L(const light *l, vec3 p, vec2 u, light_sample *out);
+PL_PART_API bool light_sample_L(const light *l, vec3 p, vec2 u, light_sample *out);
 /* True for lights with a single direction (one sample per shading point suffices). */
-bool light_is_delta(const light *l);
+PL_PART_API bool light_is_delta(const light *l);
 
 #endif

@@ -2,6 +2,7 @@
  * Exit status: 0 success, 2 bad input (flags, scene, camera file, output names), 1 failure while
  * rendering or writing. */
 #include "cli.h"
+#include "clock.h"
 #include "dae.h"
 #include "camera_file.h"
 #include "render.h"
@@ -17,15 +18,7 @@
 #include <stdlib.h>
 #include <string.h>
 #include <strings.h>
-#include <time.h>
 #include <unistd.h>
-
-static double now_seconds(void)
-{
-    struct timespec ts;
-    clock_gettime(CLOCK_MONOTONIC, &ts);
-    return ts.tv_sec + ts.tv_nsec * 1e-9;
-}
 
 static void print_progress(void *user, int done, int total)
 {
@@ -48,11 +41,11 @@ static int trace_run(const render_ctx *ctx, const options *o, const char *prog)
 {
     trace_request req = {o->trace_x, o->trace_y, o->trace_first, o->trace_last, o->trace_json};
     pl_diag diag = pl_diag_default();
-    double t0 = now_seconds();
+    double t0 = clock_seconds();
     if (trace_pixel(ctx, &req, stdout, NULL, &diag) != PL_OK) return fail(prog, &diag, 1);
     /* -v: the cost of the trace itself, on stderr so the trace stays the same from run to run. */
     if (o->verbose) fprintf(stderr, "[pathlab] traced pixel (%d, %d) in %.4f s (BVH built in %.4f s)\n", o->trace_x,
-                            o->trace_y, now_seconds() - t0, ctx->accel->build_seconds);
+                            o->trace_y, clock_seconds() - t0, ctx->accel->build_seconds);
     return 0;
 }
 
@@ -125,12 +118,12 @@ static int run(const options *o, const char *prog)
     output_set out;
     scene s;
     int code = output_plan(&out, o, &diag) != PL_OK ? fail(prog, &diag, 2) : 0;
-    double t0 = now_seconds();
+    double t0 = clock_seconds();
     if (code || (code = load(o, &s, prog)) != 0) {
         output_free(&out);
         return code;
     }
-    double load_seconds = now_seconds() - t0;
+    double load_seconds = clock_seconds() - t0;
     image img = {0};
     film fm = {0};
     int *samples = NULL;
@@ -162,14 +155,14 @@ static int run(const options *o, const char *prog)
     if (stats.bad_pixels)
         fprintf(stderr, "%s: warning: %d pixels have NaN, infinite or negative radiance (first at x=%d y=%d, "
                         "counted from the bottom-left)\n", prog, stats.bad_pixels, stats.first_bad_x, stats.first_bad_y);
-    double t1 = now_seconds();
+    double t1 = clock_seconds();
     rate_map rates = {samples, w, h, o->spp};
     sidecar_info info = {&ctx, load_seconds, a.build_seconds, &stats, o->adaptive ? samples : NULL};
     exr_info provenance;
     exr_image exr_out = {&fm, &provenance};
     if (exr && range_info(o, &provenance, &diag) != PL_OK) { code = fail(prog, &diag, 1); goto done; }
     if (write_outputs(&out, o, &info, &rates, &exr_out, &img, &heat, &diag) != PL_OK) { code = fail(prog, &diag, 1); goto done; }
-    if (!o->quiet) print_summary(o, &s, &a, &stats, &out, load_seconds, now_seconds() - t1);
+    if (!o->quiet) print_summary(o, &s, &a, &stats, &out, load_seconds, clock_seconds() - t1);
 done:
     free(samples);
     heatmap_free(&heat);

@@ -1,8 +1,10 @@
 /* The render: estimator dispatch and the tiled, multi-threaded pixel loop. */
 #include "render.h"
+#include "check.h"
+#include "clock.h"
 #include "counters.h"
 #include "trace.h"
-#include "../parts/part1_raygen/part1.h"  /* call sites: framework/parts.h */
+#include "../parts/part1_raygen/part1.h"  /* call sites of the parts (framework/README.md) */
 #include "../parts/part3_direct/part3.h"
 #include "../parts/part4_global/part4.h"
 #include "../parts/part5_adaptive/part5.h"
@@ -62,6 +64,13 @@ rgb one_bounce_radiance(const render_ctx *ctx, const ray *r, const hit *h, rng *
     return SEAM_RGB(one_bounce_radiance, ctx, r, h, direct_light(ctx, r, h, g));
 }
 
+int render_light_samples(const render_ctx *ctx, const ray *r)
+{
+    PL_CHECK(r->depth >= 0);
+    int asked = ctx->opts->light_samples;
+    return r->depth == 0 && asked > 1 ? asked : 1;
+}
+
 rgb radiance_estimate(const render_ctx *ctx, ray *r, rng *g)
 {
     /* Zeroed: a hit is filled only on a hit, and with parts 2-4 stubbed link-time optimisation
@@ -92,6 +101,7 @@ static bool converged(const options *o, const film_pixel *p)
 void render_pixel(const render_ctx *ctx, int x, int y, film_pixel *p)
 {
     const options *o = ctx->opts;
+    PL_CHECK(x >= 0 && x < ctx->width && y >= 0 && y < ctx->height && ctx->sample_begin <= ctx->sample_end);
     int batch = o->adaptive_batch > 0 ? o->adaptive_batch : 1;
     for (int s = ctx->sample_begin; s < ctx->sample_end; s++) {
         /* Everything sample s draws comes from its own stream: no dependence on threads or ranges. */
@@ -170,13 +180,6 @@ static void *render_worker(void *arg)
     return NULL;
 }
 
-static double now_seconds(void)
-{
-    struct timespec ts;
-    clock_gettime(CLOCK_MONOTONIC, &ts);
-    return ts.tv_sec + ts.tv_nsec * 1e-9;
-}
-
 /* The loop behind render_film and render_image: into a film, or straight into an image. */
 static pl_status render_run(render_job job, render_stats *stats, pl_diag *diag)
 {
@@ -196,7 +199,7 @@ static pl_status render_run(render_job job, render_stats *stats, pl_diag *diag)
     int nthreads = ctx->opts->threads > 0 ? ctx->opts->threads : 1;
     pthread_t *threads = calloc((size_t)nthreads, sizeof *threads);
     if (!threads) return pl_fail(diag, PL_ERR_NOMEM, "render: out of memory");
-    double t0 = now_seconds();
+    double t0 = clock_seconds();
     int started = 0;
     for (; started < nthreads; started++)
         if (pthread_create(&threads[started], NULL, render_worker, &job) != 0) break;
@@ -214,7 +217,7 @@ static pl_status render_run(render_job job, render_stats *stats, pl_diag *diag)
 
     if (stats) {
         memset(stats, 0, sizeof *stats);
-        stats->seconds = now_seconds() - t0;
+        stats->seconds = clock_seconds() - t0;
         stats->rays = atomic_load(&job.rays);
         stats->node_visits = atomic_load(&job.node_visits);
         stats->prim_tests = atomic_load(&job.prim_tests);

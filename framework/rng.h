@@ -5,19 +5,21 @@
 #ifndef PL_RNG_H
 #define PL_RNG_H
 
+#include "part_api.h"
+
 #include <stdint.h>
 #include "vec.h"
 
 typedef struct { uint64_t state, inc; } rng;
 
 /* A generator for one (pixel, sample) of a render with the given seed. */
-rng rng_for_sample(uint64_t seed, uint64_t pixel, uint64_t sample);
+PL_PART_API rng rng_for_sample(uint64_t seed, uint64_t pixel, uint64_t sample);
 /* A generator from a single 64-bit seed and stream id (tests, tools). */
-rng rng_seeded(uint64_t seed, uint64_t stream);
+PL_PART_API rng rng_seeded(uint64_t seed, uint64_t stream);
 
-uint32_t rng_u32(rng *r);
+PL_PART_API uint32_t rng_u32(rng *r);
 /* Uniform in [0, 1): never returns 1.0f. */
-float rng_uniform(rng *r);
+PL_PART_API float rng_uniform(rng *r);
 static inline vec2 rng_uniform2(rng *r)
 {
     float a = rng_uniform(r);

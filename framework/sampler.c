@@ -22,6 +22,7 @@ vec3 sample_cosine_hemisphere(vec2 u)
 }
 float sample_cosine_hemisphere_pdf(vec3 w) { return w.z > 0.0f ? w.z * PL_INV_PI : 0.0f; }
 
+/* The hemisphere's construction with z over [-1, 1]: the whole sphere, density 1 / (4 pi). */
 vec3 sample_uniform_sphere(vec2 u)
 {
     float z = 1.0f - 2.0f * u.x;

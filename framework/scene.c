@@ -1,18 +1,21 @@
 /* The scene container: growable arrays and primitive numbering. */
 #include "scene.h"
 #include "buf.h"
+#include "check.h"
 #include "counters.h"
-#include "../parts/part1_raygen/part1.h"  /* call sites: framework/parts.h */
+#include "../parts/part1_raygen/part1.h"  /* call sites of the parts (framework/README.md) */
 #include <stdlib.h>
 #include <string.h>
 
+/* ---- owning the arrays ------------------------------------------------------------------------ */
+
+/* NULL-safe, and the scene is left empty (every count 0), so a second free or a later use of the
+ * counts is harmless. */
 void scene_free(scene *s)
 {
     if (!s) return;
-    free(s->triangles);
-    free(s->spheres);
-    free(s->materials);
-    free(s->lights);
+    void *owned[] = {s->triangles, s->spheres, s->materials, s->lights};
+    for (size_t i = 0; i < sizeof owned / sizeof owned[0]; i++) free(owned[i]);
     memset(s, 0, sizeof *s);
 }
 
@@ -34,6 +37,9 @@ int scene_add_light(scene *s, light l)
     return buf_append(&s->lights, &s->num_lights, &s->capacity.lights, sizeof l, &l);
 }
 
+/* ---- building the parts of a scene by code (the loader and the tests) ------------------------- */
+
+/* A diffuse material of albedo (reflectance) and Le (emitted radiance); every other field zero. */
 material material_make(rgb albedo, rgb Le)
 {
     material m;
@@ -44,6 +50,8 @@ material material_make(rgb albedo, rgb Le)
     return m;
 }
 
+/* A flat triangle: its face normal, by the right-hand rule on p0 p1 p2, at all three corners
+ * (meshes with their own normals fill n0..n2 themselves). */
 triangle triangle_make(vec3 p0, vec3 p1, vec3 p2, int mat)
 {
     vec3 n = vec3_normalize(vec3_cross(vec3_sub(p1, p0), vec3_sub(p2, p0)));
@@ -51,6 +59,9 @@ triangle triangle_make(vec3 p0, vec3 p1, vec3 p2, int mat)
     return t;
 }
 
+/* ---- primitives by number: triangles first, then spheres ---------------------------------------- */
+
+/* One numbering for both kinds, so a BVH stores plain ints and part 2 never asks which kind. */
 aabb scene_prim_bounds(const scene *s, int prim)
 {
     if (prim < s->num_triangles) {
@@ -74,6 +85,8 @@ aabb scene_bounds(const scene *s)
 
 bool scene_prim_intersect(const scene *s, int prim, ray *r, hit *h)
 {
+    PL_CHECK(prim >= 0 && prim < scene_prim_count(s));
+    /* Counted here, whatever the caller: part 2's work per ray is the framework's figure. */
     counters_add_prim(prim);
     bool found;
     int mat;
@@ -85,6 +98,8 @@ bool scene_prim_intersect(const scene *s, int prim, ray *r, hit *h)
         found = sphere_intersect(sp, r, h);
         mat = sp->material;
     }
+    /* Part 1's intersection functions fill the hit's geometry; which primitive and material it was
+     * is the framework's to record. */
     if (found) {
         h->prim = prim;
         h->material = mat;

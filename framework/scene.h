@@ -6,6 +6,8 @@
 #ifndef PL_SCENE_H
 #define PL_SCENE_H
 
+#include "part_api.h"
+
 #include <stdbool.h>
 #include <stdint.h>
 #include "vec.h"
@@ -79,15 +81,15 @@ typedef struct scene {
 void scene_free(scene *s);
 
 static inline int scene_prim_count(const scene *s) { return s->num_triangles + s->num_spheres; }
-aabb scene_prim_bounds(const scene *s, int prim);
-vec3 scene_prim_centroid(const scene *s, int prim);
-aabb scene_bounds(const scene *s);
+PL_PART_API aabb scene_prim_bounds(const scene *s, int prim);
+PL_PART_API vec3 scene_prim_centroid(const scene *s, int prim);
+PL_PART_API aabb scene_bounds(const scene *s);
 
 /* Intersects one primitive through part 1's triangle_intersect / sphere_intersect, setting
  * h->prim and h->material on a hit. Shrinks r->max_t on a hit, like them. Every call counts as one
  * primitive test on the calling thread: the framework's count (counters.h), which a traversal
  * cannot report for itself. Traversals test primitives only through this function. */
-bool scene_prim_intersect(const scene *s, int prim, ray *r, hit *h);
+PL_PART_API bool scene_prim_intersect(const scene *s, int prim, ray *r, hit *h);
 
 /* Appending, for loaders and tests. Each returns the new element's index, or -1 without memory. */
 int scene_add_material(scene *s, material m);

@@ -36,6 +36,9 @@ static json_t *string_lossy(const char *s)
     return j;
 }
 
+/* The whole sidecar in one json_pack: the keys read in the order the file lists them (README.md
+ * names what a render records). Strings from the user (paths, the command line) go through
+ * string_lossy; numbers are the render's own. */
 pl_status sidecar_encode(FILE *f, const void *user, pl_diag *diag)
 {
     const sidecar_info *info = user;
@@ -44,6 +47,7 @@ pl_status sidecar_encode(FILE *f, const void *user, pl_diag *diag)
     const render_stats *r = info->render;
     const scene *s = ctx->scene;
     accel_shape shape = accel_bvh_shape(ctx->accel);
+    /* Rays per second over the pixel loop's wall time; 0 for a loop too quick for the clock. */
     double mrays = r->seconds > 0 ? r->rays / r->seconds * 1e-6 : 0.0;
     int w = ctx->x1 - ctx->x0, h = ctx->y1 - ctx->y0;
     json_t *root = json_pack(
@@ -67,6 +71,7 @@ pl_status sidecar_encode(FILE *f, const void *user, pl_diag *diag)
         "mean_samples_per_pixel", (double)r->samples / ((double)w * h), "bad_pixels", r->bad_pixels);
     /* --crop: the window rendered; the image and the per-pixel counts are the window's. */
     if (root && o->crop) json_object_set_new(root, "crop", json_pack("[iiii]", ctx->x0, ctx->y0, ctx->x1, ctx->y1));
+    /* Per-pixel sample counts only when the caller asks: top row first, as the image. */
     if (root && info->samples_per_pixel) {
         json_t *rows = json_array();
         for (int y = 0; y < h && rows; y++) {

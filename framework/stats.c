@@ -16,6 +16,10 @@
 #define CF_EPS 1e-15
 #define CF_MAX_ITER 10000
 
+/* ---- running moments ------------------------------------------------------------------------- */
+
+/* Welford: the mean and the sum of squared deviations updated together, so no large sums of squares
+ * cancel (a naive sum(x^2) - n mean^2 loses every digit for values far from zero). */
 void stats_acc_add(stats_acc *a, double x)
 {
     a->n++;
@@ -27,6 +31,9 @@ void stats_acc_add(stats_acc *a, double x)
 double stats_acc_var(const stats_acc *a) { return a->n > 1 ? fmax(0.0, a->m2 / (double)(a->n - 1)) : 0.0; }
 double stats_acc_sem(const stats_acc *a) { return a->n > 0 ? sqrt(stats_acc_var(a) / (double)a->n) : 0.0; }
 
+/* ---- special functions ------------------------------------------------------------------------- */
+
+/* The series of P(a, x): converges fast below a + 1, where the continued fraction would not. */
 static double gamma_series(double a, double x)
 {
     double term = 1.0 / a, sum = term;
@@ -115,6 +122,7 @@ double stats_t_sf2(double t, double dof)
     return stats_beta_inc(0.5 * dof, 0.5, dof / (dof + t * t));
 }
 
+/* Bisection on the tail, which falls monotonically in |t|: slow, but only tests call it. */
 double stats_t_quantile2(double p, double dof)
 {
     double lo = 0.0, hi = 1.0;
@@ -132,6 +140,8 @@ double stats_sidak(double family_alpha, int m)
     return -expm1(log1p(-family_alpha) / (double)(m > 0 ? m : 1));
 }
 
+/* ---- tests ----------------------------------------------------------------------------------------- */
+
 stats_result stats_ttest_mean(const stats_acc *a, double mu, double alpha)
 {
     stats_result r = {0.0, (double)(a->n - 1), 1.0, false};
@@ -146,6 +156,7 @@ stats_result stats_ttest_mean(const stats_acc *a, double mu, double alpha)
         r.stat = r.reject ? INFINITY : 0.0;
         return r;
     }
+    /* The t statistic with n - 1 degrees of freedom, and its two-sided tail. */
     r.stat = (a->mean - mu) / sem;
     r.p = stats_t_sf2(r.stat, r.dof);
     r.reject = r.p < alpha;
@@ -185,6 +196,7 @@ stats_result stats_chi2_test(const double *observed, const double *expected, int
     stats_result r = {0.0, 0.0, 1.0, false};
     bin_pair *v = malloc(sizeof *v * (size_t)(bins > 0 ? bins : 1));
     if (!v) { r.reject = true; r.p = 0.0; return r; }
+    /* Sparsest bins first, so pooling joins the bins whose counts are too small to trust alone. */
     for (int i = 0; i < bins; i++) { v[i].obs = observed[i]; v[i].exp = expected[i]; }
     qsort(v, (size_t)bins, sizeof *v, by_expected);
 
@@ -226,4 +238,13 @@ double stats_binomial_p2(long k, long n, double p)
     double upper = k <= 0 ? 1.0 : stats_beta_inc((double)k, (double)(n - k) + 1.0, p);
     double two = 2.0 * (lower < upper ? lower : upper);
     return two < 1.0 ? two : 1.0;
+}
+
+/* ---- image error ---------------------------------------------------------------------------- */
+
+double stats_rel_mse(const float *candidate, const float *reference, long count)
+{
+    double sum = 0.0;
+    for (long i = 0; i < count; i++) sum += stats_rel_se(candidate[i], reference[i]);
+    return count > 0 ? sum / (double)count : 0.0;
 }

@@ -1,6 +1,6 @@
 /* Statistics shared by the tests and the grader: running means and variances, Student's t test, Pearson's
- * chi-square test with pooling of sparse bins, and the Sidak correction that keeps a whole suite's
- * false-alarm rate at its stated alpha. The special functions are written from their textbook
+ * chi-square test with pooling of sparse bins, the Sidak correction that keeps a whole suite's
+ * false-alarm rate at its stated alpha, and relMSE, the image error the grader and imgtool report. The special functions are written from their textbook
  * definitions (series and continued fractions); see stats.c. */
 #ifndef PL_STATS_H
 #define PL_STATS_H
@@ -50,5 +50,12 @@ stats_result stats_chi2_test(const double *observed, const double *expected, int
  * smaller tail (P(X <= k), P(X >= k)), at most 1. Rejecting when it is below alpha fails a correct
  * proportion with probability at most alpha, at any n (no normal approximation). */
 double stats_binomial_p2(long k, long n, double p);
+
+/* ---- image error --------------------------------------------------------------------------- */
+/* One value's share of relMSE: (c - r)^2 / (r^2 + 0.01), the squared error relative to the
+ * reference's brightness; the 0.01 keeps black reference pixels from dividing by zero. */
+static inline double stats_rel_se(double c, double r) { return (c - r) * (c - r) / (r * r + 0.01); }
+/* relMSE of count values (e.g. 3 x pixels of rgb): the mean of stats_rel_se; 0 for count 0. */
+double stats_rel_mse(const float *candidate, const float *reference, long count);
 
 #endif

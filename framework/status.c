@@ -3,6 +3,7 @@
 #include <stdarg.h>
 #include <stdio.h>
 
+/* The default destination of warnings: the console, one line each. */
 static void print_warning(void *user, const char *msg)
 {
     (void)user;
@@ -15,6 +16,8 @@ pl_diag pl_diag_default(void)
     return d;
 }
 
+/* Formats into the channel and hands the status back, so a failure is one line at its call site:
+ * `return pl_fail(diag, PL_ERR_PARSE, ...)`. The message is cut at PL_DIAG_MSG_MAX, never overflows. */
 pl_status pl_fail(pl_diag *d, pl_status status, const char *fmt, ...)
 {
     if (d) {
@@ -26,6 +29,8 @@ pl_status pl_fail(pl_diag *d, pl_status status, const char *fmt, ...)
     return status;
 }
 
+/* A warning goes to the channel's collector (tests count them) or is printed; either way the
+ * count goes up, so a caller can tell a clean load from one that needed warnings. */
 void pl_warn(pl_diag *d, const char *fmt, ...)
 {
     char msg[PL_DIAG_MSG_MAX];
@@ -41,6 +46,7 @@ void pl_warn(pl_diag *d, const char *fmt, ...)
     }
 }
 
+/* Names for messages; a value outside the enum (memory gone wrong) still gets a string. */
 const char *pl_status_name(pl_status s)
 {
     switch (s) {

@@ -5,6 +5,8 @@
 #ifndef PL_STATUS_H
 #define PL_STATUS_H
 
+#include "part_api.h"
+
 typedef enum {
     PL_OK = 0,
     PL_ERR_TODO,     /* a student task is not implemented yet (a stub ran) */
@@ -25,17 +27,17 @@ typedef struct pl_diag {
 } pl_diag;
 
 /* A diagnostics channel that prints warnings to stderr. */
-pl_diag pl_diag_default(void);
+PL_PART_API pl_diag pl_diag_default(void);
 
 /* Records a formatted error in d (if d is not NULL) and returns status, so callers can write
  * `return pl_fail(d, PL_ERR_PARSE, "%s:%d: <%s>: expected ...", ...);`. */
-pl_status pl_fail(pl_diag *d, pl_status status, const char *fmt, ...)
+PL_PART_API pl_status pl_fail(pl_diag *d, pl_status status, const char *fmt, ...)
     __attribute__((format(printf, 3, 4)));
 
 /* Reports a warning through d (to stderr when d is NULL). */
-void pl_warn(pl_diag *d, const char *fmt, ...) __attribute__((format(printf, 2, 3)));
+PL_PART_API void pl_warn(pl_diag *d, const char *fmt, ...) __attribute__((format(printf, 2, 3)));
 
 /* A short name for a status, e.g. "parse error". */
-const char *pl_status_name(pl_status s);
+PL_PART_API const char *pl_status_name(pl_status s);
 
 #endif

@@ -6,13 +6,15 @@
 #ifndef PL_TODO_H
 #define PL_TODO_H
 
+#include "part_api.h"
+
 #include <stdbool.h>
 #include "status.h"
 #include "vec.h"
 #include "ray.h"
 
 /* Reports the missing task (once per function name) and counts the call. */
-void pl_todo_report(const char *task, const char *function);
+PL_PART_API void pl_todo_report(const char *task, const char *function);
 
 /* How many stub calls have happened since the last reset (all threads). */
 int pl_todo_count(void);

@@ -1,6 +1,7 @@
 /* Grader machinery: not part of any assignment.
  * The allow-list: every function a student's part may call, in one place (handout/README.md,
- * "What your part may call", says the same to students). A part's compiled objects may refer only
+ * "What your part may call", says the same to students; make test-grader checks both against the
+ * PL_PART_API marks of the framework headers). A part's compiled objects may refer only
  * to these names, to its own functions and to the other parts' (grade_inspect.c checks it).
  *
  * Why so narrow: part code runs inside the grader's test and render processes, so any function it
@@ -14,7 +15,9 @@
 #include <stdio.h>
 #include <string.h>
 
-/* The framework API part code is meant to call (its static inline helpers need no entry). */
+/* The framework API part code is meant to call: exactly the functions the framework headers mark
+ * PL_PART_API (framework/part_api.h; make test-grader checks the two agree). Its static inline
+ * helpers need no entry. */
 static const char *const allowed_framework[] = {
     /* math: 4x4 transforms */
     "mat4_dir", "mat4_from_basis", "mat4_identity", "mat4_inverse", "mat4_lookat", "mat4_mul", "mat4_normal",
@@ -28,7 +31,7 @@ static const char *const allowed_framework[] = {
     "light_sample_L",
     /* the intersection entry points and the estimators a later part builds on */
     "scene_prim_intersect", "accel_intersect", "accel_occluded", "linear_intersect", "linear_occluded",
-    "render_intersect", "render_occluded", "one_bounce_radiance", "radiance_estimate",
+    "render_intersect", "render_occluded", "one_bounce_radiance", "radiance_estimate", "render_light_samples",
     /* stubs and statuses: PL_TODO and friends (todo.h), a failure with its message (status.h) */
     "pl_todo_report", "pl_fail", "pl_warn", "pl_status_name", "pl_diag_default",
     NULL};
@@ -65,6 +68,8 @@ static bool libm_function(const char *s)
     snprintf(base, sizeof base, "%.*s", (int)n - 1, s);
     return s[n - 1] == 'f' && in_list(allowed_libm, base);
 }
+
+const char *const *grade_allowed_framework(void) { return allowed_framework; }
 
 bool grade_allowed_symbol(const char *name)
 {

@@ -15,5 +15,8 @@ bool grade_inspect_part(const char *tree, const char *folder, const char *work, 
 /* True when part code may refer to name: the allow-list (grade_allow.c), not counting the parts'
  * own functions, which grade_inspect_part adds. */
 bool grade_allowed_symbol(const char *name);
+/* The framework functions on that list, NULL-terminated: the ones the framework headers mark PL_PART_API
+ * (tests/grader/test_allow.c checks that the two agree). */
+const char *const *grade_allowed_framework(void);
 
 #endif

@@ -4,6 +4,7 @@
  * runs the same test on those answers. Only the judge's results count: what the subject prints,
  * exits with or writes to files is never read. One pair of processes per test, so a crash, a hang
  * or a corrupted subject costs that test only. */
+#include "../framework/clock.h"
 #include "grade.h"
 #include "grade_suite.h"
 #include <errno.h>
@@ -30,13 +31,6 @@ typedef struct {
     char names[MAX_TESTS][NAME_MAX_LEN];
     int count;
 } test_list;
-
-static double now(void)
-{
-    struct timespec ts;
-    clock_gettime(CLOCK_MONOTONIC, &ts);
-    return (double)ts.tv_sec + ts.tv_nsec * 1e-9;
-}
 
 /* The course's judge, built in the course's tree (never the grading tree, whose objects the
  * submission's compiler run could have touched), with the grading tree's flags. */
@@ -162,9 +156,9 @@ void grade_judge_suite(const grade_env *env, const char *tree, const grade_part_
                  "%d: the course's problem, please tell the staff", list.count, p->unit_tests);
         return;
     }
-    double t0 = now();
+    double t0 = clock_seconds();
     for (int k = 0; k < list.count; k++) {
-        if (now() - t0 > SPLIT_SECONDS) {
+        if (clock_seconds() - t0 > SPLIT_SECONDS) {
             snprintf(r->suite_reason, sizeof r->suite_reason, "the suite ran past %d s (%d of %d tests run)", SPLIT_SECONDS,
                      k, list.count);
             break;

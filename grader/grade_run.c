@@ -1,5 +1,6 @@
 /* Grader machinery: not part of any assignment. Children: own process group, limits, a timeout. */
 #include "grade.h"
+#include "../framework/clock.h"
 #include <errno.h>
 #include <grp.h>
 #include <pwd.h>
@@ -16,13 +17,6 @@
 #include <sys/wait.h>
 #include <time.h>
 #include <unistd.h>
-
-static double now(void)
-{
-    struct timespec ts;
-    clock_gettime(CLOCK_MONOTONIC, &ts);
-    return (double)ts.tv_sec + ts.tv_nsec * 1e-9;
-}
 
 /* Limits for untrusted children: generous for a render of a grading case, small for a fork bomb,
  * a memory hog or a file flood. */
@@ -162,7 +156,7 @@ bool grade_pipe(int fds[2])
 grade_run_result grade_run_piped(char *const argv[], const grade_run_opts *o, int in_fd, int fd3)
 {
     grade_run_result r = {false, -1, false, 0.0};
-    double t0 = now();
+    double t0 = clock_seconds();
     int log_fd = open_log(o->log_path), fds[2] = {-1, -1};
     if (log_fd < 0 || !grade_pipe(fds)) {
         if (log_fd >= 0) close(log_fd);
@@ -191,7 +185,7 @@ grade_run_result grade_run_piped(char *const argv[], const grade_run_opts *o, in
         pid_t w = waitpid(pid, &status, WNOHANG);
         if (w == pid) break;
         if (w < 0 && errno != EINTR) break;
-        if (now() - t0 > o->wall_seconds) {
+        if (clock_seconds() - t0 > o->wall_seconds) {
             r.timed_out = true;
             kill(-pid, SIGKILL);
             waitpid(pid, &status, 0);
@@ -207,7 +201,7 @@ grade_run_result grade_run_piped(char *const argv[], const grade_run_opts *o, in
     }
     close(fds[0]);
     close(log_fd);
-    r.seconds = now() - t0;
+    r.seconds = clock_seconds() - t0;
     if (!r.timed_out && WIFEXITED(status)) {
         r.exited = true;
         r.status = WEXITSTATUS(status);

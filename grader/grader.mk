@@ -6,7 +6,7 @@ GRADER_OBJ := $(patsubst %.c,$(BUILD)/%.o,$(GRADER_SRC))
 # bin/grade links the framework's file, image and statistics code, never a part: it must not run
 # student code in its own process. The command line and the render key (cli.o, range.o and the
 # output.o the merge writes through) come along for checking the references (grade_refs.c).
-GRADER_FRAMEWORK_OBJ := $(addprefix $(BUILD)/framework/,image.o file.o exr.o film.o status.o stats.o utf8.o cli.o \
+GRADER_FRAMEWORK_OBJ := $(addprefix $(BUILD)/framework/,image.o file.o exr.o film.o status.o stats.o utf8.o clock.o cli.o \
                           range.o output.o) \
                         $(BUILD)/third_party/lodepng/lodepng.o
 $(BIN)/grade: $(BUILD)/grader/grade_main.o $(GRADER_OBJ) $(GRADER_FRAMEWORK_OBJ)

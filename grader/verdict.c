@@ -152,7 +152,7 @@ pl_status verdict_compute(const verdict_image *cand, const verdict_image *ref, c
                 diff_add(&acc[k], d, r[ch], var);
                 diff_add(&whole[ch], d, r[ch], var);
                 cand_total[ch] += c[ch];
-                se += d * d / ((double)r[ch] * r[ch] + 0.01);
+                se += stats_rel_se(c[ch], r[ch]);
             }
         }
     }

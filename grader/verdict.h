@@ -3,9 +3,11 @@
  * Carlo noise? The grader reads both images from files (never from what student code prints) and
  * calls verdict_compute in its own process.
  *
- * The statistic: per block of pixels and per channel, a paired t test on the pixel differences
- * d = candidate - reference, t = mean(d) / (sd(d) / sqrt(m)) with m - 1 degrees of freedom, plus
- * the same test over the whole image (the most powerful one for a global factor such as 2 or pi).
+ * The statistic: per block of pixels and per channel, a paired test on the pixel differences
+ * d = candidate - reference: Johnson's t for skewed populations (verdict.c, paired_p), that is
+ * mean(d) / (sd(d) / sqrt(m)) plus a correction for the skew of d, with m - 1 degrees of freedom;
+ * plus the same test over the whole image (the most powerful one for a global factor such as 2 or
+ * pi).
  * Why this statistic:
  * - it needs no variance from the candidate's file: the spread of d across the block's pixels
  *   estimates the noise of both renders, so a submission that forges its variance channel cannot
@@ -13,9 +15,10 @@
  * - pixels draw from independent RNG streams, so the d of one block are independent, as the test
  *   assumes; pixels differ in variance, which a sum over many pixels tolerates (the block variance
  *   is their average);
- * - radiance at few samples is heavy-tailed and skewed (rare bright paths): a t test is trustworthy
- *   only when a block holds many samples, so blocks are sized to hold at least
- *   min_block_samples candidate samples (and min_block_pixels pixels), never a fixed 8x8.
+ * - radiance at few samples is heavy-tailed and skewed (rare bright paths): Johnson's correction
+ *   takes the first-order effect of the skew out, and a t test is trustworthy only when a block
+ *   holds many samples, so blocks are sized to hold at least min_block_samples candidate samples
+ *   (and min_block_pixels pixels), never a fixed 8x8.
  * (With known_variance, a z test against the reference's variance instead: verdict_params.)
  * The p-values of all K tests are combined with Sidak: the case p-value is 1 - (1 - p_min)^K, uniform
  * on [0, 1] for a correct render, and the case fails when it is below family_alpha. */
@@ -35,7 +38,7 @@ typedef struct {
     double family_alpha;    /* chance a correct render fails the case (1e-3) */
     int candidate_spp;      /* samples per pixel of the candidate render (sizes the blocks) */
     int min_block_pixels;   /* at least this many pixels per block (64) */
-    long min_block_samples; /* at least this many candidate samples per block (4096) */
+    long min_block_samples; /* at least this many candidate samples per block (8192) */
     /* Known variance: test each block's sum of differences against the variance the reference
      * predicts (ref->var, scaled to the candidate's samples: reference_spp / candidate_spp + 1),
      * a z test, instead of the paired t test's spread. For images whose differences are mostly

@@ -15,6 +15,7 @@
 #include <stdlib.h>
 #include <string.h>
 #include "../framework/image.h"
+#include "../framework/stats.h"
 
 #define MONTAGE_MAX 32
 
@@ -79,13 +80,8 @@ static int cmd_pair(const char *pa, const char *pb, const char *out)
     if (!load(pa, &a) || !load(pb, &b) || !same_size(&a, pa, &b, pb)) goto done;
     long n = (long)a.width * a.height;
     if (!out) {
-        double sum = 0.0;
-        for (long i = 0; i < n; i++) {
-            const float *c = &a.pixels[i].r, *r = &b.pixels[i].r;
-            for (int k = 0; k < 3; k++)
-                sum += (double)(c[k] - r[k]) * (c[k] - r[k]) / ((double)r[k] * r[k] + 0.01);
-        }
-        printf("%.6f\n", sum / (3.0 * n));
+        /* rgb is three floats, so the pixels are 3n floats in a row. */
+        printf("%.6f\n", stats_rel_mse(&a.pixels[0].r, &b.pixels[0].r, 3 * n));
     } else {
         for (long i = 0; i < n; i++) {
             rgb p = a.pixels[i], q = b.pixels[i];

@@ -1,6 +1,6 @@
 /* Instructor tooling: not part of any assignment.
  * bin/references: renders the reference image of every grading case (grading/cases.json) with the
- * solution, as sample ranges merged exactly (DESIGN.md sections 4 and 8), into
+ * solution, as sample ranges merged exactly (framework/range.h; grading/README.md), into
  *   reference_images/part<N>/<case>.exr   mean, variance of the mean, sample count, provenance
  *   reference_images/part<N>/<case>.png   a preview
  *   reference_images/part<N>/<case>.json  the provenance: the key it was made from, command, seed,
@@ -20,6 +20,7 @@
  *   --out DIR (reference_images) and --work DIR (build/references) move the results and the ranges.
  * CASE is a case name or part<N>; none means every case. */
 #include "../../grader/grade.h"
+#include "../../framework/clock.h"
 #include "../../framework/exr.h"
 #include "../../framework/file.h"
 #include <dirent.h>
@@ -30,19 +31,11 @@
 #include <stdlib.h>
 #include <string.h>
 #include <sys/stat.h>
-#include <time.h>
 #include <unistd.h>
 
 #define RANGE_SAMPLES 256        /* samples per range: one range is a few seconds to a minute */
 #define REFERENCE_SEED 1000000000000ull  /* above every grading seed (grade draws them below 10^12) */
 #define RENDER_SECONDS 3600.0
-
-static double now(void)
-{
-    struct timespec ts;
-    clock_gettime(CLOCK_MONOTONIC, &ts);
-    return (double)ts.tv_sec + ts.tv_nsec * 1e-9;
-}
 
 /* ---- the key: what a reference was made from ------------------------------------------------ */
 
@@ -316,8 +309,7 @@ static bool merge_case(const ref_case *rc)
 typedef struct {
     ref_case *cases;
     int num_cases;
-    int next_case, next_range;  /* the queue */
-    int done, total;
+    int next_case, next_range, done, total;  /* the queue; ranges rendered, of all */
     double start;
     bool failed;
     pthread_mutex_t lock;
@@ -358,7 +350,7 @@ static void *worker(void *arg)
             p->failed = true;
             fprintf(stderr, "\nreferences: %s range %d failed; see %s\n", rc->spec->name, r, log);
         }
-        double elapsed = now() - p->start, eta = elapsed / p->done * (p->total - p->done);
+        double elapsed = clock_seconds() - p->start, eta = elapsed / p->done * (p->total - p->done);
         fprintf(stderr, "\r  %d/%d ranges (%s), %.0f s, about %.0f s to go   ", p->done, p->total, rc->spec->name,
                 elapsed, eta);
         pthread_mutex_unlock(&p->lock);
@@ -449,96 +441,115 @@ static int usage(void)
     return 2;
 }
 
-int main(int argc, char **argv)
+/* ---- the command ---------------------------------------------------------------------------------- */
+
+typedef struct {
+    bool force, slurm, status, merge_only;
+    int jobs;
+    const char *sbatch_args, *out_dir, *work_dir;
+    int num_names;       /* the CASE|partN arguments ... */
+    char **names;        /* ... (none: every case) */
+} ref_options;
+
+/* Flags first, then case or part names; false on anything else. */
+static bool parse_args(int argc, char **argv, ref_options *o)
 {
-    bool force = false, slurm = false, status = false, merge_only = false;
-    int jobs = (int)sysconf(_SC_NPROCESSORS_ONLN);
-    const char *sbatch_args = "", *out_dir = "reference_images", *work_dir = "build/references";
+    *o = (ref_options){false, false, false, false, (int)sysconf(_SC_NPROCESSORS_ONLN), "", "reference_images",
+                       "build/references", 0, NULL};
     int first = 1;
     for (; first < argc && argv[first][0] == '-'; first++) {
         const char *a = argv[first];
-        if (!strcmp(a, "--force")) force = true;
-        else if (!strcmp(a, "--slurm")) slurm = true;
-        else if (!strcmp(a, "--status")) status = true;
-        else if (!strcmp(a, "--merge-only")) merge_only = true;
-        else if (!strcmp(a, "--jobs") && first + 1 < argc) jobs = atoi(argv[++first]);
-        else if (!strcmp(a, "--sbatch") && first + 1 < argc) sbatch_args = argv[++first];
-        else if (!strcmp(a, "--out") && first + 1 < argc) out_dir = argv[++first];
-        else if (!strcmp(a, "--work") && first + 1 < argc) work_dir = argv[++first];
-        else return usage();
+        if (!strcmp(a, "--force")) o->force = true;
+        else if (!strcmp(a, "--slurm")) o->slurm = true;
+        else if (!strcmp(a, "--status")) o->status = true;
+        else if (!strcmp(a, "--merge-only")) o->merge_only = true;
+        else if (!strcmp(a, "--jobs") && first + 1 < argc) o->jobs = atoi(argv[++first]);
+        else if (!strcmp(a, "--sbatch") && first + 1 < argc) o->sbatch_args = argv[++first];
+        else if (!strcmp(a, "--out") && first + 1 < argc) o->out_dir = argv[++first];
+        else if (!strcmp(a, "--work") && first + 1 < argc) o->work_dir = argv[++first];
+        else return false;
     }
-    if (jobs < 1) jobs = 1;
-    pl_diag diag = pl_diag_default();
-    grade_spec spec;
-    if (grade_spec_load(GRADE_CASES, GRADE_HIDDEN_CASES, &spec, &diag) != PL_OK) {
-        fprintf(stderr, "references: %s\n", diag.error);
-        return 2;
-    }
-    uint64_t code = fnv_sources(fnv_sources(1469598103934665603ull, "framework"), "parts");
+    if (o->jobs < 1) o->jobs = 1;
+    o->num_names = argc - first;
+    o->names = argv + first;
+    return true;
+}
 
-    /* The cases asked for, with their keys; the ones up to date are left alone. */
-    ref_case cases[GRADE_NUM_PARTS * GRADE_MAX_CASES];
+/* One case asked for, with its key, seed, folders and ranges. */
+static void ref_case_init(ref_case *rc, const grade_case *c, int part, uint64_t code, const ref_options *o)
+{
+    memset(rc, 0, sizeof *rc);
+    rc->spec = c;
+    rc->part = part;
+    rc->seed = REFERENCE_SEED + fnv_str(1469598103934665603ull, c->name) % 1000000ull;
+    case_key(c, code, rc->key);
+    snprintf(rc->range_dir, sizeof rc->range_dir, "%s/part%d/%s/%s", o->work_dir, rc->part, c->name, rc->key);
+    snprintf(rc->out_base, sizeof rc->out_base, "%s/%spart%d/%s", o->out_dir, c->hidden ? "hidden/" : "", rc->part,
+             c->name);
+    rc->num_ranges = (c->reference_samples + RANGE_SAMPLES - 1) / RANGE_SAMPLES;
+}
+
+/* The cases asked for that need rendering (all of them with --force) into cases, their folders
+ * made; with --status each is printed instead. Returns how many, or -1 when a folder cannot be made. */
+static int cases_to_render(const grade_spec *spec, const ref_options *o, ref_case *cases)
+{
+    uint64_t code = fnv_sources(fnv_sources(1469598103934665603ull, "framework"), "parts");
     int n = 0;
     for (int k = 0; k < GRADE_NUM_PARTS; k++)
-        for (int i = 0; i < spec.parts[k].num_cases; i++) {
-            const grade_case *c = &spec.parts[k].cases[i];
-            if (!wanted(c, k + 1, argc - first, argv + first)) continue;
+        for (int i = 0; i < spec->parts[k].num_cases; i++) {
+            const grade_case *c = &spec->parts[k].cases[i];
+            if (!wanted(c, k + 1, o->num_names, o->names)) continue;
             ref_case *rc = &cases[n];
-            memset(rc, 0, sizeof *rc);
-            rc->spec = c;
-            rc->part = k + 1;
-            rc->seed = REFERENCE_SEED + fnv_str(1469598103934665603ull, c->name) % 1000000ull;
-            case_key(c, code, rc->key);
-            snprintf(rc->range_dir, sizeof rc->range_dir, "%s/part%d/%s/%s", work_dir, rc->part, c->name, rc->key);
-            snprintf(rc->out_base, sizeof rc->out_base, "%s/%spart%d/%s", out_dir, c->hidden ? "hidden/" : "",
-                     rc->part, c->name);
-            rc->num_ranges = (c->reference_samples + RANGE_SAMPLES - 1) / RANGE_SAMPLES;
+            ref_case_init(rc, c, k + 1, code, o);
             char have[17];
             recorded_key(rc, have);
-            if (status) {
+            if (o->status) {
                 printf("part%d/%-26s %s  ranges %d/%d\n", rc->part, c->name,
                        !strcmp(have, rc->key) ? "up to date" : have[0] ? "stale     " : "missing   ", ranges_done(rc),
                        rc->num_ranges);
                 continue;
             }
-            if (!force && !strcmp(have, rc->key)) continue;
+            if (!o->force && !strcmp(have, rc->key)) continue;
             char mk[700];
-            snprintf(mk, sizeof mk, "mkdir -p '%s' '%s/%spart%d'", rc->range_dir, out_dir, c->hidden ? "hidden/" : "",
-                     rc->part);
-            if (system(mk) != 0) return 1;
+            snprintf(mk, sizeof mk, "mkdir -p '%s' '%s/%spart%d'", rc->range_dir, o->out_dir,
+                     c->hidden ? "hidden/" : "", rc->part);
+            if (system(mk) != 0) return -1;
             n++;
         }
-    if (status) {
-        /* On a cluster, what the scheduler still holds: pending or running range tasks and the merge.
-         * A range that is neither done nor queued has failed: --slurm submits it again. */
-        if (system("command -v squeue >/dev/null 2>&1") == 0) {
-            printf("queued on Slurm (job, task, state):\n");
-            fflush(stdout);
-            if (system("squeue -h -n pl-ref,pl-ref-merge -o '  %i %j %T' 2>/dev/null") != 0)
-                printf("  (squeue failed: no cluster reachable)\n");
-        }
-        return 0;
-    }
-    if (n == 0) {
-        printf("references: every reference is up to date (--force renders them again)\n");
-        return 0;
-    }
-    if (slurm) return submit_slurm(cases, n, sbatch_args, out_dir, work_dir);
+    return n;
+}
 
+/* On a cluster, what the scheduler still holds: pending or running range tasks and the merge. A
+ * range that is neither done nor queued has failed: --slurm submits it again. */
+static void print_queue(void)
+{
+    if (system("command -v squeue >/dev/null 2>&1") != 0) return;
+    printf("queued on Slurm (job, task, state):\n");
+    fflush(stdout);
+    if (system("squeue -h -n pl-ref,pl-ref-merge -o '  %i %j %T' 2>/dev/null") != 0)
+        printf("  (squeue failed: no cluster reachable)\n");
+}
+
+/* Every missing range of the n cases, rendered by a pool of `jobs` threads; false if any failed. */
+static bool render_ranges(ref_case *cases, int n, int jobs)
+{
+    pool p = {cases, n, 0, 0, 0, 0, clock_seconds(), false, PTHREAD_MUTEX_INITIALIZER};
+    for (int i = 0; i < n; i++) p.total += cases[i].num_ranges - ranges_done(&cases[i]);
+    fprintf(stderr, "references: %d case(s), %d range(s) of %d samples to render on %d job(s)\n", n, p.total,
+            RANGE_SAMPLES, jobs);
+    pthread_t threads[64];
+    int started = 0;
+    for (; started < jobs && started < 64; started++)
+        if (pthread_create(&threads[started], NULL, worker, &p) != 0) break;
+    for (int i = 0; i < started; i++) pthread_join(threads[i], NULL);
+    fprintf(stderr, "\n");
+    return !p.failed;
+}
+
+/* Each case whose ranges are all there, merged into its reference; 1 if any could not be. */
+static int merge_all(ref_case *cases, int n)
+{
     int code_exit = 0;
-    if (!merge_only) {
-        pool p = {cases, n, 0, 0, 0, 0, now(), false, PTHREAD_MUTEX_INITIALIZER};
-        for (int i = 0; i < n; i++) p.total += cases[i].num_ranges - ranges_done(&cases[i]);
-        fprintf(stderr, "references: %d case(s), %d range(s) of %d samples to render on %d job(s)\n", n, p.total,
-                RANGE_SAMPLES, jobs);
-        pthread_t threads[64];
-        int started = 0;
-        for (; started < jobs && started < 64; started++)
-            if (pthread_create(&threads[started], NULL, worker, &p) != 0) break;
-        for (int i = 0; i < started; i++) pthread_join(threads[i], NULL);
-        fprintf(stderr, "\n");
-        if (p.failed) return 1;
-    }
     for (int i = 0; i < n; i++) {
         if (ranges_done(&cases[i]) != cases[i].num_ranges) {
             fprintf(stderr, "references: %s: %d of %d ranges missing; not merged\n", cases[i].spec->name,
@@ -549,6 +560,28 @@ int main(int argc, char **argv)
         if (!merge_case(&cases[i])) code_exit = 1;
         else printf("references: wrote %s.exr, .png, .json\n", cases[i].out_base);
     }
+    return code_exit;
+}
+
+int main(int argc, char **argv)
+{
+    ref_options o;
+    if (!parse_args(argc, argv, &o)) return usage();
+    pl_diag diag = pl_diag_default();
+    grade_spec spec;
+    if (grade_spec_load(GRADE_CASES, GRADE_HIDDEN_CASES, &spec, &diag) != PL_OK) {
+        fprintf(stderr, "references: %s\n", diag.error);
+        return 2;
+    }
+    /* The cases asked for, with their keys; the ones up to date are left alone. */
+    static ref_case cases[GRADE_NUM_PARTS * GRADE_MAX_CASES];
+    int n = cases_to_render(&spec, &o, cases), code_exit = 0;
+    if (n < 0) code_exit = 1;
+    else if (o.status) print_queue();
+    else if (n == 0) printf("references: every reference is up to date (--force renders them again)\n");
+    else if (o.slurm) code_exit = submit_slurm(cases, n, o.sbatch_args, o.out_dir, o.work_dir);
+    else if (!o.merge_only && !render_ranges(cases, n, o.jobs)) code_exit = 1;
+    else code_exit = merge_all(cases, n);
     grade_spec_free(&spec);
     return code_exit;
 }

@@ -2,7 +2,7 @@
  * bin/release_points [CASES [HIDDEN]]: each part's points as the grader reads them (the same
  * grade_spec_load as bin/grade), one line per part: "PART UNIT PUBLIC HIDDEN", where UNIT is the
  * unit-test suite's points, PUBLIC the public image cases' and HIDDEN the hidden ones'. The release
- * (course/release/make_release) writes the GitHub Classroom workflow (UNIT + PUBLIC per part: what
+ * (course/release/cut) writes the GitHub Classroom workflow (UNIT + PUBLIC per part: what
  * `make grade PARTS=N` grades) and the autograder bundle's fallback results from it.
  * Defaults: grading/cases.json and grading/hidden/cases.json (when it exists). Exit 2 on a bad file. */
 #include "../../grader/grade.h"

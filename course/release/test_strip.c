@@ -1,5 +1,5 @@
 /* Test machinery: not part of any assignment. The release stripper's rules (course/release/strip.h). */
-#include "../../tests/common/test.h"
+#include "../../tests/common/test.h"  /* a test suite (make test-course), so it shares the suites' asserts */
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>

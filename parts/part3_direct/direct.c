@@ -80,7 +80,8 @@ rgb zero_bounce_radiance(const struct render_ctx *ctx, const ray *r, const hit *
  *   L = 1/N sum_j Le(p, wi_j) f(wo, wi_j) cos(theta_j) / pdf(wi_j),  pdf = 1 / (2 pi),
  * with Le(p, wi_j) the emission (zero_bounce_radiance) of whatever the ray from p along wi_j hits.
  * In:  r, h (the surface being lit), g (this sample's random numbers).
- * Out: reflected radiance towards r's origin. N = num_lights * light_samples, at least 1.
+ * Out: reflected radiance towards r's origin. N = num_lights * render_light_samples(ctx, r), at
+ *      least 1 (-l where camera rays land, one deeper: render.h).
  * Must: agrees in expectation with direct_importance for area lights (point lights are invisible
  *       to it: no ray can hit them); rays start at the hit point with min_t = EPS_F.
  * Test: make test-part3
@@ -92,7 +93,7 @@ rgb direct_hemisphere(const struct render_ctx *ctx, const ray *r, const hit *h, 
     frame f = shading_frame(r, h);
     vec3 p = hit_point(r, h);
     vec3 wo = frame_to_local(&f, vec3_neg(r->d));
-    int n = ctx->scene->num_lights * ctx->opts->light_samples;
+    int n = ctx->scene->num_lights * render_light_samples(ctx, r);
     if (n < 1)
         n = 1;
     rgb sum = rgb_gray(0.0f);
@@ -119,7 +120,7 @@ rgb direct_hemisphere(const struct render_ctx *ctx, const ray *r, const hit *h, 
  * Direct light by sampling the lights (handout/part3.md, 3.5): for each light k,
  *   L_k = 1/N_k sum_j V(p, y_j) Li_j f(wo, wi_j) cos(theta_j) / pdf_j,
  * with (Li, wi, dist, pdf) from light_sample_L, N_k = 1 for delta lights (light_is_delta) and
- * light_samples otherwise; the result is the sum over the lights.
+ * render_light_samples(ctx, r) otherwise; the result is the sum over the lights.
  * In:  r, h, g as in 3.4.
  * Out: reflected radiance towards r's origin.
  * Must: skip samples below the surface (cos <= 0) or with pdf 0; the shadow ray starts at the hit
@@ -138,7 +139,7 @@ rgb direct_importance(const struct render_ctx *ctx, const ray *r, const hit *h, 
     rgb L = rgb_gray(0.0f);
     for (int k = 0; k < s->num_lights; k++) {
         const light *l = &s->lights[k];
-        int n = light_is_delta(l) ? 1 : (ctx->opts->light_samples > 0 ? ctx->opts->light_samples : 1);
+        int n = light_is_delta(l) ? 1 : render_light_samples(ctx, r);
         rgb sum = rgb_gray(0.0f);
         for (int j = 0; j < n; j++) {
             light_sample ls;

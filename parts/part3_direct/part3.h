@@ -28,10 +28,11 @@ rgb bsdf_sample_f(const material *m, vec3 wo, vec2 u, vec3 *wi, float *pdf);
 /* TASK 3.3: the radiance emitted towards the ray's origin by the surface r hit at h. */
 rgb zero_bounce_radiance(const struct render_ctx *ctx, const ray *r, const hit *h);
 /* TASK 3.4: radiance reflected at h towards r's origin, lit directly by emitting geometry, by
- * uniform hemisphere sampling (-H): num_lights * light_samples directions, at least one. */
+ * uniform hemisphere sampling (-H): num_lights * render_light_samples(ctx, r) directions, at least
+ * one. */
 rgb direct_hemisphere(const struct render_ctx *ctx, const ray *r, const hit *h, rng *g);
-/* TASK 3.5: the same by light importance sampling: light_samples samples per area (and ambient)
- * light, one per point, spot or directional light, each checked with a shadow ray. */
+/* TASK 3.5: the same by light importance sampling: render_light_samples(ctx, r) samples per area
+ * (and ambient) light, one per point, spot or directional light, each checked with a shadow ray. */
 rgb direct_importance(const struct render_ctx *ctx, const ray *r, const hit *h, rng *g);
 
 #endif

@@ -125,6 +125,8 @@ void check_true(bool cond, const char *what, const char *file, int line)
     }
 }
 
+void check_failed_invariant(const char *what, const char *file, int line) { check_true(false, what, file, line); }
+
 void check_implemented(const char *file, int line)
 {
     if (pl_todo_count() > 0) {

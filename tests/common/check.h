@@ -7,6 +7,7 @@
 
 #include "../../framework/vec.h"
 #include "../../framework/todo.h"
+#include "../../framework/check.h"
 
 void check_vec3_near(vec3 expected, vec3 got, float eps, const char *what, const char *file, int line);
 void check_rgb_near(rgb expected, rgb got, float eps, const char *what, const char *file, int line);
@@ -42,11 +43,13 @@ void check_fail(const char *file, int line);
 #define PL_FAIL(...) check_fail_msg(__FILE__, __LINE__, __VA_ARGS__)
 void check_fail_msg(const char *file, int line, const char *format, ...) CMOCKA_PRINTF_ATTRIBUTE(3, 4);
 
-/* PL_CHECK(cond) and PL_CHECK_NEAR(expected, got, eps): on failure print the expression, both
- * values and the calling test's line (through PL_AT helpers too), then fail the test. */
-#define PL_CHECK(cond) check_true((cond), #cond, __FILE__, __LINE__)
+/* PL_CHECK(cond) is the framework's (framework/check.h): in a suite a failed one, in a test or in
+ * framework code the test called, prints the expression and fails the test at the calling test's
+ * line (through PL_AT helpers too). PL_CHECK_NEAR(expected, got, eps) prints both values. */
 #define PL_CHECK_NEAR(expected, got, eps) check_float_near((expected), (got), (eps), #got, __FILE__, __LINE__)
 void check_true(bool cond, const char *what, const char *file, int line);
+/* The suites' handler of a failed PL_CHECK (pl_run_group installs it): fails the running test. */
+void check_failed_invariant(const char *what, const char *file, int line);
 
 /* cmocka setup/teardown that reset and silence the stub counter; use for every student-code test. */
 int test_setup(void **state);

@@ -78,5 +78,14 @@ int pl_run_group(const char *group_name, const struct CMUnitTest *tests, size_t 
     }
     matched += here;
     if (listing || here == 0) return 0;
+    /* A framework invariant broken during a test fails that test, it does not abort the suite. */
+    pl_check_set_handler(check_failed_invariant);
     return _cmocka_run_group_tests(group_name, tests, count, setup, teardown);
+}
+
+int pl_run_groups(const pl_group *groups)
+{
+    int failed = 0;
+    for (; *groups; groups++) failed += (*groups)() != 0;
+    return failed != 0;
 }

@@ -22,6 +22,11 @@ void pl_vprint_error(const char *format, va_list args) CMOCKA_PRINTF_ATTRIBUTE(1
 
 /* Every group runs through pl_run_group (tests/common/filter.c): it skips a group that FILTER leaves
  * empty, lists tests for LIST=1, and lets the suite fail when FILTER matches none of its tests. */
+/* A suite's main: runs each group of the NULL-terminated list in order, every one even after a
+ * failure; 1 if any failed, else 0. */
+typedef int (*pl_group)(void);
+int pl_run_groups(const pl_group *groups);
+
 int pl_run_group(const char *group_name, const struct CMUnitTest *tests, size_t count, CMFixtureFunction setup,
                  CMFixtureFunction teardown);
 #undef cmocka_run_group_tests_name

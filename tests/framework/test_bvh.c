@@ -2,7 +2,12 @@
  * a malformed tree is refused with the node at fault, never walked into a crash. */
 #include "../common/test.h"
 #include "../../framework/bvh.h"
+#include <setjmp.h>
+#include <signal.h>
+#include <stdio.h>
 #include <string.h>
+#include <sys/wait.h>
+#include <unistd.h>
 
 /* Two triangles side by side and a valid tree over them: a root and two leaves. */
 typedef struct {
@@ -99,6 +104,69 @@ static void test_bvh_validate__refuses_a_leaf_slot_out_of_range(void **state)
     assert_refused(&t, "node 2: leaf covers slots 7 .. 7, prim_index has 2");
 }
 
+/* ---- PL_CHECK (framework/check.h), attacked through bvh_visit --------------------------------- */
+
+/* A handler that records the failed check and jumps back to the test, so the read it guards never
+ * happens. */
+static jmp_buf check_return;
+static char check_text[256];
+static void record_check(const char *what, const char *file, int line)
+{
+    snprintf(check_text, sizeof check_text, "%s:%d: %s", file, line, what);
+    longjmp(check_return, 1);
+}
+
+/* A traversal that asks for node -1 or one past the end is stopped at bvh_visit, naming the check. */
+static void test_bvh_visit__a_bad_index_fails_its_check(void **state)
+{
+    two_leaf_tree t;
+    two_leaf_tree_make(&t);
+    const int bad[] = {-1, 3, 1 << 30};
+    for (size_t i = 0; i < sizeof bad / sizeof bad[0]; i++) {
+        check_text[0] = '\0';
+        pl_check_set_handler(record_check);
+        if (setjmp(check_return) == 0) {
+            (void)bvh_visit(&t.b, bad[i]);
+            pl_check_set_handler(check_failed_invariant);
+            scene_free(&t.s);
+            fail_msg("bvh_visit(%d) of a 3-node tree passed its check", bad[i]);
+        }
+        pl_check_set_handler(check_failed_invariant);
+        if (!strstr(check_text, "framework/bvh.c") || !strstr(check_text, "num_nodes")) {
+            scene_free(&t.s);
+            fail_msg("bvh_visit(%d): the failed check says \"%s\", expected framework/bvh.c and the condition",
+                     bad[i], check_text);
+        }
+    }
+    PL_CHECK(bvh_visit(&t.b, 2) == &t.nodes[2]);  /* a good index passes, and is the node */
+    scene_free(&t.s);
+}
+
+/* Outside the tests a failed check prints where and what, and aborts: a render stops at the bug. */
+static void test_pl_check__default_handler_prints_and_aborts(void **state)
+{
+    int out[2];
+    assert_int_equal(pipe(out), 0);
+    pid_t pid = fork();
+    assert_true(pid >= 0);
+    if (pid == 0) {
+        dup2(out[1], 2);
+        pl_check_set_handler(NULL);
+        PL_CHECK(1 + 1 == 3);
+        _exit(0);  /* not reached when the check works */
+    }
+    close(out[1]);
+    char text[256] = {0};
+    ssize_t n = read(out[0], text, sizeof text - 1);
+    close(out[0]);
+    int status = 0;
+    waitpid(pid, &status, 0);
+    if (!WIFSIGNALED(status) || WTERMSIG(status) != SIGABRT)
+        fail_msg("a failed check did not abort (status %d)", status);
+    if (n <= 0 || !strstr(text, "check failed: 1 + 1 == 3") || !strstr(text, "test_bvh.c:"))
+        fail_msg("a failed check printed \"%s\", expected file:line: check failed: 1 + 1 == 3", text);
+}
+
 int bvh_tests(void)
 {
     const struct CMUnitTest tests[] = {
@@ -108,6 +176,8 @@ int bvh_tests(void)
         cmocka_unit_test_setup(test_bvh_validate__refuses_a_primitive_in_two_leaves, test_setup),
         cmocka_unit_test_setup(test_bvh_validate__refuses_a_box_that_does_not_enclose_its_primitives, test_setup),
         cmocka_unit_test_setup(test_bvh_validate__refuses_a_leaf_slot_out_of_range, test_setup),
+        cmocka_unit_test(test_bvh_visit__a_bad_index_fails_its_check),
+        cmocka_unit_test(test_pl_check__default_handler_prints_and_aborts),
     };
     return cmocka_run_group_tests_name("framework: BVH validator", tests, NULL, NULL);
 }

@@ -122,6 +122,20 @@ static void test_pathtracer__bad_input_exits_2_and_writes_nothing(void **state)
     }
 }
 
+/* The framework's light-sample policy: -l where camera rays land, one at deeper vertices. */
+static void test_render_light_samples__all_at_the_first_vertex_one_deeper(void **state)
+{
+    options o = options_default();
+    render_ctx ctx = {.opts = &o};
+    ray first = ray_make(vec3_make(0, 0, 0), vec3_make(0, 0, -1), 0.0f, INFINITY), bounce = first;
+    bounce.depth = 3;
+    o.light_samples = 8;
+    assert_int_equal(8, render_light_samples(&ctx, &first));
+    assert_int_equal(1, render_light_samples(&ctx, &bounce));
+    o.light_samples = 1;
+    assert_int_equal(1, render_light_samples(&ctx, &first));
+}
+
 int render_tests(void)
 {
     const struct CMUnitTest tests[] = {
@@ -129,6 +143,7 @@ int render_tests(void)
         cmocka_unit_test_setup(test_render_image__bit_identical_across_threads_light_transport, test_setup),
         cmocka_unit_test_setup(test_render_image__stores_bottom_row_last, test_setup),
         cmocka_unit_test(test_pathtracer__bad_input_exits_2_and_writes_nothing),
+        cmocka_unit_test(test_render_light_samples__all_at_the_first_vertex_one_deeper),
     };
     return cmocka_run_group_tests_name("render", tests, NULL, NULL);
 }

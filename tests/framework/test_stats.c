@@ -68,6 +68,16 @@ static void test_stats_sidak__keeps_the_family_rate(void **state)
     PL_CHECK_NEAR(1e-3, stats_sidak(1e-3, 1), 1e-18);
 }
 
+/* relMSE by hand: (c - r)^2 / (r^2 + 0.01) per value, averaged; a black reference divides by 0.01. */
+static void test_stats_rel_mse__matches_the_definition(void **state)
+{
+    (void)state;
+    const float cand[4] = {1.0f, 0.5f, 0.1f, 2.0f}, ref[4] = {1.0f, 1.0f, 0.0f, 1.0f};
+    double want = (0.0 + 0.25 / 1.01 + 0.01 / 0.01 + 1.0 / 1.01) / 4.0;
+    PL_CHECK_NEAR(want, stats_rel_mse(cand, ref, 4), 1e-6);  /* 0.1f is not 0.1 */
+    PL_CHECK_NEAR(0.0, stats_rel_mse(cand, ref, 0), 0.0);
+}
+
 int stats_tests(void)
 {
     const struct CMUnitTest tests[] = {
@@ -77,6 +87,7 @@ int stats_tests(void)
         cmocka_unit_test(test_stats_chi2_sf__matches_the_table),
         cmocka_unit_test(test_stats_t__quantiles_match_the_table),
         cmocka_unit_test(test_stats_sidak__keeps_the_family_rate),
+        cmocka_unit_test(test_stats_rel_mse__matches_the_definition),
     };
     return cmocka_run_group_tests_name("framework: test statistics (framework/stats.c)", tests, NULL, NULL);
 }

@@ -3,6 +3,7 @@ int verdict_tests(void);
 int sandbox_tests(void);
 int split_tests(void);
 int readers_tests(void);  /* references, suite results, results.json read as hostile */
+int allow_tests(void);  /* the allow-list, the PL_PART_API marks and the handout agree */
 
 int main(void)
 {
@@ -10,5 +11,6 @@ int main(void)
     failed += sandbox_tests();
     failed += split_tests();
     failed += readers_tests();
+    failed += allow_tests();
     return failed != 0;
 }

@@ -1,19 +1,9 @@
-/* Test machinery: not part of any assignment. The part 2 suite: one binary, one group per file. */
-#include <stdio.h>
+/* Test machinery: not part of any assignment. The part 2 suite (make test-part2): one group per file. */
+#include "../common/test.h"
 
-int slab_tests(void);
-int build_tests(void);
-int oracle_tests(void);
-int images_tests(void);
-int complexity_tests(void);
+int slab_tests(void), build_tests(void), oracle_tests(void), images_tests(void), complexity_tests(void);
 
 int main(void)
 {
-    int failed = 0;
-    failed += slab_tests();
-    failed += build_tests();
-    failed += oracle_tests();
-    failed += images_tests();
-    failed += complexity_tests();
-    return failed ? 1 : 0;
+    return pl_run_groups((const pl_group[]){slab_tests, build_tests, oracle_tests, images_tests, complexity_tests, NULL});
 }

@@ -5,7 +5,7 @@
  * reset a count, and every ray's counts are checked against what any correct traversal must do
  * (work_check.h), so reading nodes or testing triangles behind the framework's back fails. */
 #include "../common/test.h"
-#include "../common/procmesh.h"
+#include "../../framework/procmesh.h"
 #include "fixtures.h"
 #include "work_check.h"
 #include "../../parts/part1_raygen/part1.h"

@@ -4,7 +4,7 @@
 #include "fixtures.h"
 #include "../../framework/render.h"
 #include "../../framework/heatmap.h"
-#include "../common/procmesh.h"
+#include "../../framework/procmesh.h"
 #include <stdlib.h>
 #include <unistd.h>
 #include <stdio.h>

@@ -18,7 +18,7 @@
  * numbered 0, 1, ... in the order the test judges its scenes. */
 #include "../common/test.h"
 #include "fixtures.h"
-#include "../common/procmesh.h"
+#include "../../framework/procmesh.h"
 #include "../common/mc_assert.h"
 #include "../../framework/accel.h"
 #include "../../framework/rng.h"

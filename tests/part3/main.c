@@ -1,13 +1,9 @@
 /* Test machinery: not part of any assignment. The part 3 suite: make test-part3. */
-int sampling_tests(void);
-int direct_tests(void);
-int cornell_tests(void);
+#include "../common/test.h"
+
+int sampling_tests(void), direct_tests(void), cornell_tests(void);
 
 int main(void)
 {
-    int failed = 0;
-    failed += sampling_tests();
-    failed += direct_tests();
-    failed += cornell_tests();
-    return failed != 0;
+    return pl_run_groups((const pl_group[]){sampling_tests, direct_tests, cornell_tests, NULL});
 }

@@ -1,11 +1,9 @@
 /* Test machinery: not part of any assignment. The part 4 suite: make test-part4. */
-int furnace_tests(void);
-int roulette_tests(void);
+#include "../common/test.h"
+
+int furnace_tests(void), roulette_tests(void);
 
 int main(void)
 {
-    int failed = 0;
-    failed += furnace_tests();
-    failed += roulette_tests();
-    return failed != 0;
+    return pl_run_groups((const pl_group[]){furnace_tests, roulette_tests, NULL});
 }

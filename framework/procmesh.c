@@ -1,7 +1,8 @@
-/* Test machinery and benchmark: not part of any assignment. */
+/* Procedural meshes (procmesh.h): a bumpy sphere of any size. */
 #include "procmesh.h"
 #include <math.h>
 
+/* 4 rows^2 triangles make `triangles`: rows = sqrt(triangles / 4), at least 2 for a closed mesh. */
 int procmesh_rows_for(long triangles)
 {
     int rows = (int)lround(sqrt((double)triangles / 4.0));

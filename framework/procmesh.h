@@ -1,10 +1,11 @@
-/* Test machinery and benchmark: not part of any assignment.
- * Procedural triangle meshes of any size, deterministic, for the BVH tests and `make bench`. */
+/* Procedural triangle meshes of any size, deterministic, for the BVH tests and `make bench`: scenes
+ * built by code, in the framework so that the tests and the benchmark share them. Not part of any
+ * assignment. */
 #ifndef PL_PROCMESH_H
 #define PL_PROCMESH_H
 
-#include "../../framework/scene.h"
-#include "../../framework/status.h"
+#include "scene.h"
+#include "status.h"
 
 /* Rows of latitude of the bumpy sphere with about `triangles` triangles (4 rows^2 of them). */
 int procmesh_rows_for(long triangles);

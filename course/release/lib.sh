@@ -1,0 +1,118 @@
+# What the release scripts share (sourced by cut, bundle and check, from the repository's top):
+# which files each tree holds, and how a file is copied into the student tree.
+
+OUT=release/student
+LOGS=release/check
+# Split so that no release script holds a marker itself.
+MARK_BEGIN='/* BEGIN'' SOLUTION */'
+MARK_END='/* END'' SOLUTION */'
+MARK_STUB='/* STUB'':'
+MARK_INSTRUCTOR_BEGIN='<!-- BEGIN'' INSTRUCTOR -->'
+MARK_INSTRUCTOR_END='<!-- END'' INSTRUCTOR -->'
+
+die() { echo "${0##*/}: $*" >&2; exit 2; }
+absolute() { case "$1" in /*) echo "$1" ;; *) echo "$PWD/$1" ;; esac; }
+code_version() { git describe --always --dirty 2>/dev/null || echo unknown; }
+
+# ---- which files: build outputs, the student tree's exclusions, the bundle's inclusions ---------
+
+# Build outputs and scratch, tracked by mistake or not: never released, in no tree. (grade-out/ was
+# once committed by mistake: a grading run's output folder.)
+build_output() {
+    case "$1" in
+        build/*|bin/*|out/*|release/*|grade-out/*|*/grade-out/*|node_modules/*|*/node_modules/*) return 0 ;;
+        *.o|*.d|*.a|*.so|*.gcda|*.gcno|*.pyc|*/__pycache__/*|core|core.[0-9]*|*/core.[0-9]*|*.tmp|*~) return 0 ;;
+    esac
+    return 1
+}
+
+# What a student tree must not hold: build outputs, CI, everything instructor-only (course/: the
+# release scripts, the references maker, the bundle and its tests, mutants, calibration), the hidden
+# cases and their references, anything named as solution material.
+excluded() {
+    build_output "$1" && return 0
+    case "$1" in
+        .ci/*|course/*|grading/hidden/*|reference_images/hidden/*) return 0 ;;
+        */solution/*|solution/*|*.solution.*) return 0 ;;
+    esac
+    return 1
+}
+
+# What the autograder bundle holds: the whole course as the grader needs it (framework, parts with
+# their solutions, the grader, tests, every grading case and reference, hidden ones included,
+# scenes, tools), copied as is; not CI, course/ (its run_autograder and setup.sh are copied to the
+# bundle's top by bundle), the handout, benchmarks or the fuzzer, nor build outputs.
+bundle_excluded() {
+    build_output "$1" && return 0
+    case "$1" in
+        Makefile|README.md|framework/*|parts/*|grader/*|grading/*|reference_images/*|scenes/*|third_party/*|tools/*|tests/*) return 1 ;;
+    esac
+    return 0
+}
+
+# The files a release is made of, NUL-separated, into $1 ($2: the filter, excluded by default): git's
+# -z output is never quoted, so names with blanks, tabs, quotes or non-ASCII letters are copied like
+# any other. RELEASE_UNTRACKED=1 adds untracked, not ignored files (a release tried before a commit).
+list_files() {
+    git rev-parse --git-dir >/dev/null 2>&1 || die "not a git repository: the release copies tracked files"
+    if [ "${RELEASE_UNTRACKED:-0}" = 1 ]; then
+        git ls-files -z --cached --others --exclude-standard
+    else
+        git ls-files -z --cached
+    fi | while IFS= read -r -d '' f; do
+        "${2:-excluded}" "$f" || { [ -e "$f" ] && printf '%s\0' "$f"; }  # skip files deleted but not yet committed
+    done >"$1"
+}
+
+# ---- copying into the student tree ---------------------------------------------------------------
+
+# Copies markdown file $1 to $2 without its instructor sections; fails, naming the line, on a
+# section left open or a stray END.
+strip_markdown() {
+    awk -v b="$MARK_INSTRUCTOR_BEGIN" -v e="$MARK_INSTRUCTOR_END" -v name="$1" '
+        { t = $0; gsub(/^[ \t]+|[ \t\r]+$/, "", t) }
+        t == b { if (open) { printf "%s:%d: nested instructor section (opened at line %d)\n", name, NR, open > "/dev/stderr"; bad = 1; exit 2 }
+                 open = NR; next }
+        t == e { if (!open) { printf "%s:%d: END INSTRUCTOR without a BEGIN\n", name, NR > "/dev/stderr"; bad = 1; exit 2 }
+                 open = 0; next }
+        !open { print }
+        END { if (!bad && open) { printf "%s:%d: instructor section never closed\n", name, open > "/dev/stderr"; exit 2 } }
+    ' "$1" >"$2"
+}
+
+# Copies one file $1 into tree $2 as a student gets it: C through the stripper ($strip) unless $3 is
+# 1 (its part is solved), markdown without instructor sections, anything else as is. Sets $stripped.
+copy_one() {
+    stripped=0
+    case "$1" in
+        *.c|*.h)
+            [ "$3" = 1 ] && { cp -p "$1" "$2/$1"; return; }
+            "$strip" "$1" "$2/$1" || return 1
+            stripped=1
+            if [ -x "$1" ]; then chmod 755 "$2/$1"; else chmod 644 "$2/$1"; fi ;;
+        *.md) strip_markdown "$1" "$2/$1" ;;
+        *) cp -p "$1" "$2/$1" ;;
+    esac
+}
+
+# Copies the files listed (NUL-separated) in $2 into the new folder $1, C sources through the
+# stripper. With $3 = N, parts 1..N keep their solutions (a student who solved them in order).
+# Sets $summary and $failed; fails if any file failed.
+copy_tree() {
+    dest=$1 solved_up_to=${3:-0}
+    rm -rf "$dest" && mkdir -p "$dest" || die "cannot create $dest"
+    files=0 n_stripped=0 failed=0
+    while IFS= read -r -d '' f; do
+        mkdir -p "$dest/$(dirname "$f")"
+        solved=0
+        case "$f" in
+            parts/part[1-9]_*/*) k=${f#parts/part}; k=${k%%_*}; [ "$k" -le "$solved_up_to" ] && solved=1 ;;
+        esac
+        if copy_one "$f" "$dest" "$solved"; then n_stripped=$((n_stripped + stripped)); else failed=$((failed + 1)); fi
+        files=$((files + 1))
+    done <"$2"
+    # Without .git the Makefile takes the code version from here (sidecars record it).
+    echo "pathlab $(code_version) student release" >"$dest/VERSION" || failed=$((failed + 1))
+    summary="$files files, $n_stripped C sources passed through strip_solutions"
+    [ "$failed" = 0 ]
+}
