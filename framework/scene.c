@@ -2,6 +2,7 @@
 #include "scene.h"
 #include "buf.h"
 #include "counters.h"
+#include "spawn.h"
 #include "../parts/part1_raygen/part1.h"  /* call sites: framework/parts.h */
 #include <stdlib.h>
 #include <string.h>
@@ -75,19 +76,19 @@ aabb scene_bounds(const scene *s)
 bool scene_prim_intersect(const scene *s, int prim, ray *r, hit *h)
 {
     counters_add_prim(prim);
-    bool found;
-    int mat;
+    /* On a hit, the framework adds the point and its error bound from part 1's t or
+     * barycentrics, so rays leave every surface the same way whatever part 1 computed (spawn.h). */
     if (prim < s->num_triangles) {
-        found = triangle_intersect(&s->triangles[prim], r, h);
-        mat = s->triangles[prim].material;
+        const triangle *t = &s->triangles[prim];
+        if (!triangle_intersect(t, r, h)) return false;
+        hit_refine_triangle(t, h);
+        h->material = t->material;
     } else {
         const sphere *sp = &s->spheres[prim - s->num_triangles];
-        found = sphere_intersect(sp, r, h);
-        mat = sp->material;
+        if (!sphere_intersect(sp, r, h)) return false;
+        hit_refine_sphere(sp, r, h);
+        h->material = sp->material;
     }
-    if (found) {
-        h->prim = prim;
-        h->material = mat;
-    }
-    return found;
+    h->prim = prim;
+    return true;
 }

@@ -84,7 +84,8 @@ vec3 scene_prim_centroid(const scene *s, int prim);
 aabb scene_bounds(const scene *s);
 
 /* Intersects one primitive through part 1's triangle_intersect / sphere_intersect, setting
- * h->prim and h->material on a hit. Shrinks r->max_t on a hit, like them. Every call counts as one
+ * h->prim, h->material and the point with its error bound (h->p, h->p_err, h->ng: spawn.h) on a
+ * hit. Shrinks r->max_t on a hit, like them. Every call counts as one
  * primitive test on the calling thread: the framework's count (counters.h), which a traversal
  * cannot report for itself. Traversals test primitives only through this function. */
 bool scene_prim_intersect(const scene *s, int prim, ray *r, hit *h);

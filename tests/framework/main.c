@@ -16,6 +16,7 @@ int output_tests(void);   /* a render's outputs as one unit */
 int lights_tests(void);
 int sampler_tests(void);
 int stats_tests(void);    /* the statistics the tests and the grader share (framework/stats.c) */
+int spawn_tests(void);    /* leaving a surface: offset ray origins (framework/spawn.c) */
 
 int main(void)
 {
@@ -37,5 +38,6 @@ int main(void)
     failed += sampler_tests();
     failed += stats_tests();
     failed += bvh_tests();
+    failed += spawn_tests();
     return failed ? 1 : 0;
 }
