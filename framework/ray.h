@@ -27,7 +27,8 @@ static inline ray ray_make(vec3 o, vec3 d, float min_t, float max_t)
 static inline vec3 ray_at(const ray *r, float t) { return vec3_add(r->o, vec3_scale(r->d, t)); }
 
 /* What a ray hit: filled by the intersection routines, read by the shaders. Part 1 fills t, n,
- * b1, b2; the framework (scene_prim_intersect) fills the rest from them, whatever part 1 did. */
+ * b1, b2; the framework the rest (prim and material in scene_prim_intersect, the point and its
+ * error bound in scene_hit_finish, for every hit accel_intersect and render_intersect return). */
 typedef struct {
     float t;       /* ray parameter of the hit */
     vec3 n;        /* unit shading normal, world space (interpolated for triangles) */

@@ -76,19 +76,29 @@ aabb scene_bounds(const scene *s)
 bool scene_prim_intersect(const scene *s, int prim, ray *r, hit *h)
 {
     counters_add_prim(prim);
-    /* On a hit, the framework adds the point and its error bound from part 1's t or
-     * barycentrics, so rays leave every surface the same way whatever part 1 computed (spawn.h). */
+    bool found;
+    int mat;
     if (prim < s->num_triangles) {
-        const triangle *t = &s->triangles[prim];
-        if (!triangle_intersect(t, r, h)) return false;
-        hit_refine_triangle(t, h);
-        h->material = t->material;
+        found = triangle_intersect(&s->triangles[prim], r, h);
+        mat = s->triangles[prim].material;
     } else {
         const sphere *sp = &s->spheres[prim - s->num_triangles];
-        if (!sphere_intersect(sp, r, h)) return false;
-        hit_refine_sphere(sp, r, h);
-        h->material = sp->material;
+        found = sphere_intersect(sp, r, h);
+        mat = sp->material;
     }
-    h->prim = prim;
-    return true;
+    if (found) {
+        h->prim = prim;
+        h->material = mat;
+    }
+    return found;
+}
+
+void scene_hit_finish(const scene *s, const ray *r, hit *h)
+{
+    /* The point and its error bound from part 1's t or barycentrics, so that rays leave every
+     * surface the same way whatever part 1 computed (spawn.h). */
+    if (h->prim < s->num_triangles)
+        hit_refine_triangle(&s->triangles[h->prim], h);
+    else
+        hit_refine_sphere(&s->spheres[h->prim - s->num_triangles], r, h);
 }

@@ -84,11 +84,16 @@ vec3 scene_prim_centroid(const scene *s, int prim);
 aabb scene_bounds(const scene *s);
 
 /* Intersects one primitive through part 1's triangle_intersect / sphere_intersect, setting
- * h->prim, h->material and the point with its error bound (h->p, h->p_err, h->ng: spawn.h) on a
- * hit. Shrinks r->max_t on a hit, like them. Every call counts as one
+ * h->prim and h->material on a hit. Shrinks r->max_t on a hit, like them. Every call counts as one
  * primitive test on the calling thread: the framework's count (counters.h), which a traversal
  * cannot report for itself. Traversals test primitives only through this function. */
 bool scene_prim_intersect(const scene *s, int prim, ray *r, hit *h);
+
+/* Fills the framework's part of a hit r made on h->prim: the point and its error bound (h->p,
+ * h->p_err, h->ng: spawn.h), from part 1's t or barycentrics. accel_intersect calls it once for
+ * the closest hit of every query (not for each candidate a traversal passes), so every hit a
+ * part gets from render_intersect has them. */
+void scene_hit_finish(const scene *s, const ray *r, hit *h);
 
 /* Appending, for loaders and tests. Each returns the new element's index, or -1 without memory. */
 int scene_add_material(scene *s, material m);

@@ -9,7 +9,7 @@
  *
  * The method, pbrt-v4's (Pharr, Jakob, Humphreys, "Physically Based Rendering", 4th ed., 6.8):
  * every hit carries a bound on the error of its point, filled by the framework whatever part 1
- * computed (scene_prim_intersect calls hit_refine_triangle / hit_refine_sphere below):
+ * computed (scene_hit_finish calls hit_refine_triangle / hit_refine_sphere below):
  *   triangle: p = b0 p0 + b1 p1 + b2 p2 with b0 = 1 - b1 - b2, on the triangle's plane however
  *             accurate the barycentrics are; per axis |p - exact| <= gamma(7) sum_i |b_i p_i|,
  *             plus gamma(8) L |e1| |e2| / |e1 x e2| (L the longer edge at p0) for the rounding of
@@ -18,8 +18,8 @@
  *             per axis |p - exact| <= gamma(5) |p - c| + gamma(2) |p|.
  * (gamma(n) = n u / (1 - n u), u = 2^-24 the unit roundoff.) A ray leaving along w starts at
  *   o = p + d ng,  d = SPAWN_SAFETY * (|ng.x| err.x + |ng.y| err.y + |ng.z| err.z),
- * with ng the unit geometric normal turned to w's side, each coordinate then rounded one float
- * further from p; min_t = FLT_MIN, so t > 0: a root at exactly 0 (the quadratic rounding the
+ * with ng the unit geometric normal turned to w's side (pbrt then rounds each coordinate one
+ * float away from p; the safety factor covers that rounding here); min_t = FLT_MIN, so t > 0: a root at exactly 0 (the quadratic rounding the
  * origin onto the sphere) is no hit. The origin is on the side the ray leaves to, farther from the surface
  * than any error of p, so the ray cannot meet its own surface near its start: a plane never
  * again, a sphere (convex) only on its far side. The offset scales with the numbers involved,
@@ -48,12 +48,14 @@
 ray spawn_ray(const ray *from, const hit *h, vec3 w);
 
 /* A shadow ray from the surface of h towards the light sample ls of light l (ls from
- * light_sample_L(l, hit_point(from, h), ...)): direction ls->wi, ending short of the sampled
- * point by a bound on that point's error (offset along an area light's normal), or running to
- * infinity for a directional or ambient light. An occluder between the two ends is a hit. */
+ * light_sample_L(l, hit_point(from, h), ...)). Towards a point or area light it is a segment:
+ * d = (far end - origin), not unit length, [min_t, max_t] = [FLT_MIN, 1], the far end short of
+ * the sampled point by a bound on that point's error (offset along an area light's normal). For
+ * a directional or ambient light it is spawn_ray(from, h, ls->wi). An occluder between the two
+ * ends is a hit. */
 ray spawn_ray_to_light(const ray *from, const hit *h, const light *l, const light_sample *ls);
 
-/* Framework-internal: called by scene_prim_intersect after part 1 reports a hit, so that h->p,
+/* Framework-internal: called by scene_hit_finish for the closest hit of a query, so that h->p,
  * h->p_err and h->ng hold whatever part 1 computed. Parts never call them. */
 void hit_refine_triangle(const triangle *t, hit *h);
 void hit_refine_sphere(const sphere *s, const ray *r, hit *h);

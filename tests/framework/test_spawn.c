@@ -37,6 +37,15 @@ static vec3 leaving_direction(rng *g, vec3 n)
     return vec3_normalize(frame_to_world(&f, vec3_make(s * cosf(phi), s * sinf(phi), c)));
 }
 
+/* A hit on one primitive as render_intersect returns it: part 1's test, then the framework's
+ * point and error bound. */
+static bool hit_prim(const scene *s, int prim, ray *r, hit *h)
+{
+    if (!scene_prim_intersect(s, prim, r, h)) return false;
+    scene_hit_finish(s, r, h);
+    return true;
+}
+
 typedef struct {
     long hits, spawned_self, raw_self;  /* hits made; spawned and raw rays that hit their own prim */
     char first[256];                    /* the first spawned self-hit, for the message */
@@ -69,7 +78,7 @@ static bool sphere_trial(scene *s, rng *g, spawn_tally *t)
     ray r = ray_make(vec3_add(at, vec3_scale(v, sp->radius * (1.0f + 9.0f * rng_uniform(g)))), vec3_neg(v), 0.0f, INFINITY);
     hit h;
     int prim = s->num_triangles;
-    if (!scene_prim_intersect(s, prim, &r, &h)) return false;  /* grazed past */
+    if (!hit_prim(s, prim, &r, &h)) return false;  /* grazed past */
     leave_and_tally(s, prim, &r, &h, leaving_direction(g, h.ng), t);
     return true;
 }
@@ -90,7 +99,7 @@ static bool triangle_trial(scene *s, rng *g, spawn_tally *t)
     vec3 v = leaving_direction(g, rng_uniform(g) < 0.5f ? n : vec3_neg(n));
     ray r = ray_make(vec3_add(at, vec3_scale(v, size * (1.0f + 9.0f * rng_uniform(g)))), vec3_neg(v), 0.0f, INFINITY);
     hit h;
-    if (!scene_prim_intersect(s, 0, &r, &h)) return false;  /* missed at an edge */
+    if (!hit_prim(s, 0, &r, &h)) return false;  /* missed at an edge */
     leave_and_tally(s, 0, &r, &h, leaving_direction(g, rng_uniform(g) < 0.5f ? h.ng : vec3_neg(h.ng)), t);
     return true;
 }
@@ -170,7 +179,7 @@ static bool light_and_floor(scene *s, rng *g, light *l, ray *r, hit *h)
     vec3 at = vec3_add(below, side), fs = vec3_scale(f.s, 300.0f * size), ft = vec3_scale(f.t, 300.0f * size);
     s->triangles[2] = triangle_make(vec3_sub(at, fs), vec3_add(at, ft), vec3_add(at, vec3_sub(fs, ft)), 0);
     *r = ray_make(vec3_add(at, vec3_scale(f.n, size)), vec3_neg(f.n), 0.0f, INFINITY);
-    return scene_prim_intersect(s, 2, r, h);
+    return hit_prim(s, 2, r, h);
 }
 
 /* One shadow ray from a floor hit to a light sample: it must reach neither the light's quad nor
