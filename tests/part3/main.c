@@ -3,6 +3,7 @@ int sampling_tests(void);
 int direct_tests(void);
 int cornell_tests(void);
 int leaving_tests(void);
+int grazing_tests(void);
 
 int main(void)
 {
@@ -11,5 +12,6 @@ int main(void)
     failed += direct_tests();
     failed += cornell_tests();
     failed += leaving_tests();
+    failed += grazing_tests();
     return failed != 0;
 }
