@@ -28,11 +28,17 @@ void hit_refine_triangle(const triangle *t, hit *h)
      * computed with an error up to a few u |o - p0| |e1| |e2|: across the plane that is
      * u L |e1| |e2| / |e1 x e2|, L the longer edge at p0, which grows as the triangle thins. */
     vec3 e1 = vec3_sub(t->p1, t->p0), e2 = vec3_sub(t->p2, t->p0), cross = vec3_cross(e1, e2);
-    float d1 = vec3_dot(e1, e1), d2 = vec3_dot(e2, e2), area2 = vec3_length(cross);
-    float edges = sqrtf(fmaxf(d1, d2) * d1 * d2);  /* L |e1| |e2| in one root */
-    float test_err = area2 > 0.0f ? gamma_n(8) * edges / area2 : edges;
+    float d1 = vec3_dot(e1, e1), d2 = vec3_dot(e2, e2), cc = vec3_dot(cross, cross);
+    float edges2 = (d1 > d2 ? d1 : d2) * d1 * d2;  /* (L |e1| |e2|)^2 */
+    if (!(cc > 0.0f)) {  /* degenerate: part 1 should have missed; leave by the triangle's size */
+        float e = sqrtf(d1 + d2);
+        h->p_err = vec3_add(h->p_err, vec3_make(e, e, e));
+        h->ng = h->n;
+        return;
+    }
+    float inv_cc = 1.0f / cc, test_err = gamma_n(8) * sqrtf(edges2 * inv_cc);
     h->p_err = vec3_add(h->p_err, vec3_make(test_err, test_err, test_err));
-    h->ng = area2 > 0.0f ? vec3_scale(cross, 1.0f / area2) : h->n;
+    h->ng = vec3_scale(cross, sqrtf(inv_cc));
 }
 
 void hit_refine_sphere(const sphere *s, const ray *r, hit *h)
@@ -51,9 +57,10 @@ void hit_refine_sphere(const sphere *s, const ray *r, hit *h)
         h->p_err = vec3_make(e, e, e);
         return;
     }
-    local = vec3_scale(local, s->radius / len);
+    float inv_len = 1.0f / len;
+    h->ng = vec3_scale(local, inv_len);
+    local = vec3_scale(h->ng, s->radius);
     h->p = vec3_add(s->center, local);
-    h->ng = vec3_scale(local, 1.0f / s->radius);
     h->p_err = vec3_add(vec3_scale(vec3_abs(local), gamma_n(5)), vec3_scale(vec3_abs(h->p), gamma_n(2)));
 }
 
