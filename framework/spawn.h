@@ -19,10 +19,11 @@
  * (gamma(n) = n u / (1 - n u), u = 2^-24 the unit roundoff.) A ray leaving along w starts at
  *   o = p + d ng,  d = SPAWN_SAFETY * (|ng.x| err.x + |ng.y| err.y + |ng.z| err.z),
  * with ng the unit geometric normal turned to w's side (pbrt then rounds each coordinate one
- * float away from p; the safety factor covers that rounding here); min_t = FLT_MIN, so t > 0: a root at exactly 0 (the quadratic rounding the
- * origin onto the sphere) is no hit. The origin is on the side the ray leaves to, farther from the surface
- * than any error of p, so the ray cannot meet its own surface near its start: a plane never
- * again, a sphere (convex) only on its far side. The offset scales with the numbers involved,
+ * float away from p; the safety factor covers that rounding here), and min_t = FLT_MIN, so
+ * t > 0: a root at exactly 0 (the quadratic rounding the origin onto the sphere) is no hit. The
+ * origin is on the side the ray leaves to, farther from the surface than any error of p, so the
+ * ray cannot meet its own surface near its start: a plane never again, a sphere (convex) only on
+ * its far side. The offset scales with the numbers involved,
  * so it works at every size and distance from the origin; no absolute epsilon is involved.
  * tests/framework/test_spawn.c checks it on a million random hits from 1e-3 to 1e3 in size,
  * up to 1e4 from the origin, leaving down to 89.9 degrees from the normal.

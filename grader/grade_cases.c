@@ -49,6 +49,7 @@ static pl_status read_case(const char *path, int part, json_t *j, grade_case *c,
     c->work_per_ray = json_is_true(json_object_get(j, "work_per_ray"));
     const char *statistic = json_string_value(json_object_get(j, "statistic"));
     c->known_variance = statistic && !strcmp(statistic, "known_variance");
+    c->grazing = json_is_true(json_object_get(j, "grazing"));
 
     if (statistic && !c->known_variance && strcmp(statistic, "paired_t"))
         return pl_fail(diag, PL_ERR_PARSE, "%s: case %s: statistic '%.40s': expected paired_t or known_variance",
