@@ -19,7 +19,7 @@ static const scene_spec SCENES[] = {
     {"scenes/cornell_spheres.dae", 12, 2, 1},
     {"scenes/cornell_bunny.dae", 12 + 3674, 0, 1},
     {"scenes/lights_point_dir.dae", 20, 1, 2},
-    {"scenes/cornell_grazing.dae", 12, 2, 1},
+    {"scenes/cornell_grazing.dae", 12, 2, 1},  /* 100 m out: its own test below */
 };
 
 static void count_warning(void *user, const char *msg)
@@ -151,14 +151,22 @@ static void test_scenes__cornell_spheres_rest_on_the_floor_inside_the_box(void *
     scene_free(&s);
 }
 
-/* The side-lit box (the grazing_direct case): the light and its quad on the red wall facing +x,
- * the quad reflecting nothing, both spheres on the floor inside the box. */
+/* The side-lit box (the grazing_direct case), 100 m from the origin along (1, 1, 1): moved back,
+ * the light and its quad on the red wall facing +x, the quad reflecting nothing, both spheres on
+ * the floor inside the box. */
 static void test_scenes__cornell_grazing_is_lit_from_the_red_wall(void **state)
 {
     (void)state;
     scene s;
     load_scene("scenes/cornell_grazing.dae", &s);
+    const vec3 back = vec3_make(-100, -100, -100);
+    for (int i = 0; i < s.num_triangles; i++) {
+        triangle *t = &s.triangles[i];
+        t->p0 = vec3_add(t->p0, back), t->p1 = vec3_add(t->p1, back), t->p2 = vec3_add(t->p2, back);
+    }
+    for (int i = 0; i < s.num_spheres; i++) s.spheres[i].center = vec3_add(s.spheres[i].center, back);
     assert_int_equal(1, s.num_lights);
+    s.lights[0].position = vec3_add(s.lights[0].position, back);
     const light *l = &s.lights[0];
     assert_int_equal(LIGHT_AREA, l->kind);
     assert_vec3_near(vec3_make(-0.99f, 0.55f, -0.2f), l->position, EPS);
