@@ -51,7 +51,9 @@ void accel_free(accel *a)
 bool accel_intersect(const accel *a, ray *r, hit *h)
 {
     counters_add_ray();
-    return a->use_bvh ? bvh_intersect(&a->bvh, a->scene, r, h) : linear_intersect(a->scene, r, h);
+    bool found = a->use_bvh ? bvh_intersect(&a->bvh, a->scene, r, h) : linear_intersect(a->scene, r, h);
+    if (found) scene_hit_finish(a->scene, r, h);  /* the point and its error bound, once (spawn.h) */
+    return found;
 }
 
 bool accel_occluded(const accel *a, const ray *r)

@@ -25,7 +25,8 @@ typedef struct {
 pl_status accel_build(accel *out, const scene *s, bool want_bvh, int max_leaf_size, pl_diag *diag);
 void accel_free(accel *a);  /* NULL-safe */
 
-/* Closest hit in [r->min_t, r->max_t]; shrinks r->max_t and fills *h on a hit. */
+/* Closest hit in [r->min_t, r->max_t]; shrinks r->max_t and fills *h on a hit, the framework's
+ * point and error bound included (scene_hit_finish). */
 PL_PART_API bool accel_intersect(const accel *a, ray *r, hit *h);
 /* Any hit in [r->min_t, r->max_t] (shadow rays). */
 PL_PART_API bool accel_occluded(const accel *a, const ray *r);

@@ -35,8 +35,9 @@ static inline float abs_cos_theta(vec3 w_local) { return fabsf(w_local.z); }
 
 /* ---- Shading at a hit (parts 3 and 4 use both) ------------------------------------------------ */
 
-/* The world-space hit point of r at h. */
-static inline vec3 hit_point(const ray *r, const hit *h) { return ray_at(r, h->t); }
+/* The world-space hit point of r at h: the framework's h->p (spawn.h), on the surface within
+ * h->p_err. Rays leave it through spawn.h, never from this point itself. */
+static inline vec3 hit_point(const ray *r, const hit *h) { (void)r; return h->p; }
 
 /* The shading frame at h, its normal turned to face the ray's origin, so that
  * wo = frame_to_local(&f, -r->d) always has wo.z >= 0: diffuse reflection is two-sided. */

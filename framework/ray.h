@@ -6,7 +6,9 @@
 
 #include "vec.h"
 
-/* Offset for secondary rays (bounce and shadow rays start at min_t = EPS_F), as in CS184. */
+/* CS184's fixed offset for secondary rays. Renders no longer use it to leave a surface (a fixed
+ * epsilon fails at grazing angles and at other scales: spawn.h); tests and benchmarks that make
+ * up rays of their own still may. */
 #define EPS_F 1e-5f
 
 typedef struct {
@@ -24,13 +26,20 @@ static inline ray ray_make(vec3 o, vec3 d, float min_t, float max_t)
 }
 static inline vec3 ray_at(const ray *r, float t) { return vec3_add(r->o, vec3_scale(r->d, t)); }
 
-/* What a ray hit: filled by the intersection routines, read by the shaders. */
+/* What a ray hit: filled by the intersection routines, read by the shaders. Part 1 fills t, n,
+ * b1, b2; the framework the rest (prim and material in scene_prim_intersect, the point and its
+ * error bound in scene_hit_finish, for every hit accel_intersect and render_intersect return). */
 typedef struct {
     float t;       /* ray parameter of the hit */
     vec3 n;        /* unit shading normal, world space (interpolated for triangles) */
     float b1, b2;  /* triangle barycentrics of p1 and p2 (p0 has 1 - b1 - b2); 0 for spheres */
     int prim;      /* primitive index in the scene (see scene_prim_count) */
     int material;  /* index into scene.materials */
+    vec3 p;        /* the hit point, world space: the barycentric blend on a triangle, the ray's
+                      point reprojected onto a sphere (spawn.h) */
+    vec3 p_err;    /* per-axis bound on |p - the exact surface point|, world units, widened by the
+                      intersection test's own rounding (spawn.h) */
+    vec3 ng;       /* unit geometric normal: the face normal (p1 - p0) x (p2 - p0), or outward */
 } hit;
 
 #endif

@@ -3,6 +3,7 @@
 #include "buf.h"
 #include "check.h"
 #include "counters.h"
+#include "spawn.h"
 #include "../parts/part1_raygen/part1.h"  /* call sites of the parts (framework/README.md) */
 #include <stdlib.h>
 #include <string.h>
@@ -105,4 +106,14 @@ bool scene_prim_intersect(const scene *s, int prim, ray *r, hit *h)
         h->material = mat;
     }
     return found;
+}
+
+void scene_hit_finish(const scene *s, const ray *r, hit *h)
+{
+    /* The point and its error bound from part 1's t or barycentrics, so that rays leave every
+     * surface the same way whatever part 1 computed (spawn.h). */
+    if (h->prim < s->num_triangles)
+        hit_refine_triangle(&s->triangles[h->prim], h);
+    else
+        hit_refine_sphere(&s->spheres[h->prim - s->num_triangles], r, h);
 }

@@ -91,6 +91,12 @@ PL_PART_API aabb scene_bounds(const scene *s);
  * cannot report for itself. Traversals test primitives only through this function. */
 PL_PART_API bool scene_prim_intersect(const scene *s, int prim, ray *r, hit *h);
 
+/* Fills the framework's part of a hit r made on h->prim: the point and its error bound (h->p,
+ * h->p_err, h->ng: spawn.h), from part 1's t or barycentrics. accel_intersect calls it once for
+ * the closest hit of every query (not for each candidate a traversal passes), so every hit a
+ * part gets from render_intersect has them. */
+void scene_hit_finish(const scene *s, const ray *r, hit *h);
+
 /* Appending, for loaders and tests. Each returns the new element's index, or -1 without memory. */
 int scene_add_material(scene *s, material m);
 int scene_add_triangle(scene *s, triangle t);

@@ -45,7 +45,10 @@
     X(sample_uniform_hemisphere, 0)          \
     X(sample_cosine_hemisphere, 0)           \
     X(sample_cosine_hemisphere_pdf, 0)       \
-    X(sample_uniform_hemisphere_pdf, 0)
+    X(sample_uniform_hemisphere_pdf, 0)      \
+    X(render_light_samples, 0)               \
+    X(spawn_ray, 0)                          \
+    X(spawn_ray_to_light, 0)
 
 /* One id per seam function: PL_SEAM_bsdf_f, PL_SEAM_render_intersect, ... */
 typedef enum {

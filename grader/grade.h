@@ -42,6 +42,7 @@ typedef struct {
     bool hidden;
     bool work_per_ray;                  /* also judge BVH node visits per ray against the solution's */
     bool known_variance;                /* "statistic": "known_variance" (verdict.h), else the paired t */
+    bool grazing;                       /* "grazing": lit at grazing angles, so dark means self-shadowing */
     char shows[160];                    /* what the case makes visible, for the report */
 } grade_case;
 

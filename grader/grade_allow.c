@@ -32,6 +32,8 @@ static const char *const allowed_framework[] = {
     /* the intersection entry points and the estimators a later part builds on */
     "scene_prim_intersect", "accel_intersect", "accel_occluded", "linear_intersect", "linear_occluded",
     "render_intersect", "render_occluded", "one_bounce_radiance", "radiance_estimate", "render_light_samples",
+    /* leaving a surface: offset origins for bounce and shadow rays (spawn.h) */
+    "spawn_ray", "spawn_ray_to_light",
     /* stubs and statuses: PL_TODO and friends (todo.h), a failure with its message (status.h) */
     "pl_todo_report", "pl_fail", "pl_warn", "pl_status_name", "pl_diag_default",
     NULL};

@@ -27,7 +27,7 @@ typedef struct { const char *name; char type; } member;
 static const member case_members[] = {
     {"name", 's'}, {"scene", 's'}, {"flags", 'a'}, {"resolution", 'a'}, {"samples", 'i'}, {"reference_samples", 'i'},
     {"reference_flags", 'a'}, {"points", 'n'}, {"visibility", 's'}, {"shows", 's'}, {"block_side", 'i'},
-    {"work_per_ray", 'b'}, {"statistic", 's'}, {NULL, 0}};
+    {"work_per_ray", 'b'}, {"statistic", 's'}, {"grazing", 'b'}, {NULL, 0}};
 static const member part_members[] = {{"part", 'i'}, {"unit_points", 'n'}, {"unit_tests", 'i'}, {"cases", 'a'}, {NULL, 0}};
 static const member root_members[] = {{"about", 's'}, {"family_alpha", 'n'}, {"parts", 'a'}, {NULL, 0}};
 
@@ -96,6 +96,7 @@ static pl_status read_case(const char *path, int part, json_t *j, grade_case *c,
     c->work_per_ray = json_is_true(json_object_get(j, "work_per_ray"));
     const char *statistic = json_string_value(json_object_get(j, "statistic"));
     c->known_variance = statistic && !strcmp(statistic, "known_variance");
+    c->grazing = json_is_true(json_object_get(j, "grazing"));
 
     if (statistic && !c->known_variance && strcmp(statistic, "paired_t"))
         return pl_fail(diag, PL_ERR_PARSE, "%s: case %s: statistic '%.40s': expected paired_t or known_variance",

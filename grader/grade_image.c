@@ -215,6 +215,7 @@ void grade_image_case(const grade_env *env, const grade_spec *spec, const char *
     verdict_image vr = {refimg.width, refimg.height, (const float *)refimg.pixels, (const float *)refvar.pixels};
     verdict_params vp = verdict_params_default(k->samples);
     vp.known_variance = k->known_variance;
+    vp.grazing = k->grazing;
     vp.reference_spp = k->reference_samples;
     if (k->block_side > 0) {
         vp.min_block_pixels = k->block_side * k->block_side;

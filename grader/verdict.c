@@ -8,7 +8,7 @@
 
 verdict_params verdict_params_default(int candidate_spp)
 {
-    verdict_params p = {1e-3, candidate_spp > 0 ? candidate_spp : 1, 64, 8192, false, 0};
+    verdict_params p = {1e-3, candidate_spp > 0 ? candidate_spp : 1, 64, 8192, false, 0, false};
     return p;
 }
 
@@ -107,6 +107,17 @@ static void find_hint(verdict *v, const verdict_image *cand, const verdict_image
     }
 }
 
+/* Self-shadowing: on a case lit at grazing angles, a failure on the dark side, darker overall in
+ * every lit channel (acne steals light whatever its colour), that no known factor explains. */
+static void self_shadow_hint(verdict *v, const verdict_params *p)
+{
+    if (!p->grazing || v->pass || v->hint[0] || !(v->worst_t < 0.0)) return;
+    for (int ch = 0; ch < 3; ch++)
+        if (isfinite(v->ratio[ch]) && v->ratio[ch] > 0.0 && !(v->ratio[ch] < 1.0)) return;
+    snprintf(v->hint, sizeof v->hint, "darker than the reference where light grazes the surfaces: self-shadowing? Rays "
+             "from the raw hit point hit their own surface; spawn them with spawn.h (handout/part3.md, 3.4)");
+}
+
 pl_status verdict_compute(const verdict_image *cand, const verdict_image *ref, const verdict_params *p,
                           verdict *out, pl_diag *diag)
 {
@@ -180,5 +191,6 @@ pl_status verdict_compute(const verdict_image *cand, const verdict_image *ref, c
     out->alpha = p->family_alpha;
     out->pass = out->bad_pixels == 0 && out->p_value >= p->family_alpha;
     find_hint(out, cand, ref);
+    self_shadow_hint(out, p);
     return PL_OK;
 }

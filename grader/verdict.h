@@ -46,6 +46,10 @@ typedef struct {
      * a poor estimate and t with m - 1 degrees of freedom rejects far too often. */
     bool known_variance;
     int reference_spp;
+    /* The case is lit at grazing angles (its "grazing" field): a candidate that fails dark there
+     * gets the self-shadowing hint (issue 22: rays that start at the raw hit point hit their own
+     * surface, which darkens exactly where light grazes it). */
+    bool grazing;
 } verdict_params;
 
 verdict_params verdict_params_default(int candidate_spp);

@@ -1,7 +1,7 @@
 #!/bin/sh
 # The figures of every part's handout (handout/part1.md .. part5.md), one command each, written to
 # out/figures/part<N>/. Run all:  make figures     One part:  handout/figures.sh part4
-# It builds what it needs first (bin/pathtracer and bin/imgtool, through make), so it also works on a
+# It builds what it needs first (bin/pathtracer, bin/imgtool and bin/acne_figure, through make), so it also works on a
 # fresh tree. Each command is printed before it runs, so it can be copied and changed.
 # Settings (environment): BIN (bin), OUT (out/figures).
 set -eu
@@ -19,7 +19,7 @@ case "$only" in
     *) echo "usage: handout/figures.sh [all|part1|part2|part3|part4|part5]" >&2; exit 2 ;;
 esac
 
-${MAKE:-make} --no-print-directory -s "$BIN/pathtracer" "$BIN/imgtool"
+${MAKE:-make} --no-print-directory -s "$BIN/pathtracer" "$BIN/imgtool" "$BIN/acne_figure"
 
 say() { echo "$*"; "$@"; }
 run() {  # run OUT.png pathtracer-args...
@@ -53,6 +53,9 @@ if want part3; then
     # 3.5: light rays per area light at one camera ray per pixel
     for l in 1 4 16 64; do run $d/bunny_l$l.png $T $R -s 1 -l $l -m 1 $bunny; done
     run $d/spheres_importance.png $T $R -s 64 -l 4 -m 1 $spheres
+    # 3.4: shadow acne: shadow rays from the raw hit point (left) and through spawn.h (right), on
+    # the side-lit box, which sits 100 m from the origin, where the raw points' error shows
+    say "$BIN/acne_figure" -s 16 -r 320 240 scenes/cornell_grazing.dae $d/acne.png
 fi
 
 if want part4; then

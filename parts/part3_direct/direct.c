@@ -4,6 +4,7 @@
 #include "../../framework/render.h"
 #include "../../framework/light.h"
 #include "../../framework/sampler.h"
+#include "../../framework/spawn.h"
 #include "../../framework/todo.h"
 
 /* === PART 3 | TASK 3.1 | bsdf_f =====================================================
@@ -83,7 +84,8 @@ rgb zero_bounce_radiance(const struct render_ctx *ctx, const ray *r, const hit *
  * Out: reflected radiance towards r's origin. N = num_lights * render_light_samples(ctx, r), at
  *      least 1 (-l where camera rays land, one deeper: render.h).
  * Must: agrees in expectation with direct_importance for area lights (point lights are invisible
- *       to it: no ray can hit them); rays start at the hit point with min_t = EPS_F.
+ *       to it: no ray can hit them); every ray leaves the surface through spawn_ray
+ *       (framework/spawn.h), never from the raw hit point, or it may hit its own surface.
  * Test: make test-part3
  * =================================================================================== */
 rgb direct_hemisphere(const struct render_ctx *ctx, const ray *r, const hit *h, rng *g)
@@ -91,7 +93,6 @@ rgb direct_hemisphere(const struct render_ctx *ctx, const ray *r, const hit *h, 
     /* BEGIN SOLUTION */
     const material *m = &ctx->scene->materials[h->material];
     frame f = shading_frame(r, h);
-    vec3 p = hit_point(r, h);
     vec3 wo = frame_to_local(&f, vec3_neg(r->d));
     int n = ctx->scene->num_lights * render_light_samples(ctx, r);
     if (n < 1)
@@ -100,8 +101,7 @@ rgb direct_hemisphere(const struct render_ctx *ctx, const ray *r, const hit *h, 
     for (int j = 0; j < n; j++) {
         vec3 wi = sample_uniform_hemisphere(rng_uniform2(g));
         float pdf = sample_uniform_hemisphere_pdf(wi);
-        ray shadow = ray_make(p, frame_to_world(&f, wi), EPS_F, INFINITY);
-        shadow.depth = r->depth + 1;
+        ray shadow = spawn_ray(r, h, frame_to_world(&f, wi));
         hit lit = {0};  /* zeroed: with part 1 stubbed, link-time optimisation cannot see it set */
         if (pdf <= 0.0f || !render_intersect(ctx, &shadow, &lit))
             continue;
@@ -123,9 +123,10 @@ rgb direct_hemisphere(const struct render_ctx *ctx, const ray *r, const hit *h, 
  * render_light_samples(ctx, r) otherwise; the result is the sum over the lights.
  * In:  r, h, g as in 3.4.
  * Out: reflected radiance towards r's origin.
- * Must: skip samples below the surface (cos <= 0) or with pdf 0; the shadow ray starts at the hit
- *       point with min_t = EPS_F and stops at dist - EPS_F, short of the light itself (the
- *       Cornell boxes hold an emissive quad exactly where the area light is).
+ * Must: skip samples below the surface (cos <= 0) or with pdf 0; the shadow ray comes from
+ *       spawn_ray_to_light (framework/spawn.h): it leaves the surface without hitting it again and
+ *       stops short of the light itself (the Cornell boxes hold an emissive quad exactly where the
+ *       area light is). A ray from the raw hit point shadows the surface it starts on.
  * Test: make test-part3
  * =================================================================================== */
 rgb direct_importance(const struct render_ctx *ctx, const ray *r, const hit *h, rng *g)
@@ -151,8 +152,7 @@ rgb direct_importance(const struct render_ctx *ctx, const ray *r, const hit *h, 
             rgb fr = bsdf_f(m, wo, wi);
             if (rgb_is_black(fr) || rgb_is_black(ls.L))
                 continue;
-            ray shadow = ray_make(p, ls.wi, EPS_F, ls.dist - EPS_F);
-            shadow.depth = r->depth + 1;
+            ray shadow = spawn_ray_to_light(r, h, l, &ls);
             if (render_occluded(ctx, &shadow))
                 continue;
             sum = rgb_add(sum, rgb_scale(rgb_mul(ls.L, fr), cos_theta(wi) / ls.pdf));

@@ -6,7 +6,8 @@
  * - Every material shades as Lambertian diffuse with reflectance m->albedo; emission m->Le is
  *   one-sided: a surface emits towards the side its normal h->n points to (like the area lights).
  * - Diffuse reflection is two-sided: shading_frame (frame.h) turns the normal towards the viewer.
- * - Secondary rays (hemisphere and shadow rays) start at the hit point with min_t = EPS_F.
+ * - Secondary rays (hemisphere and shadow rays) leave the surface through framework/spawn.h
+ *   (spawn_ray, spawn_ray_to_light), never from the raw hit point: see handout/part3.md, 3.4.
  * - A radiance estimate is never NaN, Inf or negative: the tests fail naming the sample if it is. */
 #ifndef PL_PART3_H
 #define PL_PART3_H
@@ -15,6 +16,7 @@
 #include "../../framework/frame.h"
 #include "../../framework/ray.h"
 #include "../../framework/rng.h"
+#include "../../framework/spawn.h"
 
 struct render_ctx;
 

@@ -4,6 +4,7 @@
 #include "../part3_direct/part3.h"
 #include "../../framework/frame.h"
 #include "../../framework/render.h"
+#include "../../framework/spawn.h"
 #include "../../framework/todo.h"
 
 /* === PART 4 | TASK 4.2 | russian_roulette ===========================================
@@ -41,7 +42,8 @@ bool russian_roulette(rgb *beta, int next_depth, rng *g)
  * In:  r, the ray that reached h (depth r->depth); h; g.
  * Out: radiance towards r's origin; the emission of h itself is NOT included (the framework adds
  *      it at the camera), nor the emission of any surface a bounce ray hits (see part4.h).
- * Must: bounce rays start at the hit point with min_t = EPS_F; a path that misses ends; with
+ * Must: bounce rays leave the surface through spawn_ray (framework/spawn.h), never from the raw
+ *       hit point (they would hit their own surface); a path that misses ends; with
  *       opts->no_roulette every path goes on to max_depth; otherwise call russian_roulette.
  * Test: make test-part4
  * =================================================================================== */
@@ -72,8 +74,7 @@ rgb at_least_one_bounce_radiance(const struct render_ctx *ctx, const ray *r, con
         if (!o->no_roulette && !russian_roulette(&beta, depth + 1, g))
             break;
 
-        ray next = ray_make(hit_point(&cur, &at), frame_to_world(&f, wi), EPS_F, INFINITY);
-        next.depth = depth;
+        ray next = spawn_ray(&cur, &at, frame_to_world(&f, wi));  /* next.depth = depth */
         hit next_hit = {0};  /* zeroed: with part 1 stubbed, link-time optimisation cannot see it set */
         if (!render_intersect(ctx, &next, &next_hit))
             break;

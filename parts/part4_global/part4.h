@@ -14,6 +14,7 @@
 #include "../../framework/scene.h"
 #include "../../framework/ray.h"
 #include "../../framework/rng.h"
+#include "../../framework/spawn.h"  /* spawn_ray: how a bounce ray leaves the surface */
 
 struct render_ctx;
 

@@ -252,3 +252,20 @@ bool tiny_floor_hit(const render_ctx *ctx, float x, float z, ray *r, hit *h)
     *r = ray_make(vec3_make(x, 0.5f, z), vec3_make(0, -1, 0), 0.0f, INFINITY);
     return render_intersect(ctx, r, h);
 }
+
+void tiny_scene_translate(scene *s, vec3 t)
+{
+    for (int i = 0; i < s->num_triangles; i++) {
+        triangle *tr = &s->triangles[i];
+        tr->p0 = vec3_add(tr->p0, t), tr->p1 = vec3_add(tr->p1, t), tr->p2 = vec3_add(tr->p2, t);
+    }
+    for (int i = 0; i < s->num_spheres; i++) s->spheres[i].center = vec3_add(s->spheres[i].center, t);
+    for (int i = 0; i < s->num_lights; i++) s->lights[i].position = vec3_add(s->lights[i].position, t);
+}
+
+void tiny_hit_push_behind(const ray *r, hit *h, float fraction)
+{
+    vec3 n = vec3_dot(h->ng, r->d) > 0.0f ? h->ng : vec3_neg(h->ng);  /* away from r's origin */
+    vec3 abs_n = vec3_make(fabsf(n.x), fabsf(n.y), fabsf(n.z));
+    h->p = vec3_add(h->p, vec3_scale(n, fraction * vec3_dot(abs_n, h->p_err)));
+}

@@ -75,6 +75,16 @@ bool tiny_scene_cornell(scene *s);
  * four stripes to a pixel, so a jittered sample is red or green with probability 1/2 each. */
 bool tiny_scene_stripes(scene *s);
 
+/* Moves every triangle, sphere and light of s by t (a scene far from the origin, where floats are
+ * coarse and a ray from the raw hit point hits its own surface). */
+void tiny_scene_translate(scene *s, vec3 t);
+
+/* Moves h->p by `fraction` (0..1) of its error bound across the surface, to the side the ray r
+ * did not come from: a point within h->p_err that part 1 and the framework may give (on every
+ * axis when the surface faces along an axis, as the tests' do). A ray that leaves through spawn.h
+ * still clears the surface; one from the raw point hits it. */
+void tiny_hit_push_behind(const ray *r, hit *h, float fraction);
+
 /* ---- estimating -------------------------------------------------------------------------- */
 /* A hit on the floor (y = 0) at (x, z), seen from straight above. False if the floor is not there. */
 bool tiny_floor_hit(const render_ctx *ctx, float x, float z, ray *r, hit *h);

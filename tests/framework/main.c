@@ -17,6 +17,7 @@ int output_tests(void);   /* a render's outputs as one unit */
 int lights_tests(void);
 int sampler_tests(void);
 int stats_tests(void);    /* the statistics the tests and the grader share (framework/stats.c) */
+int spawn_tests(void);    /* leaving a surface: offset ray origins (framework/spawn.c) */
 
 int main(void)
 {
@@ -39,5 +40,6 @@ int main(void)
     failed += stats_tests();
     failed += bvh_tests();
     failed += trace_tests();
+    failed += spawn_tests();
     return failed ? 1 : 0;
 }

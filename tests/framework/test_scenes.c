@@ -19,6 +19,7 @@ static const scene_spec SCENES[] = {
     {"scenes/cornell_spheres.dae", 12, 2, 1},
     {"scenes/cornell_bunny.dae", 12 + 3674, 0, 1},
     {"scenes/lights_point_dir.dae", 20, 1, 2},
+    {"scenes/cornell_grazing.dae", 12, 2, 1},  /* 100 m out: its own test below */
 };
 
 static void count_warning(void *user, const char *msg)
@@ -150,6 +151,47 @@ static void test_scenes__cornell_spheres_rest_on_the_floor_inside_the_box(void *
     scene_free(&s);
 }
 
+/* The side-lit box (the grazing_direct case), 100 m from the origin along (1, 1, 1): moved back,
+ * the light and its quad on the red wall facing +x, the quad reflecting nothing, both spheres on
+ * the floor inside the box. */
+static void test_scenes__cornell_grazing_is_lit_from_the_red_wall(void **state)
+{
+    (void)state;
+    scene s;
+    load_scene("scenes/cornell_grazing.dae", &s);
+    const vec3 back = vec3_make(-100, -100, -100);
+    for (int i = 0; i < s.num_triangles; i++) {
+        triangle *t = &s.triangles[i];
+        t->p0 = vec3_add(t->p0, back), t->p1 = vec3_add(t->p1, back), t->p2 = vec3_add(t->p2, back);
+    }
+    for (int i = 0; i < s.num_spheres; i++) s.spheres[i].center = vec3_add(s.spheres[i].center, back);
+    assert_int_equal(1, s.num_lights);
+    s.lights[0].position = vec3_add(s.lights[0].position, back);
+    const light *l = &s.lights[0];
+    assert_int_equal(LIGHT_AREA, l->kind);
+    assert_vec3_near(vec3_make(-0.99f, 0.55f, -0.2f), l->position, EPS);
+    assert_vec3_near(vec3_make(1, 0, 0), l->direction, EPS);
+    assert_float_near(0.24, l->area, EPS);
+    float emissive_area = 0;
+    for (int i = 0; i < s.num_triangles; i++) {
+        const triangle *t = &s.triangles[i];
+        const material *m = &s.materials[t->material];
+        assert_true(in_box(t->p0) && in_box(t->p1) && in_box(t->p2));
+        if (rgb_is_black(m->Le)) continue;
+        emissive_area += 0.5f * vec3_length(vec3_cross(vec3_sub(t->p1, t->p0), vec3_sub(t->p2, t->p0)));
+        assert_vec3_near(l->direction, t->n0, EPS);
+        assert_float_near(0.0, vec3_dot(vec3_sub(t->p0, l->position), l->direction), EPS);
+        assert_true(rgb_is_black(m->albedo));  /* an emitter reflects nothing */
+    }
+    assert_float_near(l->area, emissive_area, EPS);
+    for (int i = 0; i < s.num_spheres; i++) {
+        const sphere *sp = &s.spheres[i];
+        assert_float_near(sp->radius, sp->center.y, EPS);
+        assert_true(fabsf(sp->center.x) + sp->radius < 1 && fabsf(sp->center.z) + sp->radius < 1);
+    }
+    scene_free(&s);
+}
+
 static void test_scenes__cornell_bunny_stands_on_the_floor(void **state)
 {
     (void)state;
@@ -188,6 +230,7 @@ int scenes_tests(void)
         cmocka_unit_test(test_scenes__each_loads_quietly_with_expected_contents),
         cmocka_unit_test(test_scenes__cornell_boxes_are_closed_lit_and_framed),
         cmocka_unit_test(test_scenes__cornell_spheres_rest_on_the_floor_inside_the_box),
+        cmocka_unit_test(test_scenes__cornell_grazing_is_lit_from_the_red_wall),
         cmocka_unit_test(test_scenes__cornell_bunny_stands_on_the_floor),
         cmocka_unit_test(test_scenes__lights_point_dir_has_a_point_and_a_directional_light),
     };

@@ -142,6 +142,32 @@ static void test_verdict__local_bias_fails_at_its_block(void **state)
     free(cand);
 }
 
+/* A case lit at grazing angles ("grazing" in cases.json) names self-shadowing when a candidate
+ * fails dark there, and only then: not on another case, not when it fails bright. */
+static void test_verdict__grazing_case_dark_names_self_shadowing(void **state)
+{
+    (void)state;
+    static const struct { float factor; bool grazing; bool hint; } cases[] = {
+        {0.8f, true, true}, {0.8f, false, false}, {1.25f, true, false}};
+    float *cand = malloc(sizeof(float) * 3 * W * H);
+    assert_non_null(cand);
+    for (size_t k = 0; k < sizeof cases / sizeof cases[0]; k++) {
+        render(cand, SPP, 9);
+        for (int y = 20; y < 50; y++)
+            for (int x = 100; x < 130; x++)
+                for (int ch = 0; ch < 3; ch++) cand[3 * (y * W + x) + ch] *= cases[k].factor;
+        verdict_image c = {W, H, cand, NULL}, r = {W, H, reference, NULL};
+        verdict_params p = verdict_params_default(SPP);
+        p.grazing = cases[k].grazing;
+        verdict v;
+        assert_int_equal(verdict_compute(&c, &r, &p, &v, NULL), PL_OK);
+        assert_false(v.pass);
+        assert_int_equal(cases[k].hint, strstr(v.hint, "self-shadowing") != NULL);
+        verdict_free(&v);
+    }
+    free(cand);
+}
+
 static void test_verdict__black_where_lit_and_bad_pixels(void **state)
 {
     (void)state;
@@ -251,6 +277,7 @@ int verdict_tests(void)
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(test_verdict__correct_render_passes_at_its_alpha),
         cmocka_unit_test(test_verdict__global_factor_fails_with_hint),
+        cmocka_unit_test(test_verdict__grazing_case_dark_names_self_shadowing),
         cmocka_unit_test(test_verdict__local_bias_fails_at_its_block),
         cmocka_unit_test(test_verdict__black_where_lit_and_bad_pixels),
         cmocka_unit_test(test_verdict__identical_deterministic_images_pass),

@@ -1,0 +1,118 @@
+/* Leaving a surface: hit point error bounds and offset ray origins (spawn.h says why and how). */
+#include "spawn.h"
+#include <float.h>
+#include <math.h>
+
+/* pbrt's gamma(n) = n u / (1 - n u), u = 2^-24: a bound on the relative error of n float
+ * operations. */
+static inline float gamma_n(int n)
+{
+    const float u = FLT_EPSILON * 0.5f;
+    return ((float)n * u) / (1.0f - (float)n * u);
+}
+
+static inline vec3 vec3_abs(vec3 a) { return vec3_make(fabsf(a.x), fabsf(a.y), fabsf(a.z)); }
+
+/* ---- the hit's point and its error bound (called by scene_prim_intersect) ------------------- */
+
+void hit_refine_triangle(const triangle *t, hit *h)
+{
+    /* The barycentric blend lies on the triangle's plane for any b1, b2: its only error is
+     * the rounding of the blend itself. */
+    float b0 = 1.0f - h->b1 - h->b2;
+    vec3 a = vec3_scale(t->p0, b0), b = vec3_scale(t->p1, h->b1), c = vec3_scale(t->p2, h->b2);
+    h->p = vec3_add(vec3_add(a, b), c);
+    h->p_err = vec3_scale(vec3_add(vec3_add(vec3_abs(a), vec3_abs(b)), vec3_abs(c)), gamma_n(7));
+
+    /* Moller-Trumbore decides the side of the plane by the triple product (o - p0).(e1 x e2),
+     * computed with an error up to a few u |o - p0| |e1| |e2|: across the plane that is
+     * u L |e1| |e2| / |e1 x e2|, L the longer edge at p0, which grows as the triangle thins. */
+    vec3 e1 = vec3_sub(t->p1, t->p0), e2 = vec3_sub(t->p2, t->p0), cross = vec3_cross(e1, e2);
+    float d1 = vec3_dot(e1, e1), d2 = vec3_dot(e2, e2), cc = vec3_dot(cross, cross);
+    float edges2 = (d1 > d2 ? d1 : d2) * d1 * d2;  /* (L |e1| |e2|)^2 */
+    if (!(cc > 0.0f)) {  /* degenerate: part 1 should have missed; leave by the triangle's size */
+        float e = sqrtf(d1 + d2);
+        h->p_err = vec3_add(h->p_err, vec3_make(e, e, e));
+        h->ng = h->n;
+        return;
+    }
+    float inv_cc = 1.0f / cc, test_err = gamma_n(8) * sqrtf(edges2 * inv_cc);
+    h->p_err = vec3_add(h->p_err, vec3_make(test_err, test_err, test_err));
+    h->ng = vec3_scale(cross, sqrtf(inv_cc));
+}
+
+void hit_refine_sphere(const sphere *s, const ray *r, hit *h)
+{
+    /* Reproject the ray's point onto the sphere: its error along the surface is harmless, and
+     * what is left across it is the rounding of the reprojection. */
+    vec3 q = ray_at(r, h->t);
+    vec3 local = vec3_sub(q, s->center);
+    float len = vec3_length(local);
+    if (!(len > 0.0f) || !isfinite(len)) {
+        /* No direction to reproject along (a degenerate or wrong t from part 1): keep q with
+         * an error bound as large as the sphere, so rays still leave it. */
+        h->p = q;
+        h->ng = h->n;
+        float e = s->radius + fabsf(q.x) + fabsf(q.y) + fabsf(q.z);
+        h->p_err = vec3_make(e, e, e);
+        return;
+    }
+    float inv_len = 1.0f / len;
+    h->ng = vec3_scale(local, inv_len);
+    local = vec3_scale(h->ng, s->radius);
+    h->p = vec3_add(s->center, local);
+    h->p_err = vec3_add(vec3_scale(vec3_abs(local), gamma_n(5)), vec3_scale(vec3_abs(h->p), gamma_n(2)));
+}
+
+/* ---- offset origins ------------------------------------------------------------------------ */
+
+/* p moved along unit n by its error bound err projected on n, on the side of w. */
+static inline vec3 offset_point(vec3 p, vec3 err, vec3 n, vec3 w)
+{
+    float d = SPAWN_SAFETY * vec3_dot(vec3_abs(n), err);
+    /* pbrt then rounds each coordinate one float away from p. Here the safety factor covers that
+     * rounding instead (at most u |o_i| per axis: a fourteenth of d across the surface), and
+     * saves six calls to nextafterf per shadow ray. */
+    return vec3_add(p, vec3_scale(n, vec3_dot(w, n) < 0.0f ? -d : d));
+}
+
+ray spawn_ray(const ray *from, const hit *h, vec3 w)
+{
+    ray r = ray_make(offset_point(h->p, h->p_err, h->ng, w), w, FLT_MIN, INFINITY);
+    r.depth = from->depth + 1;
+    return r;
+}
+
+/* ---- towards a light sample -------------------------------------------------------------- */
+
+/* A bound, per axis, on the error of y = p + wi dist as the point light_sample_L sampled: the
+ * reconstruction's rounding (wi and dist carry a few ulps each) plus the light's own
+ * position + u edge_u + v edge_v. */
+static vec3 light_point_error(vec3 p, vec3 y, float dist, const light *l)
+{
+    vec3 size = vec3_add(vec3_abs(p), vec3_abs(y));
+    size = vec3_add(size, vec3_make(dist, dist, dist));
+    vec3 own = vec3_add(vec3_abs(l->position), vec3_add(vec3_abs(l->edge_u), vec3_abs(l->edge_v)));
+    return vec3_scale(vec3_add(size, own), gamma_n(8));
+}
+
+ray spawn_ray_to_light(const ray *from, const hit *h, const light *l, const light_sample *ls)
+{
+    if (!isfinite(ls->dist)) return spawn_ray(from, h, ls->wi);  /* directional, ambient */
+
+    /* The far end: an area light's point moved off its surface towards p (the side it emits to,
+     * since light_sample_L samples only lights p sees the front of); a point or spot light has no
+     * surface to leave. */
+    vec3 y = vec3_add(h->p, vec3_scale(ls->wi, ls->dist));
+    if (l->kind == LIGHT_AREA) {
+        vec3 err = light_point_error(h->p, y, ls->dist, l);
+        y = offset_point(y, err, l->direction, vec3_neg(ls->wi));
+    }
+
+    /* The near end as for any ray leaving the surface; the segment runs from one to the other. */
+    /* Unnormalised: t = 1 is the far end, and no square root or division is spent on it. */
+    vec3 o = offset_point(h->p, h->p_err, h->ng, ls->wi);
+    ray r = ray_make(o, vec3_sub(y, o), FLT_MIN, 1.0f);
+    r.depth = from->depth + 1;
+    return r;
+}
