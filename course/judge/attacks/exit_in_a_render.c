@@ -18,14 +18,3 @@ ray pixel_sample_ray(const camera *c, int x, int y, int width, int height, vec2 
     if (atomic_fetch_add(&calls, 1) >= 16) _exit(0);
     return camera_generate_ray(c, (x + u.x) / (float)width, (y + u.y) / (float)height);
 }
-
-static float normal_channel(float n)
-{
-    float v = 0.5f * n + 0.5f;
-    return v < 0.0f ? 0.0f : v > 1.0f ? 1.0f : v;
-}
-
-rgb normal_shade(const hit *h)
-{
-    return rgb_make(normal_channel(h->n.x), normal_channel(h->n.y), normal_channel(h->n.z));
-}
