@@ -49,7 +49,7 @@ bool grade_guard_secrets(const char *root, const char *outdir, const grade_sandb
 bool grade_guard_child_dir(const char *path, const grade_sandbox *s, bool contained)
 {
     char *rm[] = {"rm", "-rf", (char *)path, NULL};  /* rm never follows a link it deletes */
-    grade_run_opts o = {60, NULL, NULL, 0, NULL, false};
+    grade_run_opts o = {.wall_seconds = 60};
     grade_run_result r = grade_run(rm, &o);
     if (!r.exited || r.status != 0 || mkdir(path, 0755) != 0) return false;
     return !(contained && s->as_other_user) || chown(path, s->uid, s->gid) == 0;

@@ -147,7 +147,7 @@ void grade_image_case(const grade_env *env, const grade_spec *spec, const char *
     grade_case_text text;
     grade_case_command(k, bin, scene, out, env->seed, env->threads, &text, argv);
     remove(out);
-    grade_run_opts o = {RENDER_SECONDS, tree, log, LOG_MAX, NULL, env->submission != NULL};
+    grade_run_opts o = {.wall_seconds = RENDER_SECONDS, .cwd = tree, .log_path = log, .log_max = LOG_MAX, .untrusted = env->submission != NULL};
     grade_run_result rr = grade_run(argv, &o);
     if (!rr.exited || rr.status != 0) {
         char why[128];

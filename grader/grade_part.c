@@ -41,7 +41,7 @@ static bool part_folder(const char *root, int n, char *out, size_t size)
 
 static bool run_quiet(char *const argv[], const char *log)
 {
-    grade_run_opts o = {BUILD_SECONDS, NULL, log, LOG_MAX, NULL, false};
+    grade_run_opts o = {.wall_seconds = BUILD_SECONDS, .log_path = log, .log_max = LOG_MAX};
     grade_run_result r = grade_run(argv, &o);
     return r.exited && r.status == 0;
 }
@@ -153,7 +153,8 @@ static bool build(const grade_env *env, const char *tree, int n, grade_part_resu
     char *argv[] = {"make", "-C", (char *)tree, "-j2", "--no-print-directory", "LTO=0", "WERROR=0", "SAN=0",
                     "bin/pathtracer", target, NULL};
     /* The compiler reads student code too (#include, .incbin): it runs contained like the code. */
-    grade_run_opts o = {BUILD_SECONDS, NULL, r->build_log, LOG_MAX, NULL, env->submission != NULL};
+    grade_run_opts o = {.wall_seconds = GRADE_BUILD_SECONDS, .log_path = r->build_log, .log_max = LOG_MAX,
+                        .untrusted = env->submission != NULL, .compiler = true};
     grade_run_result rr = grade_run(argv, &o);
     bool ok = rr.exited && rr.status == 0;
     if (!ok) grade_log_tail(r->build_log, BUILD_TAIL_LINES, r->build_output, sizeof r->build_output);
@@ -306,7 +307,8 @@ static void run_suite(const grade_env *env, const char *tree, const grade_part_s
     snprintf(bin, sizeof bin, "%s/bin/test-part%d", tree, p->part);
     char *envv[] = {"CMOCKA_MESSAGE_OUTPUT=xml", xml_env, NULL};
     char *argv[] = {bin, NULL};
-    grade_run_opts o = {SUITE_SECONDS, tree, log, LOG_MAX, envv, contained};
+    grade_run_opts o = {.wall_seconds = SUITE_SECONDS, .cwd = tree, .log_path = log, .log_max = LOG_MAX, .env = envv,
+                        .untrusted = contained, .writes_files = true};
     grade_run_result rr = grade_run(argv, &o);
 
     /* A suite that crashed or timed out scores zero, whatever files it left. */

@@ -1,8 +1,14 @@
 # The grader (bin/grade) and its suite. It ships to students (make grade: their own tree, public
 # cases) and to the autograder (bin/grade --submission: each part on its own).
 
-GRADER_SRC := $(filter-out grader/grade_main.c,$(wildcard grader/*.c))
+# The sandbox's system-call filter needs Debian's libseccomp (libseccomp-dev, in tools/setup's list);
+# without it (macOS) grader/sandbox_posix.c stands in, and bin/grade --submission as root refuses to
+# grade. grader/probe_main.c is bin/grade-probe, the sandbox's self-test (its own program).
+SANDBOX_IMPL := $(if $(shell pkg-config --exists libseccomp 2>/dev/null && echo yes),linux,posix)
+GRADER_SRC := $(filter-out grader/grade_main.c grader/probe_main.c grader/sandbox_linux.c grader/sandbox_posix.c,\
+                $(wildcard grader/*.c)) grader/sandbox_$(SANDBOX_IMPL).c
 GRADER_OBJ := $(patsubst %.c,$(BUILD)/%.o,$(GRADER_SRC))
+GRADER_LIBS := $(if $(filter linux,$(SANDBOX_IMPL)),$(shell pkg-config --libs libseccomp))
 # bin/grade links the framework's file, image and statistics code, never a part: it must not run
 # student code in its own process.
 GRADER_FRAMEWORK_OBJ := $(addprefix $(BUILD)/framework/,image.o file.o exr.o film.o status.o stats.o) \
@@ -10,10 +16,18 @@ GRADER_FRAMEWORK_OBJ := $(addprefix $(BUILD)/framework/,image.o file.o exr.o fil
 $(BIN)/grade: $(BUILD)/grader/grade_main.o $(GRADER_OBJ) $(GRADER_FRAMEWORK_OBJ)
 	$(say) LD $@
 	@mkdir -p $(dir $@)
+	$(Q)$(CC) $(LDFLAGS) -o $@ $^ $(LDLIBS) $(GRADER_LIBS)
+
+# The sandbox's self-test: tries what the filter forbids, and sweeps folders for secret bytes.
+$(BIN)/grade-probe: $(BUILD)/grader/probe_main.o
+	$(say) LD $@
+	@mkdir -p $(dir $@)
 	$(Q)$(CC) $(LDFLAGS) -o $@ $^ $(LDLIBS)
 
-# The grader's suite (make test-grader) tests its modules, all but main, so it links them.
-$(BIN)/test-grader: $(GRADER_OBJ)
+# The grader's suite (make test-grader) tests its modules, all but main, so it links them; it runs
+# bin/grade-probe under the sandbox (order-only: not linked in).
+$(BIN)/test-grader: $(GRADER_OBJ) | $(BIN)/grade-probe
+$(BIN)/test-grader: LDLIBS += $(GRADER_LIBS)
 # The grader's paths and messages live in fixed buffers on purpose: a long path is cut in a message
 # (or makes a file not found, which fails safe), never overflows. GCC's truncation analysis, which
 # sees more at -O1 (SAN=1) than at -O2, would make every such snprintf an error under WERROR=1.

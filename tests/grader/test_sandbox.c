@@ -53,11 +53,12 @@ static long file_size(const char *path)
     return lstat(path, &st) == 0 ? (long)st.st_size : -1;
 }
 
-/* Runs sh -c script as the grader runs untrusted code; its exit status (-1: did not exit). */
+/* Runs sh -c script as the grader runs the compiler on student files (the sandbox's user and limits;
+ * no filter, which would stop the shell's fork); its exit status (-1: did not exit). */
 static int run_untrusted(const char *script, const char *log)
 {
     char *argv[] = {"sh", "-c", (char *)script, NULL};
-    grade_run_opts o = {30, NULL, log, 4096, NULL, true};
+    grade_run_opts o = {.wall_seconds = 30, .log_path = log, .log_max = 4096, .untrusted = true, .compiler = true};
     grade_run_result r = grade_run(argv, &o);
     return r.exited ? r.status : -1;
 }
@@ -193,6 +194,41 @@ static void test_run__a_flood_is_cut_while_the_child_runs(void **state)
     assert_string_equal(tail, "[grader: output cut here]");
 }
 
+/* ---- the filter: student code from its first instruction ----------------------------------- */
+
+/* bin/grade-probe MODE run as the grader runs student code; its exit status (-1: did not exit). */
+static int run_probe(const char *mode, const char *log, bool *cut)
+{
+    char *argv[] = {"bin/grade-probe", (char *)mode, NULL};
+    grade_run_opts o = {.wall_seconds = 30, .log_path = log, .log_max = 1 << 16, .untrusted = true};
+    grade_run_result r = grade_run(argv, &o);
+    if (cut) *cut = r.output_cut;
+    return r.exited ? r.status : -1;
+}
+
+static void test_run__student_code_is_filtered_from_its_first_instruction(void **state)
+{
+    (void)state;
+    grade_sandbox s = grade_sandbox_probe();
+    if (!s.filter) {
+        printf("  (skipped: no filter on this machine: %s)\n", s.filter_why);
+        return;
+    }
+    char log[256], tail[4096];
+    snprintf(log, sizeof log, "%s/forbidden.log", scratch);
+    int status = run_probe("forbidden", log, NULL);
+    grade_log_tail(log, 40, tail, sizeof tail);
+    if (status != 0) fail_msg("under the sandbox, grade-probe forbidden exited %d:\n%s", status, tail);
+    /* The probe ran its checks (a probe that never started would also not succeed). */
+    assert_non_null(strstr(tail, "fork()                                       refused"));
+    assert_non_null(strstr(tail, "a thread                                     worked"));
+    /* Unconfined, the same probe finds the forbidden things allowed: the test can fail. */
+    char *argv[] = {"bin/grade-probe", "forbidden", NULL};
+    grade_run_opts o = {.wall_seconds = 30, .log_path = log, .log_max = 1 << 16};
+    grade_run_result r = grade_run(argv, &o);
+    assert_true(r.exited && r.status != 0);
+}
+
 /* ---- limits and what the report says ------------------------------------------------------- */
 
 static void test_run__untrusted_children_have_a_process_limit(void **state)
@@ -214,11 +250,12 @@ static void test_sandbox__report_names_what_is_missing(void **state)
 {
     (void)state;
     char text[256];
-    grade_sandbox s = {false, false, 0, 0, 300};
+    grade_sandbox s = {.process_limit = 300, .filter_why = "built without libseccomp"};
     grade_sandbox_describe(&s, text, sizeof text);
     assert_non_null(strstr(text, "not root: student code ran as your own user"));
     assert_non_null(strstr(text, "had the network"));
-    s.as_other_user = s.no_network = true;
+    assert_non_null(strstr(text, "no system-call filter: built without libseccomp"));
+    s.as_other_user = s.no_network = s.filter = true;
     grade_sandbox_describe(&s, text, sizeof text);
     assert_string_equal(text, "");
 }
@@ -307,6 +344,7 @@ int sandbox_tests(void)
         cmocka_unit_test(test_run__log_is_a_fresh_file_never_a_planted_link),
         cmocka_unit_test(test_run__a_flood_is_cut_while_the_child_runs),
         cmocka_unit_test(test_run__untrusted_children_have_a_process_limit),
+        cmocka_unit_test(test_run__student_code_is_filtered_from_its_first_instruction),
         cmocka_unit_test(test_sandbox__report_names_what_is_missing),
         cmocka_unit_test(test_guard__nobody_cannot_open_a_reference),
         cmocka_unit_test(test_log_tail__last_lines_bounded),
