@@ -20,6 +20,7 @@ options options_default(void)
     o.accumulate = true;
     o.lens_radius = CAMERA_DEFAULT_LENS_RADIUS;
     o.focal_distance = CAMERA_DEFAULT_FOCAL_DISTANCE;
+    o.film_fd = -1;
     o.width = 800;
     o.height = 600;
     o.adaptive_batch = 32;
@@ -59,6 +60,7 @@ void cli_print_usage(FILE *f, const char *prog)
             "  --max-primitives N  refuse scenes with more triangles + spheres (2000000; guards memory)\n"
             "  --max-instances N   refuse scenes whose nodes expand to more instances (1000000; guards time)\n"
             "  --heatmap FILE    write a PNG of BVH nodes visited per pixel\n"
+            "  --film-fd N       send the film to descriptor N (the grader's pipe) and write no file\n"
             "  --samples A:B     render only samples A..B-1 of -s N (fixed rate; -f x.exr keeps what --merge needs)\n"
             "  --merge -f OUT.(exr|png|hdr) IN.exr...  merge --samples ranges that tile 0..N into OUT\n",
             prog);
@@ -193,6 +195,8 @@ pl_status cli_parse(int argc, char **argv, options *out, cli_action *action, pl_
                 s = pl_fail(d, PL_ERR_INVALID, "--samples: expected A:B with 0 <= A < B, got '%s'", VALUE(1) ? VALUE(1) : "nothing");
             i++;
         }
+        else if (!strcmp(a, "--film-fd")) s = parse_int(a, VALUE(1), 3, 1023, &o.film_fd, d), i++;
+        else if (!strcmp(a, "--film-fd")) s = parse_int(a, VALUE(1), 3, 1023, &o.film_fd, d), i++;
         else if (!strcmp(a, "--heatmap")) { if (!VALUE(1)) s = pl_fail(d, PL_ERR_INVALID, "--heatmap: expected a .png file name"); o.heatmap = VALUE(1); i++; }
         else return pl_fail(d, PL_ERR_INVALID, "unknown option '%s'", a);
     }
@@ -205,6 +209,8 @@ pl_status cli_parse(int argc, char **argv, options *out, cli_action *action, pl_
     if (o.sample_end > o.spp)
         return pl_fail(d, PL_ERR_INVALID, "--samples %d:%d: B must be at most -s %d", o.sample_begin, o.sample_end, o.spp);
     if (o.envmap) return pl_fail(d, PL_ERR_INVALID, "-e %s: environment maps are not supported yet", o.envmap);
+    if (o.film_fd >= 0 && (o.output || o.heatmap))
+        return pl_fail(d, PL_ERR_INVALID, "--film-fd %d: the film goes to the descriptor; no -f or --heatmap with it", o.film_fd);
     o.command_line = join_args(argc, argv);
     if (!o.command_line) return pl_fail(d, PL_ERR_NOMEM, "out of memory");
     *out = o;

@@ -35,6 +35,7 @@ typedef struct {
     long max_primitives;      /* --max-primitives: the most triangles + spheres a scene may hold (2,000,000) */
     long max_instances;       /* --max-instances: the most node instances a scene may expand to (1,000,000) */
     const char *heatmap;      /* --heatmap FILE.png: BVH nodes visited per pixel */
+    int film_fd;              /* --film-fd N: send the film to descriptor N, write no file (output.h); -1 */
     bool verbose;             /* -v: print build and traversal statistics */
     bool quiet;               /* -q: no progress bar or summary */
     const char *scene_path;   /* the positional argument */

@@ -62,9 +62,12 @@ pl_status grade_spec_load(const char *path, const char *hidden_path, grade_spec 
 void grade_spec_free(grade_spec *s);
 
 /* The command of case k's own render (its flags, resolution and samples; not the reference's):
- * `bin flags... -r W H -s S --seed SEED -t THREADS -q -f out scene`, into argv (room for
+ * `bin flags... -r W H -s S --seed SEED -t THREADS -q -f out scene` (out NULL: `--film-fd 3`, the
+ * film to the grader's pipe), into argv (room for
  * GRADE_MAX_FLAGS + 16 entries, NULL-terminated); the numbers are formatted into text. The grader
  * renders a candidate with it, the reference maker the course's figures (probe_case). */
+#define GRADE_FILM_FD 3
+#define GRADE_FILM_FD_TEXT "3"
 typedef struct { char width[16], height[16], samples[16], seed[32], threads[16]; } grade_case_text;
 void grade_case_command(const grade_case *k, const char *bin, const char *scene, const char *out,
                         unsigned long long seed, int threads, grade_case_text *text, char **argv);

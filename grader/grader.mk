@@ -11,7 +11,7 @@ GRADER_OBJ := $(patsubst %.c,$(BUILD)/%.o,$(GRADER_SRC))
 GRADER_LIBS := $(if $(filter linux,$(SANDBOX_IMPL)),$(shell pkg-config --libs libseccomp))
 # bin/grade links the framework's file, image and statistics code, never a part: it must not run
 # student code in its own process.
-GRADER_FRAMEWORK_OBJ := $(addprefix $(BUILD)/framework/,image.o file.o exr.o film.o status.o stats.o) \
+GRADER_FRAMEWORK_OBJ := $(addprefix $(BUILD)/framework/,image.o file.o exr.o film.o status.o stats.o output.o) \
                         $(BUILD)/third_party/lodepng/lodepng.o
 $(BIN)/grade: $(BUILD)/grader/grade_main.o $(GRADER_OBJ) $(GRADER_FRAMEWORK_OBJ)
 	$(say) LD $@
