@@ -185,7 +185,8 @@ void grade_run_describe(const grade_run_result *r, char *out, size_t size);
 typedef struct {
     const char *root;          /* the tree holding the other parts (the course's), or the student's tree */
     const char *submission;    /* a folder holding the submission's parts/, or NULL (cumulative) */
-    const char *work;          /* scratch: build trees, renders, logs */
+    const char *work;          /* the grader's scratch, root's alone: the course's build, logs, films */
+    const char *sandbox_dir;   /* the only folder the sandbox's user may reach: the part's tree */
     const char *report;        /* the report folder (images and index.html) */
     bool public_only;
     uint64_t seed;

@@ -30,8 +30,11 @@ static bool make_private(const char *path, const grade_sandbox *s)
 bool grade_guard_secrets(const char *root, const char *outdir, const grade_sandbox *s, char *why, size_t size)
 {
     if (!s->as_other_user) return true;  /* the child is the grader's own user: nothing a mode can hide */
-    /* parts/: the course's solutions, which a submission could otherwise #include or link to. */
-    static const char *const secrets[] = {"reference_images", "grading/hidden", "parts"};
+    /* parts/: the course's solutions, which a submission could otherwise #include or link to; bin/
+     * and build/: the course's programs and objects (the solution as machine code); course/ and
+     * release/: the instructor's tools, mutants and the bundle's own copy of everything. */
+    static const char *const secrets[] = {"reference_images", "grading/hidden", "parts", "bin", "build", "course",
+                                          "release"};
     char path[4200];
     for (size_t k = 0; k < sizeof secrets / sizeof secrets[0]; k++) {
         snprintf(path, sizeof path, "%s/%s", root, secrets[k]);

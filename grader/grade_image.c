@@ -56,7 +56,7 @@ static pl_status read_reference(const char *path, image *out, image *var, long *
 
 /* A streamed film's shape, beyond its size (output_film_receive): every pixel took the case's samples
  * (an adaptive case: 1 to that many), no more bad samples than samples, and sums a real set of
- * samples could have (sum of squares * n >= sum^2, per channel). */
+ * samples could have (sum of squares * n >= sum^2, per channel, up to the rounding of film.h). */
 static bool film_shape_ok(const film *f, const grade_case *k, bool adaptive, char *why, size_t size)
 {
     long pixels = (long)f->width * f->height;
@@ -66,7 +66,9 @@ static bool film_shape_ok(const film *f, const grade_case *k, bool adaptive, cha
         bool sums_ok = p->bad <= p->n;
         for (int c = 0; c < 4 && sums_ok; c++) {
             double s = film_sum_value(p->sum[c]), q = film_sum_value(p->sum_sq[c]);
-            sums_ok = s >= 0 && q * p->n >= s * s * (1.0 - 1e-9) - 1e-9;
+            /* Each square was rounded to 2^-32 on its own, so the sum of squares may fall short of the
+             * exact one by up to n * 2^-33. */
+            sums_ok = s >= 0 && (q + p->n * 0x1p-32) * p->n >= s * s * (1.0 - 1e-9);
         }
         if (!count_ok || !sums_ok)
             return snprintf(why, size, "the film's pixel %ld (x=%ld, y=%ld from the top) %s", i, i % f->width,

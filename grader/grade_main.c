@@ -6,16 +6,19 @@
  *   --out DIR         where results.json, the report (DIR/report/index.html) and scratch go (out/grade)
  *   --calibrate N     render every case of this tree N times with fresh seeds and print, per case, how
  *                     often it failed beside the alpha it claims, and the deciles of its p-values
- * Exit status: 0 when every graded part got full marks, 1 otherwise, 2 for bad arguments. */
+ * Exit status: 0 when every graded part got full marks, 1 otherwise, 2 for bad arguments, 3 when the
+ * grader's own set-up on this machine is wrong (the course's problem: no part was graded). */
 #include "grade.h"
 #include "grade_guard.h"
 #include "grade_image.h"
+#include "grade_tree.h"
 #include <errno.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 #include <sys/random.h>
 #include <sys/stat.h>
+#include <sys/wait.h>
 #include <time.h>
 #include <unistd.h>
 
@@ -95,6 +98,55 @@ static bool make_dir(const char *path)
     return mkdir(buf, 0755) == 0 || errno == EEXIST;
 }
 
+/* The sandbox's folder: the only one the sandbox's user may enter (0711: it cannot list it either),
+ * made fresh outside --out, so that an --out the sandbox's user cannot reach (a `mktemp -d` folder,
+ * root's home) does not matter. */
+static bool make_sandbox_dir(char *out, size_t size)
+{
+    const char *tmp = getenv("TMPDIR") && getenv("TMPDIR")[0] == '/' ? getenv("TMPDIR") : "/tmp";
+    snprintf(out, size, "%s/pathlab-sandbox.XXXXXX", tmp);
+    return mkdtemp(out) && chmod(out, 0711) == 0;
+}
+
+/* Whether the sandbox's user can enter path (tried as that user, in a throwaway child). */
+static bool reachable_by_sandbox_user(const grade_sandbox *s, const char *path)
+{
+    pid_t pid = fork();
+    if (pid == 0) _exit(setgid(s->gid) == 0 && setuid(s->uid) == 0 && access(path, X_OK) == 0 ? 0 : 1);
+    int status = 1;
+    if (pid > 0) waitpid(pid, &status, 0);
+    return pid > 0 && WIFEXITED(status) && WEXITSTATUS(status) == 0;
+}
+
+/* The grader's own set-up, checked before any part is graded (a submission, as root): the filter,
+ * the sandbox's folder, the secrets out of reach, the course's own build. False with why: the
+ * course's problem, which must never become a student's 0. */
+static bool setup_ok(const grade_env *env, const char *outdir, char *why, size_t size)
+{
+    const grade_sandbox *s = &env->sandbox;
+    if (s->as_other_user && !s->filter)
+        return snprintf(why, size, "student code cannot be confined: %s", s->filter_why), false;
+    if (s->as_other_user && !reachable_by_sandbox_user(s, env->sandbox_dir))
+        return snprintf(why, size, "the sandbox's user cannot reach %s (a parent folder closed to others? set TMPDIR "
+                                   "to a folder it can reach)", env->sandbox_dir), false;
+    if (chmod(env->work, 0700) != 0) return snprintf(why, size, "cannot make %s private", env->work), false;
+    if (!grade_guard_secrets(env->root, outdir, s, why, size)) return false;
+    return grade_tree_course_build(env, why, size);
+}
+
+/* Grades the parts listed in `parts` into result; the staff log gets one line a part. */
+static void grade_parts(const grade_env *env, grade_spec *spec, const char *parts, grade_result *result)
+{
+    double t0 = now();
+    for (int k = 0; k < GRADE_NUM_PARTS; k++) {
+        char digit[2] = {(char)('1' + k), 0};
+        if (!strstr(parts, digit)) continue;
+        fprintf(stderr, "grade: part %d ...\n", k + 1);
+        grade_part(env, spec, &spec->parts[k], &result->parts[result->num_parts++]);
+        result->seconds = now() - t0;
+    }
+}
+
 int main(int argc, char **argv)
 {
     const char *submission = NULL, *out = "out/grade", *parts = "1,2,3,4,5";
@@ -134,32 +186,33 @@ int main(int argc, char **argv)
     grade_result result;
     memset(&result, 0, sizeof result);
     result.seed = seed_given ? seed : fresh_seed();
-    grade_env env = {root, submission ? subdir : NULL, work, report, public_only, result.seed, threads,
-                     grade_sandbox_probe()};
-    /* Before any child runs: the answers out of its reach, and the report says what could not be. */
-    char why[512];
-    if (submission && !grade_guard_secrets(root, outdir, &env.sandbox, why, sizeof why)) {
-        fprintf(stderr, "grade: %s\n", why);
+    char sandbox_dir[4096];
+    if (!make_sandbox_dir(sandbox_dir, sizeof sandbox_dir)) return usage("cannot create the sandbox's folder under $TMPDIR or /tmp");
+    grade_env env = {.root = root, .submission = submission ? subdir : NULL, .work = work, .sandbox_dir = sandbox_dir,
+                     .report = report, .public_only = public_only, .seed = result.seed, .threads = threads,
+                     .sandbox = grade_sandbox_probe()};
+    /* Before any child runs: the grader's own set-up, and the answers out of the children's reach. */
+    char why[512] = "", in_force[512];
+    if (submission && !setup_ok(&env, outdir, why, sizeof why)) {
+        fprintf(stderr, "grade: the grader's set-up on this machine is wrong (the course's problem, not the "
+                        "submission's): %s\n", why);
+        grade_tree_remove(sandbox_dir);
         grade_spec_free(&spec);
-        return 2;
+        return 3;
     }
+    grade_sandbox_in_force(&env.sandbox, in_force, sizeof in_force);
+    fprintf(stderr, "grade: protections in force: %s\n", in_force);
     /* A student's own tree is their code on their machine: containment is the autograder's concern. */
     if (submission) grade_sandbox_describe(&env.sandbox, result.unprotected, sizeof result.unprotected);
     if (result.unprotected[0]) fprintf(stderr, "grade: unavailable protections: %s\n", result.unprotected);
     if (calibrate_runs > 0) {
         int code = calibrate(&env, &spec, parts, calibrate_runs);
+        grade_tree_remove(sandbox_dir);
         grade_spec_free(&spec);
         return code;
     }
-    double t0 = now();
-    for (int k = 0; k < GRADE_NUM_PARTS; k++) {
-        char digit[2] = {(char)('1' + k), 0};
-        if (!strstr(parts, digit)) continue;
-        fprintf(stderr, "grade: part %d ...\n", k + 1);
-        grade_part(&env, &spec, &spec.parts[k], &result.parts[result.num_parts++]);
-        result.seconds = now() - t0;
-    }
-    result.seconds = now() - t0;
+    grade_parts(&env, &spec, parts, &result);
+    grade_tree_remove(sandbox_dir);
 
     grade_print_table(&result, stdout);
     snprintf(json, sizeof json, "%s/results.json", outdir);

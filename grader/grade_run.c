@@ -28,6 +28,7 @@ static double now(void)
 #define LOG_CUT_NOTE "\n[grader: output cut here]\n"
 
 static grade_sandbox sandbox;
+extern char **environ;
 
 /* RLIMIT_NPROC counts every process of the real user. As nobody that is the child's own; as the
  * grader's user it includes the grader's and the user's other processes, so the cap is what the user
@@ -131,6 +132,9 @@ static void child_setup(const grade_run_opts *o, int out_fd, int capture_fd)
         _exit(126);
     set_limit(RLIMIT_FSIZE, (rlim_t)GRADE_FILE_BYTES);
     set_limit(RLIMIT_CORE, 0);
+    /* Student code gets none of the grader's environment (whatever its caller exported), a PATH only. */
+    static char *clean[] = {"PATH=/usr/local/bin:/usr/bin:/bin", "LC_ALL=C", NULL};
+    if (o->untrusted) environ = clean;
     for (char *const *e = o->env; e && *e; e++) putenv(*e);
     if (o->untrusted) confine(o);
 }
