@@ -196,10 +196,16 @@ static void test_run__a_flood_is_cut_while_the_child_runs(void **state)
 
 /* ---- the filter: student code from its first instruction ----------------------------------- */
 
-/* bin/grade-probe MODE run as the grader runs student code; its exit status (-1: did not exit). */
+/* bin/grade-probe MODE run as the grader runs student code, from a copy in the scratch folder (the
+ * sandbox's user may not enter bin/ once bin/grade --submission ran here as root); its exit status
+ * (-1: did not exit). */
 static int run_probe(const char *mode, const char *log, bool *cut)
 {
-    char *argv[] = {"bin/grade-probe", (char *)mode, NULL};
+    char probe[128], copy[300];
+    snprintf(probe, sizeof probe, "%s/grade-probe", scratch);
+    snprintf(copy, sizeof copy, "cp bin/grade-probe '%s'", probe);
+    assert_int_equal(system(copy), 0);
+    char *argv[] = {probe, (char *)mode, NULL};
     grade_run_opts o = {.wall_seconds = 30, .log_path = log, .log_max = 1 << 16, .untrusted = true};
     grade_run_result r = grade_run(argv, &o);
     if (cut) *cut = r.output_cut;
@@ -223,7 +229,9 @@ static void test_run__student_code_is_filtered_from_its_first_instruction(void *
     assert_non_null(strstr(tail, "fork()                                       refused"));
     assert_non_null(strstr(tail, "a thread                                     worked"));
     /* Unconfined, the same probe finds the forbidden things allowed: the test can fail. */
-    char *argv[] = {"bin/grade-probe", "forbidden", NULL};
+    char probe[128];
+    snprintf(probe, sizeof probe, "%s/grade-probe", scratch);
+    char *argv[] = {probe, "forbidden", NULL};
     grade_run_opts o = {.wall_seconds = 30, .log_path = log, .log_max = 1 << 16};
     grade_run_result r = grade_run(argv, &o);
     assert_true(r.exited && r.status != 0);
