@@ -121,7 +121,7 @@ static bool reachable_by_sandbox_user(const grade_sandbox *s, const char *path)
 /* The grader's own set-up, checked before any part is graded (a submission, as root): the filter,
  * the sandbox's folder, the secrets out of reach, the course's own build. False with why: the
  * course's problem, which must never become a student's 0. */
-static bool setup_ok(const grade_env *env, const char *outdir, char *why, size_t size)
+static bool setup_ok(const grade_env *env, const char *outdir, const char *parts, char *why, size_t size)
 {
     const grade_sandbox *s = &env->sandbox;
     if (s->as_other_user && !s->filter)
@@ -131,7 +131,7 @@ static bool setup_ok(const grade_env *env, const char *outdir, char *why, size_t
                                    "to a folder it can reach)", env->sandbox_dir), false;
     if (chmod(env->work, 0700) != 0) return snprintf(why, size, "cannot make %s private", env->work), false;
     if (!grade_guard_secrets(env->root, outdir, s, why, size)) return false;
-    return grade_tree_course_build(env, why, size);
+    return grade_tree_course_build(env, parts, why, size);
 }
 
 /* Grades the parts listed in `parts` into result; the staff log gets one line a part. */
@@ -193,7 +193,7 @@ int main(int argc, char **argv)
                      .sandbox = grade_sandbox_probe()};
     /* Before any child runs: the grader's own set-up, and the answers out of the children's reach. */
     char why[512] = "", in_force[512];
-    if (submission && !setup_ok(&env, outdir, why, sizeof why)) {
+    if (submission && !setup_ok(&env, outdir, parts, why, sizeof why)) {
         fprintf(stderr, "grade: the grader's set-up on this machine is wrong (the course's problem, not the "
                         "submission's): %s\n", why);
         grade_tree_remove(sandbox_dir);

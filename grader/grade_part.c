@@ -4,6 +4,7 @@
 #include "grade_guard.h"
 #include "grade_inspect.h"
 #include "grade_tree.h"
+#include "grade_diag.h"
 #include "../framework/file.h"
 #include <dirent.h>
 #include <fcntl.h>
@@ -23,12 +24,12 @@
 
 /* The build's verdict when it failed, in the grader's words: what limit it ran past, or that it
  * does not compile (the compiler's own lines for the part's files are shown beside it). */
-static void build_verdict(const grade_run_result *rr, int n, grade_part_result *r)
+static void build_verdict(const grade_run_result *rr, int n, const char *raw, grade_part_result *r)
 {
     if (rr->timed_out) snprintf(r->suite_reason, sizeof r->suite_reason, "part %d's build ran past %d s", n, GRADE_BUILD_SECONDS);
     else if (rr->output_cut)
         snprintf(r->suite_reason, sizeof r->suite_reason, "part %d's build printed more than %d KiB", n, GRADE_LOG_MAX / 1024);
-    else if (strstr(r->build_output, "out of memory") || strstr(r->build_output, "memory exhausted"))
+    else if (strstr(raw, "out of memory") || strstr(raw, "memory exhausted") || strstr(raw, "Killed signal"))
         snprintf(r->suite_reason, sizeof r->suite_reason, "part %d's build ran past its memory limit (%ld MiB)", n,
                  GRADE_COMPILER_MEMORY >> 20);
     else if (!rr->exited)
@@ -50,8 +51,12 @@ static bool build(const grade_env *env, const char *tree, int n, grade_part_resu
     grade_run_result rr = grade_run(argv, &o);
     bool ok = rr.exited && rr.status == 0;
     if (!ok) {
-        grade_log_tail(r->build_log, BUILD_TAIL_LINES, r->build_output, sizeof r->build_output);
-        build_verdict(&rr, n, r);
+        char folder[256] = "";
+        grade_part_folder(env->root, n, folder, sizeof folder);
+        char raw[sizeof r->build_output];  /* the limit's traces, before the filter drops make's lines */
+        grade_log_tail(r->build_log, BUILD_TAIL_LINES, raw, sizeof raw);
+        grade_diagnostics(r->build_log, folder, BUILD_TAIL_LINES, r->build_output, sizeof r->build_output);
+        build_verdict(&rr, n, raw, r);
     }
     /* What was built and inspected is what runs: the child's user may no longer change it. */
     return ok && (!env->submission || grade_tree_seal(env, tree));

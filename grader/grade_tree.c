@@ -42,7 +42,7 @@ bool grade_part_folder(const char *root, int n, char *out, size_t size)
 }
 
 
-bool grade_tree_course_build(const grade_env *env, char *why, size_t size)
+bool grade_tree_course_build(const grade_env *env, const char *parts, char *why, size_t size)
 {
     char course[4200], log[4200];
     snprintf(course, sizeof course, "%s/course", env->work);
@@ -59,8 +59,13 @@ bool grade_tree_course_build(const grade_env *env, char *why, size_t size)
         char *cp[] = {"cp", "-a", from, course, NULL};
         if (stat(from, &st) == 0 && !run_quiet(cp, log)) return snprintf(why, size, "cannot copy %s", from), false;
     }
-    char *make[] = {"make", "-C", course, GRADE_MAKE_ARGS, "bin/pathtracer", "bin/test-part1", "bin/test-part2",
-                    "bin/test-part3", "bin/test-part4", "bin/test-part5", NULL};
+    /* The renderer, and the suites of the parts to grade only (the other suites' objects are unused). */
+    char suites[GRADE_NUM_PARTS][32];
+    char *make[12 + GRADE_NUM_PARTS] = {"make", "-C", course, GRADE_MAKE_ARGS, "bin/pathtracer"};
+    int argc = 10;  /* after make -C course, the 6 arguments and bin/pathtracer */
+    for (int k = 1; k <= GRADE_NUM_PARTS; k++)
+        if (strchr(parts, '0' + k)) snprintf(suites[k - 1], sizeof suites[k - 1], "bin/test-part%d", k), make[argc++] = suites[k - 1];
+    make[argc] = NULL;
     if (!run_quiet(make, log))
         return snprintf(why, size, "the course's own tree does not build with the grader's flags (see %s)", log), false;
     return true;

@@ -13,9 +13,10 @@
 /* The folder name of part n in root, e.g. "part2_bvh"; false when there is none. */
 bool grade_part_folder(const char *root, int n, char *out, size_t size);
 
-/* Copies the course's tree into env->work/course and builds every object and program there, before
- * any student code runs; false with why (the course's problem: grading must not start). */
-bool grade_tree_course_build(const grade_env *env, char *why, size_t size);
+/* Copies the course's tree into env->work/course and builds there, before any student code runs,
+ * every object and the renderer, and the suites of `parts` ("1,3"); false with why (the course's
+ * problem: grading must not start). */
+bool grade_tree_course_build(const grade_env *env, const char *parts, char *why, size_t size);
 
 /* Part n's tree at env->sandbox_dir/part<n> (tree receives its path): the course's pieces and the
  * submission's part n, owned by the sandbox's user. False with r->suite_reason when the submission's

@@ -13,6 +13,15 @@
 # 6. A submission cannot take code that is not its own: an #include from outside its folder, a
 #    symbolic link in place of a file, or a function that replaces a library's (cmocka's assert)
 #    each scores zero for the part, the message naming it.
+# 7. As root: nothing secret is in reach of student code. bin/grade-probe sweeps the file system as
+#    student code runs (the sandbox's user, filter and limits, from the part's tree, while part 3 is
+#    graded) for byte sequences of every part's solution, every reference EXR and every hidden case
+#    and scene, and finds none; the same sweep run on a folder holding one of them finds it. It
+#    sweeps the course's tree, the grader's output and sandbox folders and the usual shared places
+#    (/var/tmp, /dev/shm, /home, /root, /etc, /opt, /srv), not all of /: on a shared machine other
+#    checkouts of the course are readable there, which says nothing about the grader. Then the
+#    filter, as the grader installs it, refuses what the probe tries (exec, fork, files, sockets...),
+#    and `#include "/dev/zero"` ends the build fast with the limit it ran past.
 set -eu
 cd "$(dirname "$0")/../.."
 out=out/sandbox-test
@@ -106,4 +115,59 @@ ln -s "$PWD/parts/part1_raygen/pixel.c" "$out/sub/parts/part1_raygen/pixel.c"
 refused "a symbolic link in place of a file" "is a symbolic link"
 submission 'void _assert_true(const unsigned long result, const char *const expression, const char *const file, const int line) { (void)result; (void)expression; (void)file; (void)line; }'
 refused "a function that replaces cmocka's _assert_true" 'defines `_assert_true`'
+
+# 7. nothing secret in reach, as root
+if [ "$(id -u)" = 0 ]; then
+    # The needles, hex: solution lines (40+ characters, 8 a file), 48 bytes from the middle of each
+    # reference EXR and of each hidden file. Kept in a file only root can read.
+    needles=$out/needles
+    hexof() { od -An -tx1 -v | tr -d ' \n'; }
+    : >"$needles.raw"
+    for f in parts/*/*.c; do
+        awk '/BEGIN SOLUTION/ { on = 1; next } /END SOLUTION/ { on = 0 } on' "$f" |
+            sed 's/^[[:space:]]*//' | awk 'length($0) >= 40 && !/^\/[*\/]/' | head -n 8 |
+            while IFS= read -r line; do printf '%s' "$line" | hexof; echo; done >>"$needles.raw"
+    done
+    for f in $(find reference_images grading/hidden -type f); do
+        size=$(wc -c <"$f"); [ "$size" -ge 96 ] || continue
+        tail -c +$((size / 2)) "$f" | head -c 48 | hexof >>"$needles.raw"; echo >>"$needles.raw"
+    done
+    count=$(grep -c . "$needles.raw")
+    [ "$count" -ge 40 ] || fail "only $count secrets to look for"
+    PL_SWEEP_NEEDLES=$(grep . "$needles.raw" | paste -sd, -); export PL_SWEEP_NEEDLES
+    chmod 600 "$needles.raw"
+    # The sweep can fail: a folder holding a hidden scene, readable, is found.
+    bait=$(mktemp -d /tmp/pathlab-bait.XXXXXX); chmod 755 "$bait"
+    cp grading/hidden/cases.json "$bait/"; chmod 644 "$bait/cases.json"
+    cp bin/grade-probe "$bait/"
+    if setpriv --reuid=nobody --regid=nogroup --clear-groups "$bait/grade-probe" sweep "$bait" >"$out/bait.log" 2>&1; then
+        rm -rf "$bait"; fail "the sweep does not find a hidden case in plain sight ($out/bait.log)"
+    fi
+    # A stubbed submission (the graded part earns nothing, the sweep is what matters), graded with
+    # the sweep hook, its sandbox folder under a TMPDIR of its own.
+    rm -rf "$out/sub" && mkdir -p "$out/sub"
+    for f in parts/*/*; do mkdir -p "$out/sub/$(dirname "$f")"; done
+    for f in parts/*/*.c parts/*/*.h; do bin/strip_solutions "$f" "$out/sub/$f" || fail "cannot strip $f"; done
+    tmpbase=$(mktemp -d /tmp/pathlab-sweep.XXXXXX); chmod 711 "$tmpbase"
+    roots="$PWD $PWD/$out $tmpbase /var/tmp /dev/shm /home /root /etc /opt /srv"
+    TMPDIR=$tmpbase PL_GRADE_SWEEP="$bait/grade-probe $roots" timeout 600 \
+        bin/grade --submission "$out/sub" --parts 3 --seed 1 --out "$out/swept" >"$out/swept.log" 2>&1 || true
+    unset PL_SWEEP_NEEDLES
+    rm -rf "$bait" "$tmpbase"
+    grep 'sweep as student code' "$out/swept.log" >"$out/sweep-result" || fail "the sweep did not run ($out/swept.log)"
+    grep -q 'exit 0: swept [0-9]* files' "$out/sweep-result" ||
+        fail "student code can read a secret: $(cat "$out/sweep-result") (see $out/swept/work/part3/sweep.log)"
+    echo "  as student code, a sweep of $(sed 's/.*swept \([0-9]*\) files.*/\1/' "$out/sweep-result") files finds none of $count secrets"
+    grep -q 'protections in force: student code as user nobody; network namespace; seccomp' "$out/swept.log" ||
+        fail "the staff log does not name the protections in force ($out/swept.log)"
+    echo "  the staff log names the protections in force"
+fi
+
+# 8. the compiler's limits: #include "/dev/zero" stops fast, with the limit named
+submission '#include "/dev/zero"'
+start=$(date +%s)
+timeout 600 bin/grade --submission "$out/sub" --parts 1 --seed 1 --out "$out/zero" >"$out/zero.log" 2>&1 || true
+unit_output "$out/zero" | grep -q "part 1's build ran past its memory limit" ||
+    fail "#include \"/dev/zero\": no verdict naming the memory limit (see $out/zero/results.json)"
+echo "  #include \"/dev/zero\": part 1's build ran past its memory limit ($(( $(date +%s) - start )) s with the course's build)"
 echo "test-grader-process: passed"
