@@ -5,7 +5,8 @@
  * scene, a framework header, /etc/passwd) would quote that file's line, so the grader keeps a
  * header, and the excerpt under it, only when its path is the part's own folder; every other line
  * (make's, "In file included from", another file's header and excerpt) is dropped. The linker's
- * "undefined reference" lines are kept when they name the part's own objects. */
+ * "undefined reference" lines are kept when they name the part's own objects. What is kept is made
+ * valid UTF-8 without control characters (each bad byte a '?'), and bounded by lines and bytes. */
 #include "grade_diag.h"
 #include "../framework/file.h"
 #include <stdio.h>
@@ -38,6 +39,32 @@ static bool own_link_line(const char *line, const char *folder)
            !strstr(line, "..");
 }
 
+/* The length of the valid UTF-8 sequence at p (1 to 4), or 0 (RFC 3629: no overlong forms, no
+ * surrogates, nothing above U+10FFFF). */
+static int utf8_length(const unsigned char *p)
+{
+    if (p[0] < 0x80) return 1;
+    int n = p[0] >= 0xC2 && p[0] <= 0xDF ? 2 : p[0] >= 0xE0 && p[0] <= 0xEF ? 3 : p[0] >= 0xF0 && p[0] <= 0xF4 ? 4 : 0;
+    unsigned char lo = p[0] == 0xE0 ? 0xA0 : p[0] == 0xF0 ? 0x90 : 0x80;
+    unsigned char hi = p[0] == 0xED ? 0x9F : p[0] == 0xF4 ? 0x8F : 0xBF;
+    if (n == 0 || p[1] < lo || p[1] > hi) return 0;
+    for (int i = 2; i < n; i++)
+        if (p[i] < 0x80 || p[i] > 0xBF) return 0;
+    return n;
+}
+
+/* In place: every byte that is not part of valid UTF-8, and every control character but the tab
+ * and the newline (a terminal escape in a message), becomes '?'. */
+static void make_printable(char *text)
+{
+    unsigned char *p = (unsigned char *)text;
+    while (*p) {
+        int n = utf8_length(p);
+        if (n == 0 || (n == 1 && *p < 0x20 && *p != '\t' && *p != '\n') || *p == 0x7F) *p = '?', n = 1;
+        p += n;
+    }
+}
+
 void grade_diagnostics(const char *log, const char *folder, int max_lines, char *out, size_t size)
 {
     out[0] = '\0';
@@ -63,5 +90,6 @@ void grade_diagnostics(const char *log, const char *folder, int max_lines, char 
         kept++;
     }
     if (used > 0) out[used - 1] = '\0';
+    make_printable(out);
     free(text);
 }

@@ -6,8 +6,8 @@
 #include <stddef.h>
 
 /* The first max_lines lines of the build log that concern parts/<folder>/ itself (grade_diag.c says
- * which), at most size - 1 bytes, into out ("" when none, or the log is unreadable). The report's
- * UTF-8 escaping happens where results.json is written. */
+ * which), at most size - 1 bytes, valid UTF-8 with no control character but tabs and newlines (a
+ * bad byte becomes '?'), into out ("" when none, or the log is unreadable). */
 void grade_diagnostics(const char *log, const char *folder, int max_lines, char *out, size_t size);
 
 #endif

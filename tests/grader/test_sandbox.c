@@ -11,6 +11,7 @@
 #include "../../grader/grade.h"
 #include "../../grader/grade_guard.h"
 #include "../../grader/grade_inspect.h"
+#include "../../grader/grade_diag.h"
 #include <fcntl.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -344,6 +345,32 @@ static void test_log_tail__last_lines_bounded(void **state)
     assert_string_equal(small, "");
 }
 
+/* The compiler's lines a student sees: their own files' only, printable, bounded. */
+static void test_diagnostics__only_the_parts_own_files(void **state)
+{
+    (void)state;
+    char path[256], text[4096];
+    snprintf(path, sizeof path, "%s/diag.log", scratch);
+    write_text(path, "  CC     parts/part3_direct/direct.c\n"
+                     "In file included from parts/part3_direct/direct.c:2:\n"
+                     "grading/hidden/secret.dae:1:1: error: expected identifier before '<' token\n"
+                     "    1 | <COLLADA secret scene line>\n"
+                     "      | ^\n"
+                     "parts/part3_direct/direct.c:7:5: error: 'x' undeclared \xff\x1b[31m\n"
+                     "    7 |     x = 1;\n"
+                     "      |     ^\n"
+                     "parts/part3_direct/../../framework/render.c:3:1: error: in another file\n"
+                     "    3 | framework line\n"
+                     "make: *** [Makefile:75: build/release/parts/part3_direct/direct.o] Error 1\n");
+    grade_diagnostics(path, "part3_direct", 40, text, sizeof text);
+    assert_string_equal(text, "parts/part3_direct/direct.c:7:5: error: 'x' undeclared ??[31m\n"
+                              "    7 |     x = 1;\n"
+                              "      |     ^");
+    /* Bounded by lines. */
+    grade_diagnostics(path, "part3_direct", 1, text, sizeof text);
+    assert_string_equal(text, "parts/part3_direct/direct.c:7:5: error: 'x' undeclared ??[31m");
+}
+
 int sandbox_tests(void)
 {
     const struct CMUnitTest tests[] = {
@@ -356,6 +383,7 @@ int sandbox_tests(void)
         cmocka_unit_test(test_sandbox__report_names_what_is_missing),
         cmocka_unit_test(test_guard__nobody_cannot_open_a_reference),
         cmocka_unit_test(test_log_tail__last_lines_bounded),
+        cmocka_unit_test(test_diagnostics__only_the_parts_own_files),
     };
     return cmocka_run_group_tests_name("grader sandbox", tests, make_scratch, remove_scratch);
 }
