@@ -42,6 +42,8 @@ test-report: $(BIN)/grade $(BIN)/pathtracer $(BIN)/imgtool  ## the grader's HTML
 	$(Q)sh tests/grader/report.sh
 
 # The grader's containment at process level (tests/grader/sandbox.sh says what it proves): grades
-# part 1 of two hostile submissions; as root it also checks what nobody can read.
-test-grader-process: $(BIN)/grade $(BIN)/test-grader $(foreach n,1 2 3 4 5,$(BIN)/test-part$(n))  ## the grader's containment, at process level
+# part 1 of hostile submissions; as root it also sweeps the file system as student code for secrets
+# (bin/strip_solutions makes its stubbed submission: the instructor's tree only).
+test-grader-process: $(BIN)/grade $(BIN)/grade-probe $(BIN)/test-grader $(foreach n,1 2 3 4 5,$(BIN)/test-part$(n)) \
+                     $(if $(wildcard course/course.mk),$(BIN)/strip_solutions)  ## the grader's containment, at process level
 	$(Q)sh tests/grader/sandbox.sh

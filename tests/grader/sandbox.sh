@@ -116,8 +116,10 @@ refused "a symbolic link in place of a file" "is a symbolic link"
 submission 'void _assert_true(const unsigned long result, const char *const expression, const char *const file, const int line) { (void)result; (void)expression; (void)file; (void)line; }'
 refused "a function that replaces cmocka's _assert_true" 'defines `_assert_true`'
 
-# 7. nothing secret in reach, as root
-if [ "$(id -u)" = 0 ]; then
+# 7. nothing secret in reach, as root (the stubbed submission needs the instructor's strip tool)
+if [ "$(id -u)" = 0 ] && [ ! -x bin/strip_solutions ]; then
+    echo "  (no bin/strip_solutions, not the instructor's tree: the sweep is skipped)"
+elif [ "$(id -u)" = 0 ]; then
     # The needles, hex: solution lines (40+ characters, 8 a file), 48 bytes from the middle of each
     # reference EXR and of each hidden file. Kept in a file only root can read.
     needles=$out/needles

@@ -12,7 +12,9 @@
 #include "../../grader/grade_guard.h"
 #include "../../grader/grade_inspect.h"
 #include "../../grader/grade_diag.h"
+#include "../../framework/output.h"
 #include <fcntl.h>
+#include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -371,6 +373,38 @@ static void test_diagnostics__only_the_parts_own_files(void **state)
     assert_string_equal(text, "parts/part3_direct/direct.c:7:5: error: 'x' undeclared ??[31m");
 }
 
+/* The film stream: what a render sends is what the grader receives, bit for bit; a stream cut
+ * short, of another size or with trailing bytes is refused whole. */
+static void test_film_stream__round_trip_and_refusals(void **state)
+{
+    (void)state;
+    film f = {0}, got = {0};
+    assert_int_equal(film_alloc(&f, 3, 2), PL_OK);
+    for (int i = 0; i < 6; i++)
+        for (int k = 0; k < 1 + i; k++) film_pixel_add(&f.pixels[i], rgb_make(0.25f * (float)k, 1e-7f, 3.5f));
+    film_pixel_add(&f.pixels[5], rgb_make(NAN, 0, 0));
+    int fds[2];
+    assert_int_equal(pipe(fds), 0);
+    output_film_counts sent = {10, 20, 30, 21}, counts;
+    pl_diag d = pl_diag_default();
+    assert_int_equal(output_film_send(fds[1], &f, &sent, &d), PL_OK);
+    close(fds[1]);
+    static char buf[4096];
+    ssize_t n = read(fds[0], buf, sizeof buf);
+    close(fds[0]);
+    assert_int_equal(n, 48 + 6 * OUTPUT_FILM_PIXEL_BYTES + 8);
+    assert_int_equal(output_film_receive(buf, (size_t)n, 3, 2, &got, &counts, &d), PL_OK);
+    assert_memory_equal(got.pixels, f.pixels, 6 * sizeof *f.pixels);
+    assert_true(counts.rays == 10 && counts.node_visits == 20 && counts.prim_tests == 30 && counts.samples == 21);
+    film_free(&got);
+    assert_int_not_equal(output_film_receive(buf, (size_t)n - 1, 3, 2, &got, &counts, &d), PL_OK);
+    assert_int_not_equal(output_film_receive(buf, (size_t)n, 2, 3, &got, &counts, &d), PL_OK);
+    assert_non_null(strstr(d.error, "the film is 3x2, the case renders 2x3"));
+    buf[n] = 'x';
+    assert_int_not_equal(output_film_receive(buf, (size_t)n + 1, 3, 2, &got, &counts, &d), PL_OK);
+    film_free(&f);
+}
+
 int sandbox_tests(void)
 {
     const struct CMUnitTest tests[] = {
@@ -384,6 +418,7 @@ int sandbox_tests(void)
         cmocka_unit_test(test_guard__nobody_cannot_open_a_reference),
         cmocka_unit_test(test_log_tail__last_lines_bounded),
         cmocka_unit_test(test_diagnostics__only_the_parts_own_files),
+        cmocka_unit_test(test_film_stream__round_trip_and_refusals),
     };
     return cmocka_run_group_tests_name("grader sandbox", tests, make_scratch, remove_scratch);
 }
