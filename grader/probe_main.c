@@ -8,8 +8,9 @@
  *                              one worked.
  *   grade-probe sweep ROOT...  reads every regular file it can under each ROOT (no links followed;
  *                              /proc, /sys and /dev left out) and looks for the byte sequences given
- *                              in PL_SWEEP_NEEDLES (hex, comma-separated): prints each file that
- *                              holds one and exits 1, else prints how much it read and exits 0.
+ *                              in PL_SWEEP_NEEDLES (hex, comma-separated): prints each needle
+ *                              found and where ("FOUND secret K in PATH", K counted from 0) and
+ *                              exits 1, else prints how much it read and exits 0. A ROOT may be a file.
  * It is the student's view of the machine: it runs under the same filter, user and limits. */
 #include <dirent.h>
 #include <errno.h>
@@ -129,7 +130,6 @@ static void sweep_file(const char *path, int *found)
         if (memmem(buf, (size_t)n, needles[k].bytes, needles[k].len)) {
             printf("FOUND secret %d in %s\n", k, path);
             ++*found;
-            return;
         }
 }
 
@@ -163,7 +163,11 @@ int main(int argc, char **argv)
         return 2;
     }
     int found = 0;
-    for (int i = 2; i < argc; i++) sweep(argv[i], 0, &found);
+    for (int i = 2; i < argc; i++) {
+        struct stat st;
+        if (lstat(argv[i], &st) == 0 && S_ISREG(st.st_mode)) sweep_file(argv[i], &found);
+        else sweep(argv[i], 0, &found);
+    }
     printf("swept %ld files, %ld bytes, for %d secrets: %d found\n", files_read, bytes_read, num_needles, found);
     return found ? 1 : 0;
 }

@@ -6,8 +6,8 @@
 #    part, the message naming `system` (the allow-list reads the objects the build linked).
 # 3. A submission that does not compile shows the compiler's own message in results.json and in
 #    the HTML report.
-# 4. As root: the graded tree holds no reference or hidden case, and nobody can read the references,
-#    the hidden cases, results.json or the report.
+# 4. As root: no grading tree outlives its grading, and nobody can read the references, the hidden
+#    cases, results.json or the report.
 # 5. As a user that is not root, untrusted children still get a process limit (the grader's suite
 #    run as nobody).
 # 6. A submission cannot take code that is not its own: an #include from outside its folder, a
@@ -61,18 +61,17 @@ submission '#ifdef _REENTRANT
 #include <stdlib.h>
 int pl_sneaky(void) { return system("true"); }
 #endif'
-bin/grade --submission "$out/sub" --parts 1 --seed 1 --out "$out/reentrant" >"$out/reentrant.log" 2>&1 || true
+mkdir -p "$out/tmp" && chmod 711 "$out/tmp"  # the grader's sandbox folder goes here (TMPDIR)
+TMPDIR=$PWD/$out/tmp bin/grade --submission "$out/sub" --parts 1 --seed 1 --out "$out/reentrant" >"$out/reentrant.log" 2>&1 || true
 unit_output "$out/reentrant" | grep -q 'calls `system`' || fail "system() under _REENTRANT was not refused (see $out/reentrant.log)"
 [ "$(part1_score "$out/reentrant")" = 0 ] || fail "system() under _REENTRANT scored $(part1_score "$out/reentrant")"
 echo "  system() under _REENTRANT: refused, part 1 scores 0"
 
 # 4. what nobody can reach after a grading, as root
 if [ "$(id -u)" = 0 ]; then
-    tree="$out/reentrant/work/part1/tree"
-    [ -d "$tree/parts" ] || fail "no graded tree at $tree"
-    [ ! -e "$tree/grading" ] && [ ! -e "$tree/reference_images" ] ||
-        fail "the graded tree holds grading/ or reference_images/"
-    [ -z "$(find "$tree" -name '*.exr' | head -1)" ] || fail "the graded tree holds an EXR"
+    # No grading tree outlives its grading (what a tree may hold is the sweep's concern, below).
+    [ -z "$(ls -A "$out/tmp")" ] || fail "the grading left $(ls -A "$out/tmp") in its TMPDIR"
+    grep -q 'unit tests' "$out/reentrant.log" || fail "the grading did not run ($out/reentrant.log)"
     as_nobody() { setpriv --reuid=nobody --regid=nogroup --clear-groups "$@" >/dev/null 2>&1; }
     ref=$(find reference_images -name '*.exr' | head -1)
     for secret in "$ref" grading/hidden/cases.json "$out/reentrant/results.json" "$out/reentrant/report/index.html"; do
@@ -83,8 +82,11 @@ if [ "$(id -u)" = 0 ]; then
     echo "  as nobody: references, hidden cases, results.json and the report are unreadable"
 
     # 5. not root: the grader's own suite, as nobody, checks its children's process limit
-    PL_TEST_FILTER='*process_limit*' setpriv --reuid=nobody --regid=nogroup --clear-groups bin/test-grader \
-        >"$out/nproc.log" 2>&1 || fail "not root, an untrusted child has no process limit (see $out/nproc.log)"
+    # (a copy: bin/ is root's alone once bin/grade --submission ran here as root)
+    copy=$(mktemp -d /tmp/pathlab-nproc.XXXXXX) && chmod 755 "$copy" && cp bin/test-grader "$copy/"
+    (cd "$copy" && PL_TEST_FILTER='*process_limit*' setpriv --reuid=nobody --regid=nogroup --clear-groups \
+        ./test-grader) >"$out/nproc.log" 2>&1 || { rm -rf "$copy"; fail "not root, an untrusted child has no process limit (see $out/nproc.log)"; }
+    rm -rf "$copy"
     grep -q 'PASSED.*1 test' "$out/nproc.log" || fail "the process-limit test did not run as nobody ($out/nproc.log)"
     echo "  as nobody (not root): untrusted children have a process limit"
 else
@@ -134,10 +136,16 @@ elif [ "$(id -u)" = 0 ]; then
         size=$(wc -c <"$f"); [ "$size" -ge 96 ] || continue
         tail -c +$((size / 2)) "$f" | head -c 48 | hexof >>"$needles.raw"; echo >>"$needles.raw"
     done
-    count=$(grep -c . "$needles.raw")
+    # A secret the student release also holds is no secret (a solution line that repeats framework
+    # code, a hidden scene's chunk that a public scene shares): those needles are dropped.
+    public="framework tests scenes tools third_party fuzz handout bench grading/cases.json Makefile README.md"
+    PL_SWEEP_NEEDLES=$(grep . "$needles.raw" | paste -sd, -) bin/grade-probe sweep $public >"$out/public.log" 2>&1 || true
+    sed -n 's/^FOUND secret \([0-9]*\) in .*/\1/p' "$out/public.log" | sort -un >"$out/public.ids"
+    grep . "$needles.raw" | awk 'NR == FNR { drop[$1 + 1] = 1; next } !(FNR in drop)' "$out/public.ids" - >"$needles.kept"
+    count=$(grep -c . "$needles.kept")
     [ "$count" -ge 40 ] || fail "only $count secrets to look for"
-    PL_SWEEP_NEEDLES=$(grep . "$needles.raw" | paste -sd, -); export PL_SWEEP_NEEDLES
-    chmod 600 "$needles.raw"
+    PL_SWEEP_NEEDLES=$(paste -sd, - <"$needles.kept"); export PL_SWEEP_NEEDLES
+    chmod 600 "$needles.raw" "$needles.kept"
     # The sweep can fail: a folder holding a hidden scene, readable, is found.
     bait=$(mktemp -d /tmp/pathlab-bait.XXXXXX); chmod 755 "$bait"
     cp grading/hidden/cases.json "$bait/"; chmod 644 "$bait/cases.json"
