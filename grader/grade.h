@@ -113,6 +113,7 @@ typedef struct {
 /* Every limit a child gets, in one place, each with its reason. Wall-clock limits are per stage;
  * CPU limits per process (RLIMIT_CPU), so a render's threads share its CPU allowance. */
 #define GRADE_BUILD_SECONDS 120          /* one part's build: the course's takes ~15 s on one core */
+#define GRADE_COURSE_BUILD_SECONDS 900   /* the course's whole tree, once, trusted: ~60 s on a busy 2 cores */
 #define GRADE_SUITE_SECONDS 300          /* a part's suite: the slowest (part 4) takes ~40 s */
 #define GRADE_RENDER_SECONDS 120         /* one case's render: the slowest takes ~20 s at two threads */
 #define GRADE_CPU_PER_WALL 2             /* CPU seconds per wall second: the grader's two threads */

@@ -10,6 +10,7 @@
  *   would otherwise be read, as root, and compared with itself. */
 #include "grade_guard.h"
 #include "grade.h"
+#include "grade_tree.h"
 #include <errno.h>
 #include <fcntl.h>
 #include <stdio.h>
@@ -32,9 +33,10 @@ bool grade_guard_secrets(const char *root, const char *outdir, const grade_sandb
     if (!s->as_other_user) return true;  /* the child is the grader's own user: nothing a mode can hide */
     /* parts/: the course's solutions, which a submission could otherwise #include or link to; bin/
      * and build/: the course's programs and objects (the solution as machine code); course/ and
-     * release/: the instructor's tools, mutants and the bundle's own copy of everything. */
+     * release/: the instructor's tools, mutants and the bundle's own copy of everything; the course's
+     * prebuilt objects (grade_tree.h). */
     static const char *const secrets[] = {"reference_images", "grading/hidden", "parts", "bin", "build", "course",
-                                          "release"};
+                                          "release", GRADE_PREBUILD};
     char path[4200];
     for (size_t k = 0; k < sizeof secrets / sizeof secrets[0]; k++) {
         snprintf(path, sizeof path, "%s/%s", root, secrets[k]);

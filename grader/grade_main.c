@@ -1,6 +1,7 @@
 /* Grader machinery: not part of any assignment.
  * bin/grade [--submission DIR] [--public] [--out DIR] [--seed N] [--threads N] [--parts 1,3]
  * bin/grade --calibrate N [--parts ...]
+ * bin/grade --prebuild   build the course's objects ahead of time (setup.sh), for every grading to reuse
  *   --submission DIR  grade DIR/parts/ part by part, each among the solution's other parts (autograder);
  *                     without it, grade this tree as it is, public cases only (a student's make grade)
  *   --out DIR         where results.json, the report (DIR/report/index.html) and scratch go (out/grade)
@@ -147,15 +148,32 @@ static void grade_parts(const grade_env *env, grade_spec *spec, const char *part
     }
 }
 
+/* --prebuild: the course's objects built ahead of time (setup.sh, when the image is made), so that
+ * each grading only copies and links them. */
+static int prebuild_course(const char *root)
+{
+    char work[4200], why[512];
+    snprintf(work, sizeof work, "%s/" GRADE_PREBUILD, root);
+    if (!make_dir(work) || chmod(work, 0700) != 0) return usage("--prebuild: cannot create " GRADE_PREBUILD);
+    grade_env env = {.root = root, .work = work};
+    if (!grade_tree_course_build(&env, "1,2,3,4,5", why, sizeof why)) {
+        fprintf(stderr, "grade: --prebuild: %s\n", why);
+        return 3;
+    }
+    fprintf(stderr, "grade: the course's objects are prebuilt in %s/course/build\n", work);
+    return 0;
+}
+
 int main(int argc, char **argv)
 {
     const char *submission = NULL, *out = "out/grade", *parts = "1,2,3,4,5";
-    bool public_only = false, seed_given = false;
+    bool public_only = false, seed_given = false, prebuild = false;
     uint64_t seed = 0;
     int threads = 2, calibrate_runs = 0;
     for (int i = 1; i < argc; i++) {
         const char *a = argv[i], *v = i + 1 < argc ? argv[i + 1] : NULL;
         if (!strcmp(a, "--public")) public_only = true;
+        else if (!strcmp(a, "--prebuild")) prebuild = true;
         else if (!v) return usage("missing value");
         else if (!strcmp(a, "--submission")) submission = argv[++i];
         else if (!strcmp(a, "--out")) out = argv[++i];
@@ -170,6 +188,7 @@ int main(int argc, char **argv)
 
     char root[4096], outdir[4096], work[4096], report[4096], json[4200];
     if (!getcwd(root, sizeof root)) return usage("cannot read the current folder");
+    if (prebuild) return prebuild_course(root);
     if (!make_dir(out) || !realpath(out, outdir)) return usage("--out: cannot create the folder");
     snprintf(work, sizeof work, "%s/work", outdir);
     snprintf(report, sizeof report, "%s/report", outdir);

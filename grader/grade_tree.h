@@ -13,9 +13,12 @@
 /* The folder name of part n in root, e.g. "part2_bvh"; false when there is none. */
 bool grade_part_folder(const char *root, int n, char *out, size_t size);
 
+/* Where `bin/grade --prebuild` builds the course's objects ahead of time, under the root. */
+#define GRADE_PREBUILD "out/grader-prebuild"
+
 /* Copies the course's tree into env->work/course and builds there, before any student code runs,
  * every object and the renderer, and the suites of `parts` ("1,3"); false with why (the course's
- * problem: grading must not start). */
+ * problem: grading must not start). Objects prebuilt in root/GRADE_PREBUILD are reused. */
 bool grade_tree_course_build(const grade_env *env, const char *parts, char *why, size_t size);
 
 /* Part n's tree at env->sandbox_dir/part<n> (tree receives its path): the course's pieces and the
