@@ -32,7 +32,7 @@ static double now(void)
 
 static int usage(const char *msg)
 {
-    fprintf(stderr, "grade: %s\nusage: grade [--submission DIR] [--public] [--out DIR] [--seed N] [--threads N] "
+    fprintf(stderr, "grade: %s\nusage: grade [--submission DIR] [--public] [--out DIR] [--seed N] [--threads N] [--prebuild] "
                     "[--parts 1,2,...]\n", msg);
     return 2;
 }
@@ -164,31 +164,67 @@ static int prebuild_course(const char *root)
     return 0;
 }
 
+/* The table, results.json and the report; as root with a submission, results.json and the report
+ * made root's alone. The exit status: 0 full marks, 1 otherwise or when an output failed. */
+static int write_outputs(const grade_result *result, const char *outdir, const grade_env *env)
+{
+    char json[4200], why[512];
+    pl_diag diag = pl_diag_default();
+    grade_print_table(result, stdout);
+    snprintf(json, sizeof json, "%s/results.json", outdir);
+    int code = 0;
+    if (grade_write_results_json(result, json, &diag) != PL_OK || grade_write_html(result, env->report, &diag) != PL_OK) {
+        fprintf(stderr, "grade: %s\n", diag.error);
+        code = 1;
+    }
+    if (env->submission && !grade_guard_secrets(env->root, outdir, &env->sandbox, why, sizeof why)) {
+        fprintf(stderr, "grade: %s\n", why);  /* the new results.json */
+        code = 1;
+    }
+    printf("results: %s\nreport:  %s/index.html\n", json, env->report);
+    for (int i = 0; i < result->num_parts; i++) code |= result->parts[i].score < result->parts[i].max_score;
+    return code;
+}
+
+/* The command line (see the top of this file). */
+typedef struct {
+    const char *submission, *out, *parts;
+    bool public_only, seed_given, prebuild;
+    uint64_t seed;
+    int threads, calibrate_runs;
+} grade_args;
+
+/* Reads argv into a; NULL, or what was wrong. */
+static const char *parse_args(int argc, char **argv, grade_args *a)
+{
+    *a = (grade_args){.out = "out/grade", .parts = "1,2,3,4,5", .threads = 2};
+    for (int i = 1; i < argc; i++) {
+        const char *f = argv[i], *v = i + 1 < argc ? argv[i + 1] : NULL;
+        if (!strcmp(f, "--public")) a->public_only = true;
+        else if (!strcmp(f, "--prebuild")) a->prebuild = true;
+        else if (!v) return "missing value";
+        else if (!strcmp(f, "--submission")) a->submission = argv[++i];
+        else if (!strcmp(f, "--out")) a->out = argv[++i];
+        else if (!strcmp(f, "--parts")) a->parts = argv[++i];
+        else if (!strcmp(f, "--seed")) { a->seed = strtoull(argv[++i], NULL, 10); a->seed_given = true; }
+        else if (!strcmp(f, "--threads")) a->threads = atoi(argv[++i]);
+        else if (!strcmp(f, "--calibrate")) a->calibrate_runs = atoi(argv[++i]);
+        else return "unknown option";
+    }
+    if (a->threads < 1 || a->threads > 64) return "--threads: expected 1..64";
+    if (!a->submission) a->public_only = true;  /* a student's own tree has no hidden cases */
+    return NULL;
+}
+
 int main(int argc, char **argv)
 {
-    const char *submission = NULL, *out = "out/grade", *parts = "1,2,3,4,5";
-    bool public_only = false, seed_given = false, prebuild = false;
-    uint64_t seed = 0;
-    int threads = 2, calibrate_runs = 0;
-    for (int i = 1; i < argc; i++) {
-        const char *a = argv[i], *v = i + 1 < argc ? argv[i + 1] : NULL;
-        if (!strcmp(a, "--public")) public_only = true;
-        else if (!strcmp(a, "--prebuild")) prebuild = true;
-        else if (!v) return usage("missing value");
-        else if (!strcmp(a, "--submission")) submission = argv[++i];
-        else if (!strcmp(a, "--out")) out = argv[++i];
-        else if (!strcmp(a, "--parts")) parts = argv[++i];
-        else if (!strcmp(a, "--seed")) { seed = strtoull(argv[++i], NULL, 10); seed_given = true; }
-        else if (!strcmp(a, "--threads")) threads = atoi(argv[++i]);
-        else if (!strcmp(a, "--calibrate")) calibrate_runs = atoi(argv[++i]);
-        else return usage("unknown option");
-    }
-    if (threads < 1 || threads > 64) return usage("--threads: expected 1..64");
-    if (!submission) public_only = true;  /* a student's own tree has no hidden cases */
-
-    char root[4096], outdir[4096], work[4096], report[4096], json[4200];
+    grade_args a;
+    const char *bad = parse_args(argc, argv, &a);
+    if (bad) return usage(bad);
+    const char *submission = a.submission, *out = a.out, *parts = a.parts;
+    char root[4096], outdir[4096], work[4096], report[4096];
     if (!getcwd(root, sizeof root)) return usage("cannot read the current folder");
-    if (prebuild) return prebuild_course(root);
+    if (a.prebuild) return prebuild_course(root);
     if (!make_dir(out) || !realpath(out, outdir)) return usage("--out: cannot create the folder");
     snprintf(work, sizeof work, "%s/work", outdir);
     snprintf(report, sizeof report, "%s/report", outdir);
@@ -204,11 +240,11 @@ int main(int argc, char **argv)
     }
     grade_result result;
     memset(&result, 0, sizeof result);
-    result.seed = seed_given ? seed : fresh_seed();
+    result.seed = a.seed_given ? a.seed : fresh_seed();
     char sandbox_dir[4096];
     if (!make_sandbox_dir(sandbox_dir, sizeof sandbox_dir)) return usage("cannot create the sandbox's folder under $TMPDIR or /tmp");
     grade_env env = {.root = root, .submission = submission ? subdir : NULL, .work = work, .sandbox_dir = sandbox_dir,
-                     .report = report, .public_only = public_only, .seed = result.seed, .threads = threads,
+                     .report = report, .public_only = a.public_only, .seed = result.seed, .threads = a.threads,
                      .sandbox = grade_sandbox_probe()};
     /* Before any child runs: the grader's own set-up, and the answers out of the children's reach. */
     char why[512] = "", in_force[512];
@@ -224,8 +260,8 @@ int main(int argc, char **argv)
     /* A student's own tree is their code on their machine: containment is the autograder's concern. */
     if (submission) grade_sandbox_describe(&env.sandbox, result.unprotected, sizeof result.unprotected);
     if (result.unprotected[0]) fprintf(stderr, "grade: unavailable protections: %s\n", result.unprotected);
-    if (calibrate_runs > 0) {
-        int code = calibrate(&env, &spec, parts, calibrate_runs);
+    if (a.calibrate_runs > 0) {
+        int code = calibrate(&env, &spec, parts, a.calibrate_runs);
         grade_tree_remove(sandbox_dir);
         grade_spec_free(&spec);
         return code;
@@ -233,19 +269,7 @@ int main(int argc, char **argv)
     grade_parts(&env, &spec, parts, &result);
     grade_tree_remove(sandbox_dir);
 
-    grade_print_table(&result, stdout);
-    snprintf(json, sizeof json, "%s/results.json", outdir);
-    int code = 0;
-    if (grade_write_results_json(&result, json, &diag) != PL_OK || grade_write_html(&result, report, &diag) != PL_OK) {
-        fprintf(stderr, "grade: %s\n", diag.error);
-        code = 1;
-    }
-    if (submission && !grade_guard_secrets(root, outdir, &env.sandbox, why, sizeof why)) {  /* the new results.json */
-        fprintf(stderr, "grade: %s\n", why);
-        code = 1;
-    }
-    printf("results: %s\nreport:  %s/index.html\n", json, report);
-    for (int i = 0; i < result.num_parts; i++) code |= result.parts[i].score < result.parts[i].max_score;
+    int code = write_outputs(&result, outdir, &env);
     grade_spec_free(&spec);
     return code;
 }
