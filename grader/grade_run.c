@@ -104,7 +104,11 @@ static void set_limit(int resource, rlim_t value)
 static void confine(const grade_run_opts *o)
 {
     set_limit(RLIMIT_CPU, (rlim_t)(o->wall_seconds * GRADE_CPU_PER_WALL) + 5);
+#ifndef __SANITIZE_ADDRESS__
+    /* (Not in a grader built with AddressSanitizer, make SAN=1: the child is a fork of it until exec,
+     * with terabytes of shadow reserved, and could not allocate the filter under any limit.) */
     set_limit(RLIMIT_AS, (rlim_t)(o->compiler ? GRADE_COMPILER_MEMORY : GRADE_CODE_MEMORY));
+#endif
     set_limit(RLIMIT_NOFILE, SANDBOX_EXEC_FD + 1);  /* sandbox_exec lowers it by one more */
     if (sandbox.no_network && unshare(CLONE_NEWNET | CLONE_NEWIPC) != 0) _exit(126);
     if (sandbox.as_other_user) {
