@@ -1,7 +1,7 @@
 /* Adversary (invented against the trees): leaves files where a later part, or a later grading,
  * could read them (/tmp, /dev/shm, /var/tmp, its own tree and the sandbox folder above it), and a
- * process that calls setsid to outlive its render. The filter refuses creating files, fork and
- * setsid; the tree is removed when the part is graded. test.sh checks none of the files exist.
+ * process that calls setsid to outlive its render. The render's filter refuses creating files, fork
+ * and setsid; the tree is removed when the part is graded. test.sh checks none of the files exist.
  * part: 5
  * base: stub
  * replaces: parts/part5_adaptive/adaptive.c
@@ -29,7 +29,9 @@ static long raw(long nr, long a, long b)
 bool adaptive_converged(int n, double s1, double s2, float tol)
 {
     static int tried;
-    if (!tried++) {
+    /* In a render only (its film descriptor, 3, is open): the unit-test suite still writes cmocka's XML
+     * files until the judge and subject split lands, so its filter lets it create files. */
+    if (!tried++ && raw(72, 3, 1 /* fcntl(3, F_GETFD) */) >= 0) {
         static const char *const paths[] = {"/tmp/pathlab-persist", "/dev/shm/pathlab-persist",
                                             "/var/tmp/pathlab-persist", "pathlab-persist", "../pathlab-persist"};
         for (unsigned i = 0; i < sizeof paths / sizeof paths[0]; i++)
