@@ -209,7 +209,7 @@ static int run_probe(const char *mode, const char *log, bool *cut)
     snprintf(copy, sizeof copy, "cp bin/grade-probe '%s'", probe);
     assert_int_equal(system(copy), 0);
     char *argv[] = {probe, (char *)mode, NULL};
-    grade_run_opts o = {.wall_seconds = 30, .log_path = log, .log_max = 1 << 16, .untrusted = true};
+    grade_run_opts o = {.wall_seconds = 30, .cwd = scratch, .log_path = log, .log_max = 1 << 16, .untrusted = true};
     grade_run_result r = grade_run(argv, &o);
     if (cut) *cut = r.output_cut;
     return r.exited ? r.status : -1;
@@ -235,7 +235,7 @@ static void test_run__student_code_is_filtered_from_its_first_instruction(void *
     char probe[128];
     snprintf(probe, sizeof probe, "%s/grade-probe", scratch);
     char *argv[] = {probe, "forbidden", NULL};
-    grade_run_opts o = {.wall_seconds = 30, .log_path = log, .log_max = 1 << 16};
+    grade_run_opts o = {.wall_seconds = 30, .cwd = scratch, .log_path = log, .log_max = 1 << 16};
     grade_run_result r = grade_run(argv, &o);
     assert_true(r.exited && r.status != 0);
 }
