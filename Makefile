@@ -54,7 +54,7 @@ FEATURES := -D_POSIX_C_SOURCE=200809L
 # realpath() is POSIX.1-2008, but glibc declares it only with X/Open's interfaces on.
 XOPEN_SRC := framework/output.c grader/grade_main.c
 # The autograder's Linux-only sandbox code (namespaces, setgroups, pipe2): glibc's extensions.
-LINUX_SRC := grader/grade_run.c
+LINUX_SRC := grader/grade_run.c grader/sandbox_linux.c grader/probe_main.c
 # Their objects in any build folder (build/release, build/san, build/fuzz) take these instead.
 $(addprefix %/,$(XOPEN_SRC:.c=.o)): FEATURES += -D_XOPEN_SOURCE=700
 $(addprefix %/,$(LINUX_SRC:.c=.o)): FEATURES := -D_GNU_SOURCE

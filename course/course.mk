@@ -46,11 +46,12 @@ test-grade-local: release $(BIN)/grade  ## make grade without the sandbox: the a
 	$(Q)sh course/platform/grade_local.sh
 
 # ---- references: the solution's renders of every grading case, locally or as a Slurm job array ---
-REF_OBJ := $(BUILD)/course/references/references.o $(BUILD)/grader/grade_cases.o $(BUILD)/grader/grade_run.o $(LIB_OBJ)
+REF_OBJ := $(BUILD)/course/references/references.o $(BUILD)/grader/grade_cases.o $(BUILD)/grader/grade_run.o \
+           $(BUILD)/grader/sandbox_$(SANDBOX_IMPL).o $(LIB_OBJ)
 $(BIN)/references: $(REF_OBJ)
 	$(say) LD $@
 	@mkdir -p $(dir $@)
-	$(Q)$(CC) $(LDFLAGS) -o $@ $^ $(LDLIBS)
+	$(Q)$(CC) $(LDFLAGS) -o $@ $^ $(LDLIBS) $(GRADER_LIBS)
 
 references: $(BIN)/references $(BIN)/pathtracer  ## render the grading references (FORCE=1, CASES="part3 spot", SLURM=1 SBATCH="...")
 	$(Q)$(BIN)/references $(if $(FORCE),--force) $(if $(SLURM),--slurm $(if $(SBATCH),--sbatch "$(SBATCH)")) $(CASES)

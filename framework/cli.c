@@ -20,6 +20,7 @@ options options_default(void)
     o.accumulate = true;
     o.lens_radius = CAMERA_DEFAULT_LENS_RADIUS;
     o.focal_distance = CAMERA_DEFAULT_FOCAL_DISTANCE;
+    o.film_fd = -1;
     o.width = 800;
     o.height = 600;
     o.adaptive_batch = 32;
@@ -60,6 +61,7 @@ void cli_print_usage(FILE *f, const char *prog)
             "  --max-primitives N  refuse scenes with more triangles + spheres (2000000; guards memory)\n"
             "  --max-instances N   refuse scenes whose nodes expand to more instances (1000000; guards time)\n"
             "  --heatmap FILE    write a PNG of BVH nodes visited per pixel\n"
+            "  --film-fd N       send the film to descriptor N (the grader's pipe) and write no file\n"
             "  --samples A:B     render only samples A..B-1 of -s N (fixed rate; -f x.exr keeps what --merge needs)\n"
             "  --trace-pixel X Y   print every path of pixel (X, Y) (0 0 = bottom-left), as the render computes it\n"
             "  --trace-sample K    with --trace-pixel: print only sample K (or samples A:B, B excluded)\n"
@@ -150,6 +152,7 @@ static int parse_long_flag(int argc, char **argv, int i, options *o, pl_status *
         taken = 1;
     }
     else if (!strcmp(a, "--heatmap")) { if (!VALUE(1)) *s = pl_fail(d, PL_ERR_INVALID, "--heatmap: expected a .png file name"); o->heatmap = VALUE(1); taken = 1; }
+    else if (!strcmp(a, "--film-fd")) *s = parse_int(a, VALUE(1), 3, 1023, &o->film_fd, d), taken = 1;
     else taken = -1;
 #undef VALUE
     return taken;
@@ -215,6 +218,8 @@ static pl_status check_options(const options *o, pl_diag *d)
         return pl_fail(d, PL_ERR_INVALID, "--samples %d:%d: B must be at most -s %d", o->sample_begin, o->sample_end, o->spp);
     if (check_trace_flags(o, d) != PL_OK) return PL_ERR_INVALID;
     if (o->envmap) return pl_fail(d, PL_ERR_INVALID, "-e %s: environment maps are not supported yet", o->envmap);
+    if (o->film_fd >= 0 && (o->output || o->heatmap))
+        return pl_fail(d, PL_ERR_INVALID, "--film-fd %d: the film goes to the descriptor; no -f or --heatmap with it", o->film_fd);
     return PL_OK;
 }
 

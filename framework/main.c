@@ -141,7 +141,7 @@ static int run(const options *o, const char *prog)
 
     /* Every pixel's accumulators are kept only for an EXR, which stores them; other renders resolve
      * each pixel into the image as it finishes (render_image): same pixels, 144 bytes a pixel less. */
-    bool exr = o->output && file_has_extension(o->output, ".exr");
+    bool exr = (o->output && file_has_extension(o->output, ".exr")) || o->film_fd >= 0;
     int w = ctx.x1 - ctx.x0, h = ctx.y1 - ctx.y0;  /* the window (--crop), else the image */
     samples = calloc((size_t)w * (size_t)h, sizeof *samples);
     if (!samples || image_alloc(&img, w, h) != PL_OK || (exr && film_alloc(&fm, w, h) != PL_OK)) {
@@ -152,6 +152,9 @@ static int run(const options *o, const char *prog)
     render_stats stats;
     pl_status rendered = exr ? render_film(&ctx, &fm, &stats, &diag) : render_image(&ctx, &img, samples, &stats, &diag);
     if (rendered != PL_OK || (exr && film_to_image(&fm, &img, samples, &diag) != PL_OK)) { code = fail(prog, &diag, 1); goto done; }
+    /* --film-fd: the film to the grader's pipe, and no file at all. */
+    output_film_counts counts = {stats.rays, stats.node_visits, stats.prim_tests, stats.samples};
+    if (o->film_fd >= 0 && output_film_send(o->film_fd, &fm, &counts, &diag) != PL_OK) { code = fail(prog, &diag, 1); goto done; }
     if (stats.bad_pixels)
         fprintf(stderr, "%s: warning: %d pixels have NaN, infinite or negative radiance (first at x=%d y=%d, "
                         "counted from the bottom-left)\n", prog, stats.bad_pixels, stats.first_bad_x, stats.first_bad_y);

@@ -41,6 +41,7 @@ typedef struct {
     bool trace_json;          /* --trace-format json: one JSON document (framework/trace.schema.json) */
     bool crop;                /* --crop X0 Y0 X1 Y1: render only pixels X0 <= x < X1, Y0 <= y < Y1 */
     int crop_x0, crop_y0, crop_x1, crop_y1;
+    int film_fd;              /* --film-fd N: send the film to descriptor N, write no file (output.h); -1 */
     bool verbose;             /* -v: print build and traversal statistics */
     bool quiet;               /* -q: no progress bar or summary */
     const char *scene_path;   /* the positional argument */

@@ -205,3 +205,85 @@ void output_free(output_set *set)
     for (int k = 0; k < OUTPUT_KINDS; k++) free(set->path[k]);
     memset(set, 0, sizeof *set);
 }
+
+/* ---- the film stream ------------------------------------------------------------------------- */
+
+static const char film_magic[8] = {'P', 'L', 'F', 'I', 'L', 'M', '1', '\n'};
+static const char film_end[8] = {'P', 'L', 'F', 'I', 'L', 'M', '.', '\n'};
+#define FILM_HEADER_BYTES (8 + 2 * 4 + 4 * 8)
+
+static void put_le(unsigned char *p, film_sum v, int bytes)
+{
+    for (int i = 0; i < bytes; i++) p[i] = (unsigned char)(v >> (8 * i));
+}
+
+static film_sum get_le(const unsigned char *p, int bytes)
+{
+    film_sum v = 0;
+    for (int i = bytes - 1; i >= 0; i--) v = v << 8 | p[i];
+    return v;
+}
+
+static void pixel_bytes(const film_pixel *px, unsigned char *p)
+{
+    for (int c = 0; c < 4; c++) put_le(p + 16 * c, px->sum[c], 16), put_le(p + 64 + 16 * c, px->sum_sq[c], 16);
+    put_le(p + 128, px->n, 4);
+    put_le(p + 132, px->bad, 4);
+}
+
+static bool write_all(int fd, const unsigned char *p, size_t len)
+{
+    while (len > 0) {
+        ssize_t n = write(fd, p, len);
+        if (n < 0 && errno == EINTR) continue;
+        if (n <= 0) return false;
+        p += n;
+        len -= (size_t)n;
+    }
+    return true;
+}
+
+pl_status output_film_send(int fd, const film *f, const output_film_counts *c, pl_diag *diag)
+{
+    unsigned char head[FILM_HEADER_BYTES], buf[OUTPUT_FILM_PIXEL_BYTES * 64];
+    memcpy(head, film_magic, 8);
+    put_le(head + 8, (film_sum)(uint32_t)f->width, 4);
+    put_le(head + 12, (film_sum)(uint32_t)f->height, 4);
+    uint64_t counts[4] = {c->rays, c->node_visits, c->prim_tests, c->samples};
+    for (int i = 0; i < 4; i++) put_le(head + 16 + 8 * i, counts[i], 8);
+    bool ok = write_all(fd, head, sizeof head);
+    long pixels = (long)f->width * f->height;
+    for (long i = 0; ok && i < pixels; i += 64) {
+        long batch = pixels - i < 64 ? pixels - i : 64;
+        for (long k = 0; k < batch; k++) pixel_bytes(&f->pixels[i + k], buf + OUTPUT_FILM_PIXEL_BYTES * k);
+        ok = write_all(fd, buf, (size_t)(OUTPUT_FILM_PIXEL_BYTES * batch));
+    }
+    ok = ok && write_all(fd, (const unsigned char *)film_end, 8);
+    return ok ? PL_OK : pl_fail(diag, PL_ERR_IO, "--film-fd %d: cannot send the film: %s", fd, strerror(errno));
+}
+
+pl_status output_film_receive(const void *data, size_t len, int width, int height, film *out,
+                              output_film_counts *c, pl_diag *diag)
+{
+    const unsigned char *p = data;
+    size_t pixels = (size_t)width * (size_t)height;
+    if (len < FILM_HEADER_BYTES || memcmp(p, film_magic, 8))
+        return pl_fail(diag, PL_ERR_PARSE, "the render sent no film (%zu bytes, not a film stream)", len);
+    int w = (int)(uint32_t)get_le(p + 8, 4), h = (int)(uint32_t)get_le(p + 12, 4);
+    if (w != width || h != height)
+        return pl_fail(diag, PL_ERR_PARSE, "the film is %dx%d, the case renders %dx%d", w, h, width, height);
+    if (len != FILM_HEADER_BYTES + pixels * OUTPUT_FILM_PIXEL_BYTES + 8 || memcmp(p + len - 8, film_end, 8))
+        return pl_fail(diag, PL_ERR_PARSE, "the film stream is %zu bytes, a %dx%d film takes %zu", len, w, h,
+                       FILM_HEADER_BYTES + pixels * OUTPUT_FILM_PIXEL_BYTES + 8);
+    uint64_t *counts[4] = {&c->rays, &c->node_visits, &c->prim_tests, &c->samples};
+    for (int i = 0; i < 4; i++) *counts[i] = (uint64_t)get_le(p + 16 + 8 * i, 8);
+    if (film_alloc(out, w, h) != PL_OK) return pl_fail(diag, PL_ERR_NOMEM, "out of memory for a %dx%d film", w, h);
+    for (size_t i = 0; i < pixels; i++) {
+        const unsigned char *q = p + FILM_HEADER_BYTES + i * OUTPUT_FILM_PIXEL_BYTES;
+        film_pixel *px = &out->pixels[i];
+        for (int k = 0; k < 4; k++) px->sum[k] = get_le(q + 16 * k, 16), px->sum_sq[k] = get_le(q + 64 + 16 * k, 16);
+        px->n = (uint32_t)get_le(q + 128, 4);
+        px->bad = (uint32_t)get_le(q + 132, 4);
+    }
+    return PL_OK;
+}

@@ -13,7 +13,9 @@
 #ifndef PL_OUTPUT_H
 #define PL_OUTPUT_H
 
+#include <stdint.h>
 #include <stdio.h>
+#include "film.h"
 #include "options.h"
 #include "status.h"
 
@@ -39,5 +41,26 @@ void output_bind(output_set *set, output_kind k, output_encode_fn encode, const 
 /* Writes the kinds in [first, last] as one unit: all renamed into place, sidecar last, or none. */
 pl_status output_write(output_set *set, output_kind first, output_kind last, pl_diag *diag);
 void output_free(output_set *set);
+
+/* ---- the film stream: a render's film handed to the grader through a pipe, never a file ----------
+ * `--film-fd N` sends the film to descriptor N (the grader's pipe) and writes no file, so the grader
+ * never parses a file the candidate's process wrote, and writes the EXR itself. Fixed layout, every
+ * integer little-endian whatever the machine:
+ *   "PLFILM1\n", int32 width, int32 height,
+ *   uint64 rays, node_visits, prim_tests, camera samples (the framework's counters: render_stats),
+ *   width * height pixels, top row first, each sum[0..3] and sum_sq[0..3] (film.h, 16 bytes each),
+ *   then uint32 n and uint32 bad (136 bytes a pixel), and "PLFILM.\n" to close it.
+ * A stream that is cut, longer, or of another size is refused whole by output_film_receive. */
+#define OUTPUT_FILM_PIXEL_BYTES 136
+typedef struct {
+    uint64_t rays, node_visits, prim_tests, samples;
+} output_film_counts;
+
+/* Writes the stream of f to fd (all of it, retrying short writes). */
+pl_status output_film_send(int fd, const film *f, const output_film_counts *c, pl_diag *diag);
+/* Reads a stream from memory: out (allocated here; film_free it) must be width x height. Errors say
+ * what was wrong ("the film is 64x48, the case renders 128x96"). */
+pl_status output_film_receive(const void *data, size_t len, int width, int height, film *out,
+                              output_film_counts *c, pl_diag *diag);
 
 #endif

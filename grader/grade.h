@@ -66,9 +66,12 @@ pl_status grade_spec_load(const char *path, const char *hidden_path, grade_spec 
 void grade_spec_free(grade_spec *s);
 
 /* The command of case k's own render (its flags, resolution and samples; not the reference's):
- * `bin flags... -r W H -s S --seed SEED -t THREADS -q -f out scene`, into argv (room for
+ * `bin flags... -r W H -s S --seed SEED -t THREADS -q -f out scene` (out NULL: `--film-fd 3`, the
+ * film to the grader's pipe), into argv (room for
  * GRADE_MAX_FLAGS + 16 entries, NULL-terminated); the numbers are formatted into text. The grader
  * renders a candidate with it, the reference maker the course's figures (probe_case). */
+#define GRADE_FILM_FD 3
+#define GRADE_FILM_FD_TEXT "3"
 typedef struct { char width[16], height[16], samples[16], seed[32], threads[16]; } grade_case_text;
 void grade_case_command(const grade_case *k, const char *bin, const char *scene, const char *out,
                         unsigned long long seed, int threads, grade_case_text *text, char **argv);
@@ -114,6 +117,30 @@ typedef struct {
 
 /* ---- running children ---------------------------------------------------------------------- */
 
+/* Every limit a child gets, in one place, each with its reason. Wall-clock limits are per stage;
+ * CPU limits per process (RLIMIT_CPU), so a render's threads share its CPU allowance. */
+#define GRADE_BUILD_SECONDS 120          /* one part's build: the course's takes ~15 s on one core */
+#define GRADE_COURSE_BUILD_SECONDS 900   /* the course's whole tree, once, trusted: ~60 s on a busy 2 cores */
+#define GRADE_SUITE_SECONDS 300          /* a part's suite: the slowest (part 4) takes ~40 s */
+#define GRADE_RENDER_SECONDS 120         /* one case's render: the slowest takes ~20 s at two threads */
+#define GRADE_CPU_PER_WALL 2             /* CPU seconds per wall second: the grader's two threads */
+#define GRADE_COMPILER_MEMORY ((long)1 << 30)   /* cc1 on a part: ~150 MB; `#include "/dev/zero"` stops here */
+#define GRADE_CODE_MEMORY ((long)4 << 30)       /* a render or a suite: the largest case needs ~600 MB */
+#define GRADE_FILE_BYTES ((long)64 << 20)       /* any file a child writes (objects, the legacy XML) */
+#define GRADE_PROCESSES 256              /* the sandbox user's processes and threads: make -j2 and cc1 */
+#define GRADE_LOG_MAX (256 * 1024)       /* what the grader keeps of a child's output */
+#define GRADE_FILM_MAX ((long)128 << 20) /* a streamed film: 136 bytes a pixel, far above any case */
+
+/* What a child sends the grader on a descriptor of its own besides its log (a render's film): the
+ * grader reads it while the child runs, into memory, never through a file the child could name. */
+typedef struct {
+    int child_fd;              /* the descriptor number the child writes to (3 and up) */
+    long max;                  /* keep at most this many bytes */
+    char *data;                /* filled by grade_run: what arrived (malloc'd; the caller frees) */
+    long len;
+    bool overflow;             /* it sent more than max (data holds the first max bytes) */
+} grade_capture;
+
 typedef struct {
     double wall_seconds;       /* kill the whole process group after this */
     const char *cwd;           /* run in this folder */
@@ -121,27 +148,38 @@ typedef struct {
                                   the child cannot write), cut at log_max bytes; NULL: discarded */
     long log_max;
     char *const *env;          /* extra "NAME=value" entries, NULL-terminated, or NULL */
-    bool untrusted;            /* runs student code: limits, no network, an unprivileged user */
+    bool untrusted;            /* runs student code: the sandbox's user, limits, namespaces, and the
+                                  seccomp filter from its first instruction (grader/sandbox.h) */
+    bool compiler;             /* with untrusted: the compiler or a tool reading student files, running
+                                  none of them: user, limits and namespaces, no filter (make forks) */
+    bool writes_files;         /* with untrusted: the filter lets it create files (the XML suite) */
+    grade_capture *capture;    /* a second channel to the grader, or NULL */
 } grade_run_opts;
 
 /* What grade_run can do to contain untrusted code on this machine: limits always; a network
- * namespace and another user only as root. The report names what was unavailable. */
+ * namespace and another user only as root; the filter where libseccomp and the kernel allow. The
+ * report names what was unavailable, the staff log what was in force. */
 typedef struct {
     bool as_other_user;        /* runs as `nobody` (the grader is root) */
     bool no_network;           /* a new network namespace */
     unsigned uid, gid;         /* nobody's */
     long process_limit;        /* RLIMIT_NPROC for untrusted children (counts the whole user's) */
+    bool filter;               /* the seccomp filter is installed before student code runs */
+    char filter_why[160];      /* why not, when it is not */
 } grade_sandbox;
 
 /* Finds what this machine allows (call once, before any child runs). */
 grade_sandbox grade_sandbox_probe(void);
 /* The protections this machine could not give, in words for the report ("" when none is missing). */
 void grade_sandbox_describe(const grade_sandbox *s, char *out, size_t size);
+/* The protections in force, for the staff log ("user nobody, network namespace, seccomp ..."). */
+void grade_sandbox_in_force(const grade_sandbox *s, char *out, size_t size);
 
 typedef struct {
     bool exited;               /* ended by exit(), not by a signal or the timeout */
     int status;                /* exit status when exited, else the signal */
     bool timed_out;
+    bool output_cut;           /* it printed more than log_max */
     double seconds;
 } grade_run_result;
 
@@ -160,7 +198,8 @@ void grade_run_describe(const grade_run_result *r, char *out, size_t size);
 typedef struct {
     const char *root;          /* the tree holding the other parts (the course's), or the student's tree */
     const char *submission;    /* a folder holding the submission's parts/, or NULL (cumulative) */
-    const char *work;          /* scratch: build trees, renders, logs */
+    const char *work;          /* the grader's scratch, root's alone: the course's build, logs, films */
+    const char *sandbox_dir;   /* the only folder the sandbox's user may reach: the part's tree */
     const char *report;        /* the report folder (images and index.html) */
     bool public_only;
     uint64_t seed;

@@ -190,8 +190,10 @@ void grade_case_command(const grade_case *k, const char *bin, const char *scene,
     int n = 0;
     argv[n++] = (char *)bin;
     for (int f = 0; f < k->num_flags; f++) argv[n++] = k->flags[f];
+    /* No output file: the film goes to the grader's pipe (GRADE_FILM_FD), never through a file. */
     char *fixed[] = {"-r", text->width, text->height, "-s", text->samples, "--seed", text->seed, "-t",
-                     text->threads, "-q", "-f", (char *)out, (char *)scene, NULL};
+                     text->threads, "-q", out ? "-f" : "--film-fd", out ? (char *)out : GRADE_FILM_FD_TEXT,
+                     (char *)scene, NULL};
     for (char **f = fixed; *f; f++) argv[n++] = *f;
     argv[n] = NULL;
 }

@@ -10,6 +10,7 @@
  *   would otherwise be read, as root, and compared with itself. */
 #include "grade_guard.h"
 #include "grade.h"
+#include "grade_tree.h"
 #include <errno.h>
 #include <fcntl.h>
 #include <stdio.h>
@@ -30,8 +31,12 @@ static bool make_private(const char *path, const grade_sandbox *s)
 bool grade_guard_secrets(const char *root, const char *outdir, const grade_sandbox *s, char *why, size_t size)
 {
     if (!s->as_other_user) return true;  /* the child is the grader's own user: nothing a mode can hide */
-    /* parts/: the course's solutions, which a submission could otherwise #include or link to. */
-    static const char *const secrets[] = {"reference_images", "grading/hidden", "parts"};
+    /* parts/: the course's solutions, which a submission could otherwise #include or link to; bin/
+     * and build/: the course's programs and objects (the solution as machine code); course/ and
+     * release/: the instructor's tools, mutants and the bundle's own copy of everything; the course's
+     * prebuilt objects (grade_tree.h). */
+    static const char *const secrets[] = {"reference_images", "grading/hidden", "parts", "bin", "build", "course",
+                                          "release", GRADE_PREBUILD};
     char path[4200];
     for (size_t k = 0; k < sizeof secrets / sizeof secrets[0]; k++) {
         snprintf(path, sizeof path, "%s/%s", root, secrets[k]);
@@ -49,7 +54,7 @@ bool grade_guard_secrets(const char *root, const char *outdir, const grade_sandb
 bool grade_guard_child_dir(const char *path, const grade_sandbox *s, bool contained)
 {
     char *rm[] = {"rm", "-rf", (char *)path, NULL};  /* rm never follows a link it deletes */
-    grade_run_opts o = {60, NULL, NULL, 0, NULL, false};
+    grade_run_opts o = {.wall_seconds = 60};
     grade_run_result r = grade_run(rm, &o);
     if (!r.exited || r.status != 0 || mkdir(path, 0755) != 0) return false;
     return !(contained && s->as_other_user) || chown(path, s->uid, s->gid) == 0;

@@ -6,6 +6,7 @@
 #include "../framework/image.h"
 #include "../framework/exr.h"
 #include "../framework/film.h"
+#include "../framework/output.h"
 #include <jansson.h>
 #include <math.h>
 #include <stdio.h>
@@ -13,30 +14,24 @@
 #include <string.h>
 #include <unistd.h>
 
-#define RENDER_SECONDS 120
-#define LOG_MAX (256 * 1024)
 #define Z_SCALE 5.0f  /* the z-map saturates at |t| = 5 */
-#define RENDER_MAX (256L << 20)    /* a candidate EXR: far above any case's size */
 #define SCENE_MAX (64L << 20)
 
-/* What the grader reads of an EXR the renderer wrote, in this process: the mean image (R, G, B,
- * top row first), optionally each mean's variance (var: same layout; NULL to skip), the mean
- * sample count per pixel, and the pixels with bad samples. The film adds a NaN, infinite or
- * negative sample as black and counts it in `bad`: such a pixel is made NaN here, so the verdict
- * fails the case naming it. */
-static pl_status read_film(const char *path, image *out, image *var, long *bad, double *mean_n, pl_diag *diag)
+/* What the verdict reads of a film: the mean image (R, G, B, top row first), optionally each mean's
+ * variance (var: same layout; NULL to skip), the mean sample count per pixel, and the pixels with
+ * bad samples. The film adds a NaN, infinite or negative sample as black and counts it in `bad`:
+ * such a pixel is made NaN here, so the verdict fails the case naming it. */
+static pl_status film_inputs(const film *f, image *out, image *var, long *bad, double *mean_n, pl_diag *diag)
 {
-    film f = {0};
-    exr_info info;
     *bad = 0;
     *mean_n = 0.0;
-    pl_status st = exr_read(path, &f, &info, diag);
-    if (!st && (image_alloc(out, f.width, f.height) != PL_OK || (var && image_alloc(var, f.width, f.height) != PL_OK)))
-        st = pl_fail(diag, PL_ERR_NOMEM, "%s: out of memory", path);
-    if (!st) st = film_to_image(&f, out, NULL, diag);
-    long pixels = (long)f.width * f.height;
+    pl_status st = PL_OK;
+    if (image_alloc(out, f->width, f->height) != PL_OK || (var && image_alloc(var, f->width, f->height) != PL_OK))
+        st = pl_fail(diag, PL_ERR_NOMEM, "out of memory for a %dx%d image", f->width, f->height);
+    if (!st) st = film_to_image(f, out, NULL, diag);
+    long pixels = (long)f->width * f->height;
     for (long i = 0; !st && i < pixels; i++) {
-        const film_pixel *p = &f.pixels[i];
+        const film_pixel *p = &f->pixels[i];
         *mean_n += (double)p->n / (double)pixels;
         if (var)
             var->pixels[i] = rgb_make((float)film_pixel_variance_of_mean(p, 0), (float)film_pixel_variance_of_mean(p, 1),
@@ -46,24 +41,41 @@ static pl_status read_film(const char *path, image *out, image *var, long *bad, 
             ++*bad;
         }
     }
+    return st;
+}
+
+/* The reference, from the course's EXR. */
+static pl_status read_reference(const char *path, image *out, image *var, long *bad, double *mean_n, pl_diag *diag)
+{
+    film f = {0};
+    exr_info info;
+    pl_status st = exr_read(path, &f, &info, diag);
+    if (!st) st = film_inputs(&f, out, var, bad, mean_n, diag);
     film_free(&f);
     return st;
 }
 
-/* The candidate's work per camera ray (framework-counted node visits plus primitive tests), from
- * the JSON sidecar its render wrote: opened without following a link, read through that descriptor. */
-static double read_candidate_work(const char *exr)
+/* A streamed film's shape, beyond its size (output_film_receive): every pixel took the case's samples
+ * (an adaptive case: 1 to that many), no more bad samples than samples, and sums a real set of
+ * samples could have (sum of squares * n >= sum^2, per channel, up to the rounding of film.h). */
+static bool film_shape_ok(const film *f, const grade_case *k, bool adaptive, char *why, size_t size)
 {
-    char path[4200];
-    snprintf(path, sizeof path, "%.*s.json", (int)strlen(exr) - 4, exr);
-    int fd = grade_guard_open_child_file(path, 1L << 20);
-    if (fd < 0) return -1.0;
-    json_t *j = json_loadfd(fd, JSON_REJECT_DUPLICATES, NULL);  /* a second "node_visits": 0 is refused */
-    close(fd);
-    double rays = json_number_value(json_object_get(j, "rays_traced"));
-    double work = json_number_value(json_object_get(j, "node_visits")) + json_number_value(json_object_get(j, "primitive_tests"));
-    json_decref(j);
-    return rays > 0 ? work / rays : -1.0;
+    long pixels = (long)f->width * f->height;
+    for (long i = 0; i < pixels; i++) {
+        const film_pixel *p = &f->pixels[i];
+        bool count_ok = adaptive ? p->n >= 1 && p->n <= (uint32_t)k->samples : p->n == (uint32_t)k->samples;
+        bool sums_ok = p->bad <= p->n;
+        for (int c = 0; c < 4 && sums_ok; c++) {
+            double s = film_sum_value(p->sum[c]), q = film_sum_value(p->sum_sq[c]);
+            /* Each square was rounded to 2^-32 on its own, so the sum of squares may fall short of the
+             * exact one by up to n * 2^-33. */
+            sums_ok = s >= 0 && (q + p->n * 0x1p-32) * p->n >= s * s * (1.0 - 1e-9);
+        }
+        if (!count_ok || !sums_ok)
+            return snprintf(why, size, "the film's pixel %ld (x=%ld, y=%ld from the top) %s", i, i % f->width,
+                            i / f->width, count_ok ? "holds sums no samples can have" : "has the wrong sample count"), false;
+    }
+    return true;
 }
 
 /* An adaptive case: the candidate's flags hold -a. */
@@ -100,8 +112,9 @@ static pl_status write_z_map(const verdict *v, int width, int height, const char
 }
 
 /* A scene under grading/ (a hidden case's) sits in a folder the child may not enter: the render
- * gets a copy of that one file, in the part's folder. Other scenes are read where they are. */
-static bool scene_for_child(const grade_env *env, int part, const grade_case *k, char *path, size_t size,
+ * gets a copy of that one file in its tree, removed when the render ends (drop_scene_copy). Other
+ * scenes are read where they are. */
+static bool scene_for_child(const grade_env *env, const char *tree, const grade_case *k, char *path, size_t size,
                             pl_diag *diag)
 {
     snprintf(path, size, "%s/%s", env->root, k->scene);
@@ -110,10 +123,111 @@ static bool scene_for_child(const grade_env *env, int part, const grade_case *k,
     size_t len = 0;
     const char *base = strrchr(k->scene, '/') + 1;
     pl_status st = file_read_all(path, "scene", SCENE_MAX, &data, &len, diag);
-    snprintf(path, size, "%s/part%d/%s", env->work, part, base);
+    snprintf(path, size, "%s/%s", tree, base);
     if (!st) st = file_write_atomic(path, data, len, diag);
     free(data);
     return st == PL_OK;
+}
+
+/* Removes the copy scene_for_child made (a hidden scene stays in reach only while its render runs). */
+static void drop_scene_copy(const grade_case *k, const char *scene)
+{
+    if (!strncmp(k->scene, "grading/", 8)) remove(scene);
+}
+
+/* The candidate's render, in a child: the student's code never runs in the grader's process, and
+ * its film comes back through a pipe, checked for shape, into out (counts: the framework's counters
+ * as the render's process reported them). False with c->reason. */
+static bool render_candidate(const grade_env *env, const char *tree, int part, grade_case_result *c, film *out,
+                             output_film_counts *counts)
+{
+    const grade_case *k = c->spec;
+    char log[4096], bin[4096], scene[4096];
+    pl_diag diag = pl_diag_default();
+    snprintf(log, sizeof log, "%s/part%d/%s.log", env->work, part, k->name);
+    snprintf(bin, sizeof bin, "%s/bin/pathtracer", tree);
+    if (!scene_for_child(env, tree, k, scene, sizeof scene, &diag)) {
+        snprintf(c->reason, sizeof c->reason, "the course's scene: %s", diag.error);
+        return false;
+    }
+    char *argv[GRADE_MAX_FLAGS + 16];
+    grade_case_text text;
+    grade_case_command(k, bin, scene, NULL, env->seed, env->threads, &text, argv);
+    grade_capture film_pipe = {.child_fd = GRADE_FILM_FD, .max = GRADE_FILM_MAX};
+    grade_run_opts o = {.wall_seconds = GRADE_RENDER_SECONDS, .cwd = tree, .log_path = log, .log_max = GRADE_LOG_MAX,
+                        .untrusted = env->submission != NULL, .capture = &film_pipe};
+    grade_run_result rr = grade_run(argv, &o);
+    drop_scene_copy(k, scene);
+    bool ok = rr.exited && rr.status == 0;
+    if (!ok) {
+        char why[128];
+        grade_run_describe(&rr, why, sizeof why);
+        snprintf(c->reason, sizeof c->reason, "the render %s", why);
+    }
+    else if (film_pipe.overflow || output_film_receive(film_pipe.data, (size_t)film_pipe.len, k->width, k->height, out,
+                                                       counts, &diag) != PL_OK) {
+        snprintf(c->reason, sizeof c->reason, "the render sent no usable film: %s",
+                 film_pipe.overflow ? "it sent more than any film of the case takes" : diag.error);
+        ok = false;
+    }
+    else if (!(ok = film_shape_ok(out, k, adaptive_case(k), c->reason, sizeof c->reason)))
+        film_free(out);
+    free(film_pipe.data);
+    return ok;
+}
+
+/* The reference, checked before the render: a broken one is the course's fault, never the student's. */
+static bool load_reference(const char *ref, image *img, image *var, grade_case_result *c)
+{
+    long bad = 0;
+    double n;
+    pl_diag diag = pl_diag_default();
+    if (read_reference(ref, img, var, &bad, &n, &diag) == PL_OK && !bad) return true;
+    if (bad) snprintf(c->reason, sizeof c->reason, "the reference %s has %ld bad pixels (run make references)", ref, bad);
+    else snprintf(c->reason, sizeof c->reason, "the course's reference: %s (run make references FORCE=1 CASES=%s)",
+                  diag.error, c->spec->name);
+    image_free(img);
+    image_free(var);
+    return false;
+}
+
+/* The candidate's EXR, written by the grader from the film it received, for course staff (work/). */
+static void write_candidate_exr(const grade_env *env, int part, const grade_case *k, const film *f)
+{
+    char path[4096];
+    snprintf(path, sizeof path, "%s/part%d/%s.exr", env->work, part, k->name);
+    exr_info info = {.seed = env->seed, .sample_end = k->samples, .sample_total = k->samples};
+    snprintf(info.command, sizeof info.command, "bin/grade: part %d, case %s (streamed film)", part, k->name);
+    snprintf(info.version, sizeof info.version, "candidate");
+    exr_image img = {f, &info};
+    pl_diag diag = pl_diag_default();
+    FILE *out = fopen(path, "wb");
+    if (!out || exr_encode(out, &img, &diag) != PL_OK) fprintf(stderr, "grade: %s: %s\n", path, diag.error);
+    if (out) fclose(out);
+}
+
+/* The course's figures: an adaptive part 5 must spend about the samples the course's does (one
+ * that never stops renders the reference's image at full cost), and a part 2 BVH may do at most
+ * GRADE_WORK_FACTOR times the course's work per ray (a degenerate tree, or none, loses its speed
+ * points). Both figures are the candidate process's word (its film's counts, its counters). */
+static bool figures_ok(const char *ref, const grade_case *k, double cand_n, const output_film_counts *counts,
+                       grade_case_result *c)
+{
+    double course_spp = 0, course_work = 0;
+    pl_diag diag = pl_diag_default();
+    bool ok = grade_refs_figures(ref, k, &course_spp, &course_work, &diag) == PL_OK;  /* checked before grading */
+    if (!ok) snprintf(c->reason, sizeof c->reason, "the course's reference: %s", diag.error);
+    if (adaptive_case(k) && course_spp > 0) {
+        c->spp = cand_n;
+        c->course_spp = course_spp;
+        ok = fabs(cand_n / course_spp - 1.0) <= GRADE_SPP_TOLERANCE;
+    }
+    if (k->work_per_ray && course_work > 0) {
+        c->work = counts->rays > 0 ? (double)(counts->node_visits + counts->prim_tests) / (double)counts->rays : -1.0;
+        c->course_work = course_work;
+        ok = ok && c->work >= 0 && c->work <= GRADE_WORK_FACTOR * course_work;
+    }
+    return ok;
 }
 
 /* The GRADE_TRACE_PIXELS pixels whose luminance differs most from the reference's, as lines
@@ -151,68 +265,37 @@ static void point_at_pixels(const grade_env *env, const grade_case *k, const ima
     }
 }
 
-void grade_image_case(const grade_env *env, const grade_spec *spec, const char *tree, int part, grade_case_result *c)
+/* Pictures for the report: candidate, reference, z-map. */
+static void write_pictures(const grade_env *env, int part, grade_case_result *c, const image *cand, const image *ref)
+{
+    static const char *const kinds[3] = {"candidate", "reference", "z"};
+    pl_diag diag = pl_diag_default();
+    for (int i = 0; i < 3; i++) {
+        char path[4096];
+        snprintf(c->images[i], sizeof c->images[i], "part%d_%s_%s.png", part, c->spec->name, kinds[i]);
+        snprintf(path, sizeof path, "%s/%s", env->report, c->images[i]);
+        pl_status st = i == 0 ? image_write_png(cand, path, &diag)
+                     : i == 1 ? image_write_png(ref, path, &diag)
+                              : write_z_map(&c->v, cand->width, cand->height, path, &diag);
+        if (st != PL_OK) c->images[i][0] = '\0';
+    }
+}
+
+/* The verdict, in this process, from the film the grader received and the course's reference. */
+static void judge(const grade_env *env, const grade_spec *spec, int part, const char *ref, const image *refimg,
+                  const image *refvar, const film *f, const output_film_counts *counts, grade_case_result *c)
 {
     const grade_case *k = c->spec;
-    char out[4096], log[4096], bin[4096], scene[4096], ref[4096];
-    pl_diag diag = pl_diag_default();
-    snprintf(out, sizeof out, "%s/part%d/renders/%s.exr", env->work, part, k->name);
-    snprintf(log, sizeof log, "%s/part%d/%s.log", env->work, part, k->name);
-    snprintf(bin, sizeof bin, "%s/bin/pathtracer", tree);
-    if (!scene_for_child(env, part, k, scene, sizeof scene, &diag)) {
-        snprintf(c->reason, sizeof c->reason, "the course's scene: %s", diag.error);
-        return;
-    }
-    grade_refs_path(env->root, k, part, ref, sizeof ref);
-
-    /* The render, in a child: the student's code never runs in the grader's process. */
-    char *argv[GRADE_MAX_FLAGS + 16];
-    grade_case_text text;
-    grade_case_command(k, bin, scene, out, env->seed, env->threads, &text, argv);
-    remove(out);
-    grade_run_opts o = {RENDER_SECONDS, tree, log, LOG_MAX, NULL, env->submission != NULL};
-    grade_run_result rr = grade_run(argv, &o);
-    if (!rr.exited || rr.status != 0) {
-        char why[128];
-        grade_run_describe(&rr, why, sizeof why);
-        snprintf(c->reason, sizeof c->reason, "the render %s (its output: %s)", why, log);
-        return;
-    }
-
-    /* The verdict, from the two files, in this process. */
-    image cand = {0}, refimg = {0}, refvar = {0};
+    image cand = {0};
     long bad;
-    double cand_n, ref_n;
-    if (read_film(ref, &refimg, &refvar, &bad, &ref_n, &diag) != PL_OK || bad) {
-        /* A broken reference is the course's fault, never the student's: say so, not "differs". */
-        if (bad) snprintf(c->reason, sizeof c->reason, "the reference %s has %ld bad pixels (run make references)", ref, bad);
-        else snprintf(c->reason, sizeof c->reason, "the course's reference: %s (run make references FORCE=1 CASES=%s)",
-                      diag.error, k->name);
-        image_free(&refimg);
-        image_free(&refvar);
-        return;
-    }
-    /* The render's file, opened once without following a link (it could name a reference) and read
-     * through that descriptor. */
-    int fd = grade_guard_open_child_file(out, RENDER_MAX);
-    char by_fd[64];
-#ifdef __linux__
-    snprintf(by_fd, sizeof by_fd, "/proc/self/fd/%d", fd);
-#else
-    snprintf(by_fd, sizeof by_fd, "/dev/fd/%d", fd);  /* macOS: the same descriptor, offset 0 */
-#endif
-    pl_status st = fd < 0 ? pl_fail(&diag, PL_ERR_IO, "%s: missing, a link, not a regular file, or over %ld MiB",
-                                    out, RENDER_MAX >> 20)
-                          : read_film(by_fd, &cand, NULL, &bad, &cand_n, &diag);
-    if (fd >= 0) close(fd);
-    if (st != PL_OK) {
-        snprintf(c->reason, sizeof c->reason, "the render wrote no readable image: %s", diag.error);
-        image_free(&refimg);
-        image_free(&refvar);
+    double cand_n;
+    pl_diag diag = pl_diag_default();
+    if (film_inputs(f, &cand, NULL, &bad, &cand_n, &diag) != PL_OK) {
+        snprintf(c->reason, sizeof c->reason, "%s", diag.error);
         return;
     }
     verdict_image vc = {cand.width, cand.height, (const float *)cand.pixels, NULL};
-    verdict_image vr = {refimg.width, refimg.height, (const float *)refimg.pixels, (const float *)refvar.pixels};
+    verdict_image vr = {refimg->width, refimg->height, (const float *)refimg->pixels, (const float *)refvar->pixels};
     verdict_params vp = verdict_params_default(k->samples);
     vp.known_variance = k->known_variance;
     vp.grazing = k->grazing;
@@ -222,44 +305,31 @@ void grade_image_case(const grade_env *env, const grade_spec *spec, const char *
         vp.min_block_samples = 0;
     }
     vp.family_alpha = spec->family_alpha;
-    if (verdict_compute(&vc, &vr, &vp, &c->v, &diag) != PL_OK) {
-        snprintf(c->reason, sizeof c->reason, "%s", diag.error);
-    }
+    if (verdict_compute(&vc, &vr, &vp, &c->v, &diag) != PL_OK) snprintf(c->reason, sizeof c->reason, "%s", diag.error);
     else {
         c->ran = true;
-        /* The course's figures: an adaptive part 5 must spend about the samples the course's does
-         * (one that never stops renders the reference's image at full cost), and a part 2 BVH may
-         * do at most GRADE_WORK_FACTOR times the course's work per ray (a correct but degenerate
-         * tree, or none, loses its speed points). Both come from files, never from what code printed. */
-        double course_spp = 0, course_work = 0;
-        bool figures_ok = grade_refs_figures(ref, k, &course_spp, &course_work, &diag) == PL_OK;  /* checked before */
-        if (!figures_ok) snprintf(c->reason, sizeof c->reason, "the course's reference: %s", diag.error);
-        if (adaptive_case(k) && course_spp > 0) {
-            c->spp = cand_n;
-            c->course_spp = course_spp;
-            figures_ok = fabs(cand_n / course_spp - 1.0) <= GRADE_SPP_TOLERANCE;
-        }
-        if (k->work_per_ray && course_work > 0) {
-            c->work = read_candidate_work(out);
-            c->course_work = course_work;
-            figures_ok = figures_ok && c->work >= 0 && c->work <= GRADE_WORK_FACTOR * course_work;
-        }
-        c->pass = c->v.pass && figures_ok;
+        c->pass = figures_ok(ref, k, cand_n, counts, c) && c->v.pass;
         c->score = c->pass ? k->points : 0.0;
-        if (!c->pass) point_at_pixels(env, k, &cand, &refimg, c);
-        /* Pictures for the report: candidate, reference, z-map. */
-        static const char *const kinds[3] = {"candidate", "reference", "z"};
-        for (int i = 0; i < 3; i++) {
-            char path[4096];
-            snprintf(c->images[i], sizeof c->images[i], "part%d_%s_%s.png", part, k->name, kinds[i]);
-            snprintf(path, sizeof path, "%s/%s", env->report, c->images[i]);
-            st = i == 0 ? image_write_png(&cand, path, &diag)
-               : i == 1 ? image_write_png(&refimg, path, &diag)
-                        : write_z_map(&c->v, cand.width, cand.height, path, &diag);
-            if (st != PL_OK) c->images[i][0] = '\0';
-        }
+        if (!c->pass) point_at_pixels(env, k, &cand, refimg, c);
+        write_pictures(env, part, c, &cand, refimg);
     }
     image_free(&cand);
+}
+
+void grade_image_case(const grade_env *env, const grade_spec *spec, const char *tree, int part, grade_case_result *c)
+{
+    const grade_case *k = c->spec;
+    char ref[4096];
+    grade_refs_path(env->root, k, part, ref, sizeof ref);
+    image refimg = {0}, refvar = {0};
+    film f = {0};
+    output_film_counts counts;
+    if (!load_reference(ref, &refimg, &refvar, c)) return;
+    if (render_candidate(env, tree, part, c, &f, &counts)) {
+        write_candidate_exr(env, part, k, &f);
+        judge(env, spec, part, ref, &refimg, &refvar, &f, &counts, c);
+    }
+    film_free(&f);
     image_free(&refimg);
     image_free(&refvar);
 }

@@ -28,7 +28,8 @@
 
 static bool run_to(char *const argv[], const char *cwd, const char *log, bool untrusted)
 {
-    grade_run_opts o = {INSPECT_SECONDS, cwd, log, LOG_MAX, NULL, untrusted};
+    grade_run_opts o = {.wall_seconds = INSPECT_SECONDS, .cwd = cwd, .log_path = log, .log_max = LOG_MAX, .untrusted = untrusted,
+                        .compiler = true};
     grade_run_result r = grade_run(argv, &o);
     return r.exited && r.status == 0;
 }

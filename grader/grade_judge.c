@@ -41,7 +41,7 @@ static bool build_judge(const grade_env *env, int n, const char *dir, char *judg
     snprintf(judge, size, "%s/%s", env->root, target);
     snprintf(log, sizeof log, "%s/judge-build.log", dir);
     char *argv[] = {"make", "-C", (char *)env->root, "-j2", "--no-print-directory", "LTO=0", "WERROR=0", "SAN=0", target, NULL};
-    grade_run_opts o = {BUILD_SECONDS, NULL, log, LOG_MAX, NULL, false};
+    grade_run_opts o = {.wall_seconds = BUILD_SECONDS, .log_path = log, .log_max = LOG_MAX};
     grade_run_result rr = grade_run(argv, &o);
     return rr.exited && rr.status == 0;
 }
@@ -52,7 +52,7 @@ static bool list_tests(const char *judge, const char *root, const char *dir, tes
     char log[4200];
     snprintf(log, sizeof log, "%s/tests.list", dir);
     char *envv[] = {"PL_TEST_LIST=1", NULL}, *argv[] = {(char *)judge, NULL};
-    grade_run_opts o = {JUDGE_SECONDS, root, log, LOG_MAX, envv, false};
+    grade_run_opts o = {.wall_seconds = JUDGE_SECONDS, .cwd = root, .log_path = log, .log_max = LOG_MAX, .env = envv};
     grade_run_result rr = grade_run(argv, &o);
     FILE *f = rr.exited && rr.status == 0 ? fopen(log, "r") : NULL;
     list->count = 0;
@@ -90,7 +90,8 @@ static pid_t start_subject(const char *tree, int n, const char *name, const char
     snprintf(log, sizeof log, "%s/subject-%d.log", dir, k);
     snprintf(filter, sizeof filter, "PL_TEST_FILTER=%s", name);
     char *envv[] = {filter, "PL_SEAM_FD=3", NULL}, *argv[] = {bin, NULL};
-    grade_run_opts o = {TEST_SECONDS, tree, log, LOG_MAX, envv, true};
+    grade_run_opts o = {.wall_seconds = TEST_SECONDS, .cwd = tree, .log_path = log, .log_max = LOG_MAX, .env = envv,
+                        .untrusted = true};
     grade_run_piped(argv, &o, 0, record_fd);
     _exit(0);
 }
@@ -106,12 +107,13 @@ static void run_test(const grade_env *env, const char *tree, const char *judge, 
     snprintf(filter, sizeof filter, "PL_TEST_FILTER=%s", name);
     unlink(xml);  /* cmocka does not overwrite a results file */
     int fds[2];
-    grade_run_result rr = {false, -1, false, 0.0};
+    grade_run_result rr = {.status = -1};
     if (grade_pipe(fds)) {
         pid_t helper = start_subject(tree, n, name, dir, k, fds[1]);
         close(fds[1]);
         char *envv[] = {filter, "PL_SEAM_FD=0", "CMOCKA_MESSAGE_OUTPUT=xml", xml_env, NULL}, *argv[] = {(char *)judge, NULL};
-        grade_run_opts o = {JUDGE_SECONDS, env->root, log, LOG_MAX, envv, false};
+        grade_run_opts o = {.wall_seconds = JUDGE_SECONDS, .cwd = env->root, .log_path = log, .log_max = LOG_MAX,
+                            .env = envv};
         if (helper > 0) rr = grade_run_piped(argv, &o, fds[0], 0);
         close(fds[0]);
         if (helper > 0) waitpid(helper, NULL, 0);

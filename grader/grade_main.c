@@ -1,29 +1,33 @@
 /* Grader machinery: not part of any assignment.
  * bin/grade [--submission DIR] [--public] [--out DIR] [--seed N] [--threads N] [--parts 1,3]
  * bin/grade --calibrate N [--parts ...]
+ * bin/grade --prebuild   build the course's objects ahead of time (setup.sh), for every grading to reuse
  *   --submission DIR  grade DIR/parts/ part by part, each among the solution's other parts (autograder);
  *                     without it, grade this tree as it is, public cases only (a student's make grade)
  *   --out DIR         where results.json, the report (DIR/report/index.html) and scratch go (out/grade)
  *   --calibrate N     render every case of this tree N times with fresh seeds and print, per case, how
  *                     often it failed beside the alpha it claims, and the deciles of its p-values
  * Exit status: 0 when every graded part got full marks, 1 otherwise, 2 for bad arguments or a course's
- * file that is not usable (grading/cases.json, a reference: grade_refs.h), before anyone is graded. */
+ * file that is not usable (grading/cases.json, a reference: grade_refs.h), before anyone is graded, 3
+ * when the grader's own set-up on this machine is wrong (the course's problem: no part was graded). */
 #include "grade.h"
 #include "../framework/clock.h"
 #include "grade_guard.h"
 #include "grade_image.h"
 #include "grade_refs.h"
+#include "grade_tree.h"
 #include <errno.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 #include <sys/stat.h>
+#include <sys/wait.h>
 #include <time.h>
 #include <unistd.h>
 
 static int usage(const char *msg)
 {
-    fprintf(stderr, "grade: %s\nusage: grade [--submission DIR] [--public] [--out DIR] [--seed N] [--threads N] "
+    fprintf(stderr, "grade: %s\nusage: grade [--submission DIR] [--public] [--out DIR] [--seed N] [--threads N] [--prebuild] "
                     "[--parts 1,2,...]\n", msg);
     return 2;
 }
@@ -101,29 +105,139 @@ static bool make_dir(const char *path)
     return mkdir(buf, 0755) == 0 || errno == EEXIST;
 }
 
+/* The sandbox's folder: the only one the sandbox's user may enter (0711: it cannot list it either),
+ * made fresh outside --out, so that an --out the sandbox's user cannot reach (a `mktemp -d` folder,
+ * root's home) does not matter. */
+static bool make_sandbox_dir(char *out, size_t size)
+{
+    const char *tmp = getenv("TMPDIR") && getenv("TMPDIR")[0] == '/' ? getenv("TMPDIR") : "/tmp";
+    snprintf(out, size, "%s/pathlab-sandbox.XXXXXX", tmp);
+    return mkdtemp(out) && chmod(out, 0711) == 0;
+}
+
+/* Whether the sandbox's user can enter path (tried as that user, in a throwaway child). */
+static bool reachable_by_sandbox_user(const grade_sandbox *s, const char *path)
+{
+    pid_t pid = fork();
+    if (pid == 0) _exit(setgid(s->gid) == 0 && setuid(s->uid) == 0 && access(path, X_OK) == 0 ? 0 : 1);
+    int status = 1;
+    if (pid > 0) waitpid(pid, &status, 0);
+    return pid > 0 && WIFEXITED(status) && WEXITSTATUS(status) == 0;
+}
+
+/* The grader's own set-up, checked before any part is graded (a submission, as root): the filter,
+ * the sandbox's folder, the secrets out of reach, the course's own build. False with why: the
+ * course's problem, which must never become a student's 0. */
+static bool setup_ok(const grade_env *env, const char *outdir, const char *parts, char *why, size_t size)
+{
+    const grade_sandbox *s = &env->sandbox;
+    if (s->as_other_user && !s->filter)
+        return snprintf(why, size, "student code cannot be confined: %s", s->filter_why), false;
+    if (s->as_other_user && !reachable_by_sandbox_user(s, env->sandbox_dir))
+        return snprintf(why, size, "the sandbox's user cannot reach %s (a parent folder closed to others? set TMPDIR "
+                                   "to a folder it can reach)", env->sandbox_dir), false;
+    if (chmod(env->work, 0700) != 0) return snprintf(why, size, "cannot make %s private", env->work), false;
+    if (!grade_guard_secrets(env->root, outdir, s, why, size)) return false;
+    return grade_tree_course_build(env, parts, why, size);
+}
+
+/* Grades the parts listed in `parts` into result; the staff log gets one line a part. */
+static void grade_parts(const grade_env *env, grade_spec *spec, const char *parts, grade_result *result)
+{
+    double t0 = clock_seconds();
+    for (int k = 0; k < GRADE_NUM_PARTS; k++) {
+        char digit[2] = {(char)('1' + k), 0};
+        if (!strstr(parts, digit)) continue;
+        fprintf(stderr, "grade: part %d ...\n", k + 1);
+        grade_part(env, spec, &spec->parts[k], &result->parts[result->num_parts++]);
+        result->seconds = clock_seconds() - t0;
+    }
+}
+
+/* --prebuild: the course's objects built ahead of time (setup.sh, when the image is made), so that
+ * each grading only copies and links them. */
+static int prebuild_course(const char *root)
+{
+    char work[4200], why[512];
+    snprintf(work, sizeof work, "%s/" GRADE_PREBUILD, root);
+    if (!make_dir(work) || chmod(work, 0700) != 0) return usage("--prebuild: cannot create " GRADE_PREBUILD);
+    grade_env env = {.root = root, .work = work};
+    if (!grade_tree_course_build(&env, "1,2,3,4,5", why, sizeof why)) {
+        fprintf(stderr, "grade: --prebuild: %s\n", why);
+        return 3;
+    }
+    fprintf(stderr, "grade: the course's objects are prebuilt in %s/course/build\n", work);
+    return 0;
+}
+
+/* The table, results.json and the report; as root with a submission, results.json and the report
+ * made root's alone. The exit status: 0 full marks, 1 otherwise or when an output failed. */
+static int write_outputs(const grade_result *result, const char *outdir, const grade_env *env)
+{
+    char json[4200], why[512];
+    pl_diag diag = pl_diag_default();
+    grade_print_table(result, stdout);
+    snprintf(json, sizeof json, "%s/results.json", outdir);
+    int code = 0;
+    if (grade_write_results_json(result, json, &diag) != PL_OK || grade_write_html(result, env->report, &diag) != PL_OK) {
+        fprintf(stderr, "grade: %s\n", diag.error);
+        code = 1;
+    }
+    if (env->submission && !grade_guard_secrets(env->root, outdir, &env->sandbox, why, sizeof why)) {
+        fprintf(stderr, "grade: %s\n", why);  /* the new results.json */
+        code = 1;
+    }
+    printf("results: %s\nreport:  %s/index.html\n", json, env->report);
+    for (int i = 0; i < result->num_parts; i++) code |= result->parts[i].score < result->parts[i].max_score;
+    return code;
+}
+
+/* The verdicts' t maps, once every output is written (a leak test runs bin/grade under SAN=1). */
+static void free_verdicts(grade_result *result)
+{
+    for (int i = 0; i < result->num_parts; i++)
+        for (int k = 0; k < result->parts[i].num_cases; k++) verdict_free(&result->parts[i].cases[k].v);
+}
+
+/* The command line (see the top of this file). */
+typedef struct {
+    const char *submission, *out, *parts;
+    bool public_only, seed_given, prebuild;
+    uint64_t seed;
+    int threads, calibrate_runs;
+} grade_args;
+
+/* Reads argv into a; NULL, or what was wrong. */
+static const char *parse_args(int argc, char **argv, grade_args *a)
+{
+    *a = (grade_args){.out = "out/grade", .parts = "1,2,3,4,5", .threads = 2};
+    for (int i = 1; i < argc; i++) {
+        const char *f = argv[i], *v = i + 1 < argc ? argv[i + 1] : NULL;
+        if (!strcmp(f, "--public")) a->public_only = true;
+        else if (!strcmp(f, "--prebuild")) a->prebuild = true;
+        else if (!v) return "missing value";
+        else if (!strcmp(f, "--submission")) a->submission = argv[++i];
+        else if (!strcmp(f, "--out")) a->out = argv[++i];
+        else if (!strcmp(f, "--parts")) a->parts = argv[++i];
+        else if (!strcmp(f, "--seed")) { a->seed = strtoull(argv[++i], NULL, 10); a->seed_given = true; }
+        else if (!strcmp(f, "--threads")) a->threads = atoi(argv[++i]);
+        else if (!strcmp(f, "--calibrate")) a->calibrate_runs = atoi(argv[++i]);
+        else return "unknown option";
+    }
+    if (a->threads < 1 || a->threads > 64) return "--threads: expected 1..64";
+    if (!a->submission) a->public_only = true;  /* a student's own tree has no hidden cases */
+    return NULL;
+}
+
 int main(int argc, char **argv)
 {
-    const char *submission = NULL, *out = "out/grade", *parts = "1,2,3,4,5";
-    bool public_only = false, seed_given = false;
-    uint64_t seed = 0;
-    int threads = 2, calibrate_runs = 0;
-    for (int i = 1; i < argc; i++) {
-        const char *a = argv[i], *v = i + 1 < argc ? argv[i + 1] : NULL;
-        if (!strcmp(a, "--public")) public_only = true;
-        else if (!v) return usage("missing value");
-        else if (!strcmp(a, "--submission")) submission = argv[++i];
-        else if (!strcmp(a, "--out")) out = argv[++i];
-        else if (!strcmp(a, "--parts")) parts = argv[++i];
-        else if (!strcmp(a, "--seed")) { seed = strtoull(argv[++i], NULL, 10); seed_given = true; }
-        else if (!strcmp(a, "--threads")) threads = atoi(argv[++i]);
-        else if (!strcmp(a, "--calibrate")) calibrate_runs = atoi(argv[++i]);
-        else return usage("unknown option");
-    }
-    if (threads < 1 || threads > 64) return usage("--threads: expected 1..64");
-    if (!submission) public_only = true;  /* a student's own tree has no hidden cases */
-
-    char root[4096], outdir[4096], work[4096], report[4096], json[4200];
+    grade_args a;
+    const char *bad = parse_args(argc, argv, &a);
+    if (bad) return usage(bad);
+    const char *submission = a.submission, *out = a.out, *parts = a.parts;
+    char root[4096], outdir[4096], work[4096], report[4096];
     if (!getcwd(root, sizeof root)) return usage("cannot read the current folder");
+    if (a.prebuild) return prebuild_course(root);
     if (!make_dir(out) || !realpath(out, outdir)) return usage("--out: cannot create the folder");
     snprintf(work, sizeof work, "%s/work", outdir);
     snprintf(report, sizeof report, "%s/report", outdir);
@@ -139,60 +253,47 @@ int main(int argc, char **argv)
     }
     /* The course's references, before anyone is graded: a broken one stops the run as the course's
      * error (exit 2), never a check skipped or a student's 0. */
-    if (grade_refs_check(root, &spec, parts, public_only, &diag) != PL_OK) {
+    if (grade_refs_check(root, &spec, parts, a.public_only, &diag) != PL_OK) {
         fprintf(stderr, "grade: %s\n", diag.error);
         grade_spec_free(&spec);
         return 2;
     }
     grade_result result;
     memset(&result, 0, sizeof result);
-    result.seed = seed_given ? seed : fresh_seed();
-    grade_env env = {root, submission ? subdir : NULL, work, report, public_only, result.seed, threads,
-                     grade_sandbox_probe()};
-    /* Before any child runs: the answers out of its reach, and the report says what could not be. */
-    char why[512];
-    if (submission && !grade_guard_secrets(root, outdir, &env.sandbox, why, sizeof why)) {
-        fprintf(stderr, "grade: %s\n", why);
+    result.seed = a.seed_given ? a.seed : fresh_seed();
+    char sandbox_dir[4096];
+    if (!make_sandbox_dir(sandbox_dir, sizeof sandbox_dir)) return usage("cannot create the sandbox's folder under $TMPDIR or /tmp");
+    grade_env env = {.root = root, .submission = submission ? subdir : NULL, .work = work, .sandbox_dir = sandbox_dir,
+                     .report = report, .public_only = a.public_only, .seed = result.seed, .threads = a.threads,
+                     .sandbox = grade_sandbox_probe()};
+    /* Before any child runs: the grader's own set-up, and the answers out of the children's reach. */
+    char why[512] = "", in_force[512];
+    if (submission && !setup_ok(&env, outdir, parts, why, sizeof why)) {
+        fprintf(stderr, "grade: the grader's set-up on this machine is wrong (the course's problem, not the "
+                        "submission's): %s\n", why);
+        grade_tree_remove(sandbox_dir);
         grade_spec_free(&spec);
-        return 2;
+        return 3;
     }
+    grade_sandbox_in_force(&env.sandbox, in_force, sizeof in_force);
+    fprintf(stderr, "grade: protections in force: %s\n", in_force);
     /* A student's own tree is their code on their machine: containment is the autograder's concern. */
     if (submission) grade_sandbox_describe(&env.sandbox, result.unprotected, sizeof result.unprotected);
     else if (!sandbox_confines(&env.sandbox))
         fprintf(stderr, "grade: no sandbox on this machine: your own code runs unconfined; "
                         "your official grade comes from the autograder\n");
     if (result.unprotected[0]) fprintf(stderr, "grade: unavailable protections: %s\n", result.unprotected);
-    if (calibrate_runs > 0) {
-        int code = calibrate(&env, &spec, parts, calibrate_runs);
+    if (a.calibrate_runs > 0) {
+        int code = calibrate(&env, &spec, parts, a.calibrate_runs);
+        grade_tree_remove(sandbox_dir);
         grade_spec_free(&spec);
         return code;
     }
-    double t0 = clock_seconds();
-    for (int k = 0; k < GRADE_NUM_PARTS; k++) {
-        char digit[2] = {(char)('1' + k), 0};
-        if (!strstr(parts, digit)) continue;
-        fprintf(stderr, "grade: part %d ...\n", k + 1);
-        grade_part(&env, &spec, &spec.parts[k], &result.parts[result.num_parts++]);
-        result.seconds = clock_seconds() - t0;
-    }
-    result.seconds = clock_seconds() - t0;
+    grade_parts(&env, &spec, parts, &result);
+    grade_tree_remove(sandbox_dir);
 
-    grade_print_table(&result, stdout);
-    snprintf(json, sizeof json, "%s/results.json", outdir);
-    int code = 0;
-    if (grade_write_results_json(&result, json, &diag) != PL_OK || grade_write_html(&result, report, &diag) != PL_OK) {
-        fprintf(stderr, "grade: %s\n", diag.error);
-        code = 1;
-    }
-    if (submission && !grade_guard_secrets(root, outdir, &env.sandbox, why, sizeof why)) {  /* the new results.json */
-        fprintf(stderr, "grade: %s\n", why);
-        code = 1;
-    }
-    printf("results: %s\nreport:  %s/index.html\n", json, report);
-    for (int i = 0; i < result.num_parts; i++) {
-        code |= result.parts[i].score < result.parts[i].max_score;
-        for (int k = 0; k < result.parts[i].num_cases; k++) verdict_free(&result.parts[i].cases[k].v);  /* its t map */
-    }
+    int code = write_outputs(&result, outdir, &env);
+    free_verdicts(&result);
     grade_spec_free(&spec);
     return code;
 }

@@ -4,6 +4,8 @@
 #include "grade_guard.h"
 #include "grade_inspect.h"
 #include "grade_suite.h"
+#include "grade_tree.h"
+#include "grade_diag.h"
 #include "../framework/file.h"
 #include <dirent.h>
 #include <fcntl.h>
@@ -16,158 +18,52 @@
 #include <string.h>
 #include <sys/stat.h>
 
-#define BUILD_SECONDS 300
-#define SUITE_SECONDS 300
-#define RENDER_SECONDS 120
-#define LOG_MAX (256 * 1024)
+#define SUITE_SECONDS GRADE_SUITE_SECONDS
+#define LOG_MAX GRADE_LOG_MAX
 #define XML_MAX (4L << 20)        /* a suite's results file: far more than 100 tests need */
 #define BUILD_TAIL_LINES 40       /* of a failed build's output, shown in the report */
 
-/* ---- the tree: the submission's part N among the solution's other parts ----------------------- */
-
-/* The folder name of part n in root, e.g. "part2_bvh". */
-static bool part_folder(const char *root, int n, char *out, size_t size)
+/* The build's verdict when it failed, in the grader's words: what limit it ran past, or that it
+ * does not compile (the compiler's own lines for the part's files are shown beside it). */
+static void build_verdict(const grade_run_result *rr, int n, const char *raw, grade_part_result *r)
 {
-    char parts[4096], prefix[16];
-    snprintf(parts, sizeof parts, "%s/parts", root);
-    snprintf(prefix, sizeof prefix, "part%d_", n);
-    DIR *d = opendir(parts);
-    if (!d) return false;
-    bool found = false;
-    for (struct dirent *e; !found && (e = readdir(d));)
-        if (!strncmp(e->d_name, prefix, strlen(prefix))) found = snprintf(out, size, "%s", e->d_name) < (int)size;
-    closedir(d);
-    return found;
-}
-
-static bool run_quiet(char *const argv[], const char *log)
-{
-    grade_run_opts o = {BUILD_SECONDS, NULL, log, LOG_MAX, NULL, false};
-    grade_run_result r = grade_run(argv, &o);
-    return r.exited && r.status == 0;
-}
-
-/* The submission's part folder into `to`: its regular files only, each read through the framework's
- * file reader (regular files, a size cap) and written by this process. A symbolic link is refused,
- * never copied: `direct.c -> /autograder/source/parts/part3_direct/direct.c` would otherwise build
- * the course's solution as the student's. Subfolders are left out (the build reads none). */
-#define SUBMITTED_FILE_MAX (4L << 20)
-
-static bool copy_submitted_part(const char *from, const char *to, const char *folder, grade_part_result *r)
-{
-    DIR *d = opendir(from);
-    if (!d) {
-        snprintf(r->suite_reason, sizeof r->suite_reason, "cannot read the submission's parts/%s", folder);
-        return false;
-    }
-    bool ok = mkdir(to, 0755) == 0;
-    if (!ok) snprintf(r->suite_reason, sizeof r->suite_reason, "cannot create %s", to);
-    for (struct dirent *e; ok && (e = readdir(d));) {
-        if (e->d_name[0] == '.' && (!e->d_name[1] || (e->d_name[1] == '.' && !e->d_name[2]))) continue;
-        char src[4400], dst[4400];
-        struct stat st;
-        snprintf(src, sizeof src, "%s/%s", from, e->d_name);
-        snprintf(dst, sizeof dst, "%s/%s", to, e->d_name);
-        if (lstat(src, &st) != 0 || S_ISDIR(st.st_mode)) continue;
-        if (!S_ISREG(st.st_mode)) {
-            snprintf(r->suite_reason, sizeof r->suite_reason,
-                     "parts/%s/%.100s is %s, not a file: submit the file itself", folder, e->d_name,
-                     S_ISLNK(st.st_mode) ? "a symbolic link" : "a special file");
-            ok = false;
-            break;
-        }
-        char *data = NULL;
-        size_t len = 0;
-        pl_diag diag = pl_diag_default();
-        ok = file_read_all(src, "submitted file", SUBMITTED_FILE_MAX, &data, &len, &diag) == PL_OK &&
-             file_write_atomic(dst, data, len, &diag) == PL_OK;
-        if (!ok) snprintf(r->suite_reason, sizeof r->suite_reason, "%.250s", diag.error);
-        free(data);
-    }
-    closedir(d);
-    return ok;
-}
-
-/* With a submission: a fresh copy of the solution's tree with parts/<folder> taken from the
- * submission. Without: the tree itself (the student's own, graded cumulatively). The copy holds
- * what a build and its tests need, never grading/ or reference_images/; and the part's headers stay
- * the course's, since framework files include them (a header could otherwise put code into a
- * framework object, which the allow-list does not inspect). */
-static bool make_tree(const grade_env *env, int n, char *tree, size_t size, grade_part_result *r)
-{
-    if (!env->submission) {
-        snprintf(tree, size, "%s", env->root);
-        return true;
-    }
-    char folder[256], from[4096], to[4096], log[4096];
-    snprintf(tree, size, "%s/part%d/tree", env->work, n);
-    snprintf(log, sizeof log, "%s/part%d/copy.log", env->work, n);
-    if (!part_folder(env->root, n, folder, sizeof folder)) {
-        snprintf(r->suite_reason, sizeof r->suite_reason, "no folder for part %d under parts/", n);
-        return false;
-    }
-    char *rm[] = {"rm", "-rf", tree, NULL}, *mk[] = {"mkdir", "-p", tree, NULL};
-    run_quiet(rm, NULL);
-    if (!run_quiet(mk, NULL)) return false;
-    static const char *const copied[] = {"Makefile", "framework", "parts", "tests", "tools", "third_party", "scenes",
-                                         "VERSION"};
-    for (size_t k = 0; k < sizeof copied / sizeof copied[0]; k++) {
-        struct stat st;
-        snprintf(from, sizeof from, "%s/%s", env->root, copied[k]);
-        if (stat(from, &st) != 0) continue;
-        char *cp[] = {"cp", "-a", from, tree, NULL};
-        if (!run_quiet(cp, log)) return false;
-    }
-    snprintf(to, sizeof to, "%s/parts/%s", tree, folder);
-    snprintf(from, sizeof from, "%s/parts/%s", env->submission, folder);
-    struct stat st;
-    if (stat(from, &st) != 0 || !S_ISDIR(st.st_mode)) {
-        snprintf(r->suite_reason, sizeof r->suite_reason, "the submission has no parts/%s folder", folder);
-        return false;
-    }
-    char course_folder[4200];
-    snprintf(course_folder, sizeof course_folder, "%s/parts/%s", env->root, folder);
-    char *rm_part[] = {"rm", "-rf", to, NULL};
-    if (!run_quiet(rm_part, NULL) || !copy_submitted_part(from, to, folder, r)) return false;
-    char cmd[12800];
-    snprintf(cmd, sizeof cmd, "for h in '%s'/*.h; do [ ! -e \"$h\" ] || cp -f \"$h\" '%s'/; done", course_folder, to);
-    char *keep_headers[] = {"sh", "-c", cmd, NULL};
-    if (!run_quiet(keep_headers, log)) return false;
-    /* Student code runs as `nobody` when the grader is root: give it the tree, only. */
-    if (env->sandbox.as_other_user) {
-        char owner[64];
-        snprintf(owner, sizeof owner, "%u:%u", env->sandbox.uid, env->sandbox.gid);
-        char *chown[] = {"chown", "-R", owner, tree, NULL};
-        if (!run_quiet(chown, log)) return false;
-    }
-    return true;
+    if (rr->timed_out) snprintf(r->suite_reason, sizeof r->suite_reason, "part %d's build ran past %d s", n, GRADE_BUILD_SECONDS);
+    else if (rr->output_cut)
+        snprintf(r->suite_reason, sizeof r->suite_reason, "part %d's build printed more than %d KiB", n, GRADE_LOG_MAX / 1024);
+    else if (strstr(raw, "out of memory") || strstr(raw, "memory exhausted") || strstr(raw, "Killed signal"))
+        snprintf(r->suite_reason, sizeof r->suite_reason, "part %d's build ran past its memory limit (%ld MiB)", n,
+                 GRADE_COMPILER_MEMORY >> 20);
+    else if (!rr->exited)
+        snprintf(r->suite_reason, sizeof r->suite_reason, "part %d's build was stopped: it ran past its CPU time or "
+                 "another limit", n);
 }
 
 static bool build(const grade_env *env, const char *tree, int n, grade_part_result *r)
 {
-    char target[32], subject[32];
+    char target[32], subject[32], sources[8192] = "PARTS_SRC=";
     snprintf(target, sizeof target, "bin/test-part%d", n);
     snprintf(subject, sizeof subject, "bin/subject-part%d", n);  /* the split suite's half (grade_judge.c) */
     snprintf(r->build_log, sizeof r->build_log, "%s/part%d/build.log", env->work, n);
-    /* LTO=0: the objects then hold machine code, and the allow-list reads the very files linked.
-     * WERROR=0 SAN=0: the course's build whatever the grader's caller exported (CI exports
-     * WERROR=1, which made a student's unused variable a part that does not build). */
-    char *argv[] = {"make", "-C", (char *)tree, "-j2", "--no-print-directory", "LTO=0", "WERROR=0", "SAN=0",
-                    "bin/pathtracer", target, env->submission ? subject : NULL, NULL};
-    /* The compiler reads student code too (#include, .incbin): it runs contained like the code. */
-    grade_run_opts o = {BUILD_SECONDS, NULL, r->build_log, LOG_MAX, NULL, env->submission != NULL};
+    if (env->submission && !grade_tree_sources(env, tree, n, sources, sizeof sources)) return false;
+    /* GRADE_MAKE_ARGS: LTO=0 (the objects hold machine code, and the allow-list reads the very files
+     * linked; ld --wrap sees every call), WERROR=0 SAN=0 whatever the grader's caller exported. */
+    char *argv[] = {"make", "-C", (char *)tree, GRADE_MAKE_ARGS, "bin/pathtracer", target,
+                    env->submission ? sources : NULL, subject, NULL};
+    /* The compiler reads student files (#include, .incbin): it runs as the sandbox's user, with limits. */
+    grade_run_opts o = {.wall_seconds = GRADE_BUILD_SECONDS, .log_path = r->build_log, .log_max = GRADE_LOG_MAX,
+                        .untrusted = env->submission != NULL, .compiler = true};
     grade_run_result rr = grade_run(argv, &o);
     bool ok = rr.exited && rr.status == 0;
-    if (!ok) grade_log_tail(r->build_log, BUILD_TAIL_LINES, r->build_output, sizeof r->build_output);
-    /* What was built and inspected is what runs: the child's user may no longer change it. */
-    if (ok && env->submission && env->sandbox.as_other_user) {
-        char bin[4200], objs[4200];
-        snprintf(bin, sizeof bin, "%s/bin", tree);
-        snprintf(objs, sizeof objs, "%s/build", tree);
-        char *chown[] = {"chown", "-R", "0:0", bin, objs, NULL};
-        ok = run_quiet(chown, NULL);
+    if (!ok) {
+        char folder[256] = "";
+        grade_part_folder(env->root, n, folder, sizeof folder);
+        char raw[sizeof r->build_output];  /* the limit's traces, before the filter drops make's lines */
+        grade_log_tail(r->build_log, BUILD_TAIL_LINES, raw, sizeof raw);
+        grade_diagnostics(r->build_log, folder, BUILD_TAIL_LINES, r->build_output, sizeof r->build_output);
+        build_verdict(&rr, n, raw, r);
     }
-    return ok;
+    /* What was built and inspected is what runs: the child's user may no longer change it. */
+    return ok && (!env->submission || grade_tree_seal(env, tree));
 }
 
 /* make's quiet progress lines ("  CC     framework/rng.c"): no help in finding the error. */
@@ -247,7 +143,7 @@ static void run_suite(const grade_env *env, const char *tree, const grade_part_s
 {
     char dir[4096], pattern[4200], xml_env[4300], log[4096], bin[4096];
     bool contained = env->submission != NULL;
-    snprintf(dir, sizeof dir, "%s/part%d/suite", env->work, p->part);
+    snprintf(dir, sizeof dir, "%s/part%d-suite", env->sandbox_dir, p->part);
     /* The suite's own folder: it may write its results there, and nothing else beside them. */
     if (!grade_guard_child_dir(dir, &env->sandbox, contained)) {
         snprintf(r->suite_reason, sizeof r->suite_reason, "cannot create %s", dir);
@@ -259,7 +155,8 @@ static void run_suite(const grade_env *env, const char *tree, const grade_part_s
     snprintf(bin, sizeof bin, "%s/bin/test-part%d", tree, p->part);
     char *envv[] = {"CMOCKA_MESSAGE_OUTPUT=xml", xml_env, NULL};
     char *argv[] = {bin, NULL};
-    grade_run_opts o = {SUITE_SECONDS, tree, log, LOG_MAX, envv, contained};
+    grade_run_opts o = {.wall_seconds = SUITE_SECONDS, .cwd = tree, .log_path = log, .log_max = LOG_MAX, .env = envv,
+                        .untrusted = contained, .writes_files = true};
     grade_run_result rr = grade_run(argv, &o);
 
     /* A suite that crashed or timed out scores zero, whatever files it left. */
@@ -274,23 +171,45 @@ static void run_suite(const grade_env *env, const char *tree, const grade_part_s
 
 bool grade_part_dirs(const grade_env *env, int part)
 {
-    /* The part's folder is the grader's (its logs live there); the children get folders below it. */
-    char dir[4096], renders[4200];
+    /* The part's folder is the grader's alone (its logs and films); the children get the sandbox's. */
+    char dir[4096];
     snprintf(dir, sizeof dir, "%s/part%d", env->work, part);
-    snprintf(renders, sizeof renders, "%s/renders", dir);
-    return grade_guard_child_dir(dir, &env->sandbox, false) &&
-           grade_guard_child_dir(renders, &env->sandbox, env->submission != NULL);
+    return grade_guard_child_dir(dir, &env->sandbox, false) && chmod(dir, 0700) == 0;
 }
 
-void grade_part(const grade_env *env, const grade_spec *spec, const grade_part_spec *p, grade_part_result *r)
+/* Test machinery: PL_GRADE_SWEEP="PROBE ROOT..." runs bin/grade-probe's sweep in the part's tree,
+ * as its code runs, once the part is built (tests/grader/sandbox.sh); the staff log says what it
+ * found. PL_SWEEP_NEEDLES is handed to it, and to nothing else. */
+static void sweep_hook(const grade_env *env, const char *tree, int part)
+{
+    const char *spec = getenv("PL_GRADE_SWEEP"), *needles = getenv("PL_SWEEP_NEEDLES");
+    if (!spec || !needles) return;
+    char copy[4096], log[4200], needle_env[65536], tail[512], *argv[32];
+    int n = 0;
+    snprintf(copy, sizeof copy, "%s", spec);
+    for (char *save = NULL, *t = strtok_r(copy, " ", &save); t && n < 30; t = strtok_r(NULL, " ", &save)) {
+        argv[n++] = t;
+        if (n == 1) argv[n++] = "sweep";
+    }
+    argv[n] = NULL;
+    snprintf(log, sizeof log, "%s/part%d/sweep.log", env->work, part);
+    snprintf(needle_env, sizeof needle_env, "PL_SWEEP_NEEDLES=%s", needles);
+    char *envv[] = {needle_env, NULL};
+    grade_run_opts o = {.wall_seconds = GRADE_SUITE_SECONDS, .cwd = tree, .log_path = log, .log_max = GRADE_LOG_MAX,
+                        .env = envv, .untrusted = env->submission != NULL};
+    grade_run_result rr = grade_run(argv, &o);
+    grade_log_tail(log, 3, tail, sizeof tail);
+    fprintf(stderr, "grade: part %d: sweep as student code: exit %d: %s\n", part, rr.exited ? rr.status : -1, tail);
+}
+
+/* The part's cases, listed in r with their points before anything runs (every case is in the
+ * results whatever happens). */
+static void list_cases(const grade_env *env, const grade_part_spec *p, grade_part_result *r)
 {
     memset(r, 0, sizeof *r);
     r->part = p->part;
     r->unit_max = p->unit_points;
     r->max_score = p->unit_points;
-    char tree[4096], dir[4096];
-    snprintf(dir, sizeof dir, "%s/part%d", env->work, p->part);
-    if (!grade_part_dirs(env, p->part)) snprintf(r->suite_reason, sizeof r->suite_reason, "cannot create %s", dir);
     for (int i = 0; i < p->num_cases; i++) {
         if (env->public_only && p->cases[i].hidden) continue;
         grade_case_result *c = &r->cases[r->num_cases++];
@@ -298,26 +217,43 @@ void grade_part(const grade_env *env, const grade_spec *spec, const grade_part_s
         c->spec = &p->cases[i];
         r->max_score += p->cases[i].points;
     }
-    r->built = !r->suite_reason[0] && make_tree(env, p->part, tree, sizeof tree, r) && build(env, tree, p->part, r);
-    if (!r->built) {
-        if (!r->suite_reason[0]) snprintf(r->suite_reason, sizeof r->suite_reason, "the part does not build");
-        for (int i = 0; i < r->num_cases; i++) snprintf(r->cases[i].reason, sizeof r->cases[i].reason, "%s", r->suite_reason);
-        return;
+}
+
+/* Built, and (a submission's) keeping to the allow-list before any of it runs; else the reason is
+ * in r->suite_reason and every case's. */
+static bool ready(const grade_env *env, char *tree, int part, grade_part_result *r)
+{
+    char dir[4096], folder[256], why[sizeof r->suite_reason];
+    snprintf(dir, sizeof dir, "%s/part%d", env->work, part);
+    if (!grade_part_dirs(env, part)) snprintf(r->suite_reason, sizeof r->suite_reason, "cannot create %s", dir);
+    r->built = !r->suite_reason[0] && (!env->submission || grade_tree_make(env, part, tree, 4096, r)) &&
+               build(env, tree, part, r);
+    if (!r->built && !r->suite_reason[0]) snprintf(r->suite_reason, sizeof r->suite_reason, "the part does not build");
+    if (r->built && env->submission && grade_part_folder(env->root, part, folder, sizeof folder) &&
+        !grade_inspect_part(tree, folder, dir, true, why, sizeof why))
+        snprintf(r->suite_reason, sizeof r->suite_reason, "%s", why);
+    for (int i = 0; r->suite_reason[0] && i < r->num_cases; i++)
+        snprintf(r->cases[i].reason, sizeof r->cases[i].reason, "%s", r->suite_reason);
+    return !r->suite_reason[0];
+}
+
+void grade_part(const grade_env *env, const grade_spec *spec, const grade_part_spec *p, grade_part_result *r)
+{
+    list_cases(env, p, r);
+    char tree[4096], suite[4200];
+    snprintf(tree, sizeof tree, "%s", env->root);  /* a student's own tree; grade_tree_make sets a submission's */
+    if (ready(env, tree, p->part, r)) {
+        sweep_hook(env, tree, p->part);
+        /* A submission's verdicts come from the course's judge (grade_judge.c), never from a process
+         * its code ran in; a student's own tree runs its suite whole, faster and theirs to trust. */
+        if (env->submission) grade_judge_suite(env, tree, p, r);
+        else run_suite(env, tree, p, r);
+        for (int i = 0; i < r->num_cases; i++) grade_image_case(env, spec, tree, p->part, &r->cases[i]);
     }
-    /* A submission's part keeps to the allow-list before any of it runs. */
-    char folder[256], why[sizeof r->suite_reason];
-    if (env->submission && part_folder(env->root, p->part, folder, sizeof folder)) {
-        if (!grade_inspect_part(tree, folder, dir, true, why, sizeof why)) {
-            snprintf(r->suite_reason, sizeof r->suite_reason, "%s", why);
-            for (int i = 0; i < r->num_cases; i++) snprintf(r->cases[i].reason, sizeof r->cases[i].reason, "%s", why);
-            return;
-        }
-    }
-    /* A submission's verdicts come from the course's judge (grade_judge.c), never from a process its
-     * code ran in; a student's own tree runs its suite whole, which is faster and theirs to trust. */
-    if (env->submission) grade_judge_suite(env, tree, p, r);
-    else run_suite(env, tree, p, r);
-    for (int i = 0; i < r->num_cases; i++) grade_image_case(env, spec, tree, p->part, &r->cases[i]);
+    /* Nothing of this part stays in reach of the next: its tree and its suite's folder go. */
+    snprintf(suite, sizeof suite, "%s/part%d-suite", env->sandbox_dir, p->part);
+    grade_tree_remove(suite);
+    if (env->submission) grade_tree_remove(tree);
     r->score = r->unit_score;
     for (int i = 0; i < r->num_cases; i++) r->score += r->cases[i].score;
 }

@@ -17,17 +17,12 @@
 #include <sys/wait.h>
 #include <time.h>
 #include <unistd.h>
+#include "sandbox.h"
 
-/* Limits for untrusted children: generous for a render of a grading case, small for a fork bomb,
- * a memory hog or a file flood. */
-#define LIMIT_CPU_SECONDS 600
-#define LIMIT_ADDRESS_SPACE ((rlim_t)8 << 30)
-#define LIMIT_FILE_BYTES ((rlim_t)1 << 30)
-#define LIMIT_OPEN_FILES 256
-#define LIMIT_PROCESSES 256
 #define LOG_CUT_NOTE "\n[grader: output cut here]\n"
 
 static grade_sandbox sandbox;
+extern char **environ;
 
 /* RLIMIT_NPROC counts every process of the real user. As nobody that is the child's own; as the
  * grader's user it includes the grader's and the user's other processes, so the cap is what the user
@@ -58,21 +53,40 @@ grade_sandbox grade_sandbox_probe(void)
     }
     /* A network namespace needs privilege; try it in a throwaway child. */
     pid_t pid = fork();
+#ifdef __linux__
     if (pid == 0) _exit(unshare(CLONE_NEWNET) == 0 ? 0 : 1);
+#else
+    if (pid == 0) _exit(1);  /* no network namespaces but Linux's */
+#endif
     int status = 1;
     if (pid > 0) waitpid(pid, &status, 0);
     sandbox.no_network = pid > 0 && WIFEXITED(status) && WEXITSTATUS(status) == 0;
-    sandbox.process_limit = sandbox.as_other_user ? LIMIT_PROCESSES : processes_of(getuid()) + LIMIT_PROCESSES;
+    sandbox.process_limit = sandbox.as_other_user ? GRADE_PROCESSES : processes_of(getuid()) + GRADE_PROCESSES;
+    sandbox.filter = sandbox_filter_supported(sandbox.filter_why, sizeof sandbox.filter_why);
+    sandbox_adopt_orphans();
     return sandbox;
 }
 
 void grade_sandbox_describe(const grade_sandbox *s, char *out, size_t size)
 {
-    snprintf(out, size, "%s%s", s->as_other_user ? "" : "not root: student code ran as your own user, "
-                                                        "and could read what you can; ",
-             s->no_network ? "" : "no network namespace: student code had the network; ");
+    snprintf(out, size, "%s%s%s%s", s->as_other_user ? "" : "not root: student code ran as your own user, "
+                                                          "and could read what you can; ",
+             s->no_network ? "" : "no network namespace: student code had the network; ",
+             s->filter ? "" : "no system-call filter: ", s->filter ? "" : s->filter_why);
     size_t n = strlen(out);
-    if (n >= 2) out[n - 2] = '\0';  /* the last "; " */
+    if (n >= 2 && !strcmp(out + n - 2, "; ")) out[n - 2] = '\0';
+}
+
+void grade_sandbox_in_force(const grade_sandbox *s, char *out, size_t size)
+{
+    char filter[64];
+    sandbox_filter_name(filter, sizeof filter);
+    snprintf(out, size, "%s; %s; %s; limits: wall, CPU, address space (%ld MiB code, %ld MiB compiler), "
+                        "%ld processes, files of %ld MiB, output cut at %d KiB; orphans killed",
+             s->as_other_user ? "student code as user nobody" : "student code as the grader's own user",
+             s->no_network ? "network namespace" : "no network namespace",
+             s->filter ? filter : "no system-call filter", GRADE_CODE_MEMORY >> 20, GRADE_COMPILER_MEMORY >> 20,
+             (long)GRADE_PROCESSES, GRADE_FILE_BYTES >> 20, GRADE_LOG_MAX / 1024);
 }
 
 /* Lowers a limit, never above the hard limit already in place (an unprivileged user cannot raise it). */
@@ -84,10 +98,32 @@ static void set_limit(int resource, rlim_t value)
     setrlimit(resource, &l);
 }
 
+/* The limits and the drop to the sandbox's user, for a child that runs or compiles student code. */
+static void confine(const grade_run_opts *o)
+{
+    set_limit(RLIMIT_CPU, (rlim_t)(o->wall_seconds * GRADE_CPU_PER_WALL) + 5);
+#ifndef __SANITIZE_ADDRESS__
+    /* (Not in a grader built with AddressSanitizer, make SAN=1: the child is a fork of it until exec,
+     * with terabytes of shadow reserved, and could not allocate the filter under any limit.) */
+    set_limit(RLIMIT_AS, (rlim_t)(o->compiler ? GRADE_COMPILER_MEMORY : GRADE_CODE_MEMORY));
+#endif
+    set_limit(RLIMIT_NOFILE, SANDBOX_EXEC_FD + 1);  /* sandbox_exec lowers it by one more */
+#ifdef __linux__
+    if (sandbox.no_network && unshare(CLONE_NEWNET | CLONE_NEWIPC) != 0) _exit(126);
+#endif
+    if (sandbox.as_other_user) {
+        /* Drop every privilege for good: groups, then gid, then uid (the order matters). */
+        if (setgroups(0, NULL) != 0 || setgid(sandbox.gid) != 0 || setuid(sandbox.uid) != 0) _exit(126);
+    }
+    /* After the drop, so it counts nobody's processes; as the grader's user, probe set its size. */
+    if (sandbox.process_limit > 0) set_limit(RLIMIT_NPROC, (rlim_t)sandbox.process_limit);
+}
+
 /* In the child, before exec: a group of its own (so the timeout kills every descendant), the pipe
- * to the grader as stdout and stderr (the grader writes the log, never the child), no stdin, and a
- * cap on every file it writes so a flood cannot fill the disk. */
-static void child_setup(const grade_run_opts *o, int out_fd, int in_fd, int fd3)
+ * to the grader as stdout and stderr (the grader writes the log, never the child), the capture's
+ * pipe at its number, in_fd (> 0) as stdin or else none, fd3 (> 0) as its fd 3 (the split suite's
+ * record pipe, grade_judge.c), and a cap on every file it writes so a flood cannot fill the disk. */
+static void child_setup(const grade_run_opts *o, int out_fd, int capture_fd, int in_fd, int fd3)
 {
     setpgid(0, 0);
     if (o->cwd && chdir(o->cwd) != 0) _exit(126);
@@ -96,22 +132,18 @@ static void child_setup(const grade_run_opts *o, int out_fd, int in_fd, int fd3)
     dup2(in_fd > 0 ? in_fd : in, 0);
     dup2(out_fd, 1);
     dup2(out_fd, 2);
+    if (o->capture && (dup2(capture_fd, o->capture->child_fd) < 0 ||
+                       fcntl(o->capture->child_fd, F_SETFD, 0) != 0))  /* dup2 onto itself keeps CLOEXEC */
+        _exit(126);
     /* The record pipe as fd 3; dup2 onto itself would keep close-on-exec, so clear it instead. */
     if (fd3 > 0 && (fd3 == 3 ? fcntl(3, F_SETFD, 0) : dup2(fd3, 3)) < 0) _exit(126);
-    set_limit(RLIMIT_FSIZE, LIMIT_FILE_BYTES);
+    set_limit(RLIMIT_FSIZE, (rlim_t)GRADE_FILE_BYTES);
     set_limit(RLIMIT_CORE, 0);
+    /* Student code gets none of the grader's environment (whatever its caller exported), a PATH only. */
+    static char *clean[] = {"PATH=/usr/local/bin:/usr/bin:/bin", "LC_ALL=C", NULL};
+    if (o->untrusted) environ = clean;
     for (char *const *e = o->env; e && *e; e++) putenv(*e);
-    if (!o->untrusted) return;
-    set_limit(RLIMIT_CPU, LIMIT_CPU_SECONDS);
-    set_limit(RLIMIT_AS, LIMIT_ADDRESS_SPACE);
-    set_limit(RLIMIT_NOFILE, LIMIT_OPEN_FILES);
-    if (sandbox.no_network && unshare(CLONE_NEWNET) != 0) _exit(126);
-    if (sandbox.as_other_user) {
-        /* Drop every privilege for good: groups, then gid, then uid (the order matters). */
-        if (setgroups(0, NULL) != 0 || setgid(sandbox.gid) != 0 || setuid(sandbox.uid) != 0) _exit(126);
-    }
-    /* After the drop, so it counts nobody's processes; as the grader's user, probe set its size. */
-    if (sandbox.process_limit > 0) set_limit(RLIMIT_NPROC, (rlim_t)sandbox.process_limit);
+    if (o->untrusted) confine(o);
 }
 
 /* The log, created by the grader: a fresh file (O_EXCL), never a name the child planted (a symlink
@@ -143,7 +175,63 @@ static bool pump(int pipe_fd, int log_fd, long max, long *written, int ms)
     return true;
 }
 
-grade_run_result grade_run(char *const argv[], const grade_run_opts *o) { return grade_run_piped(argv, o, 0, 0); }
+/* Moves what arrived on the capture's pipe into its buffer, keeping the first max bytes; false once
+ * the child closed it. */
+static bool collect(int fd, grade_capture *c)
+{
+    char buf[65536];
+    for (int rounds = 0; rounds < 64; rounds++) {
+        ssize_t n = read(fd, buf, sizeof buf);
+        if (n == 0) return false;
+        if (n < 0) return errno == EAGAIN || errno == EINTR;
+        long keep = c->len + n <= c->max ? n : c->max - c->len;
+        c->overflow |= keep < n;
+        if (keep > 0) {
+            char *grown = realloc(c->data, (size_t)(c->len + keep));
+            if (!grown) return c->overflow = true, false;
+            memcpy(grown + c->len, buf, (size_t)keep);
+            c->data = grown;
+            c->len += keep;
+        }
+    }
+    return true;
+}
+
+/* Until the child ends or its time is up: its output to the log, its capture to memory. Returns the
+ * wait status; r->timed_out when it was killed for time. */
+static int watch(pid_t pid, const grade_run_opts *o, int out_fd, int log_fd, int cap_fd, grade_run_result *r)
+{
+    double t0 = clock_seconds();
+    int status = 0;
+    long written = 0;
+    bool out_open = true, cap_open = cap_fd >= 0;
+    for (;;) {
+        pid_t w = waitpid(pid, &status, WNOHANG);
+        if (w == pid || (w < 0 && errno != EINTR)) break;
+        if (clock_seconds() - t0 > o->wall_seconds) {
+            r->timed_out = true;
+            kill(-pid, SIGKILL);
+            waitpid(pid, &status, 0);
+            break;
+        }
+        struct pollfd p[2] = {{out_open ? out_fd : -1, POLLIN, 0}, {cap_open ? cap_fd : -1, POLLIN, 0}};
+        if (poll(p, 2, 5) <= 0) continue;  /* also when both closed: it still runs */
+        if (p[0].revents) out_open = pump(out_fd, log_fd, o->log_max, &written, 0);
+        if (p[1].revents) cap_open = collect(cap_fd, o->capture);
+    }
+    /* What is left in the pipes, and a descendant that still holds them cannot keep this waiting. */
+    kill(-pid, SIGKILL);
+    while (out_open && pump(out_fd, log_fd, o->log_max, &written, 0)) {
+        struct pollfd p = {out_fd, POLLIN, 0};
+        if (poll(&p, 1, 0) <= 0) break;
+    }
+    while (cap_open && collect(cap_fd, o->capture)) {
+        struct pollfd p = {cap_fd, POLLIN, 0};
+        if (poll(&p, 1, 0) <= 0) break;
+    }
+    r->output_cut = o->log_max > 0 && written > o->log_max;
+    return status;
+}
 
 bool grade_pipe(int fds[2])
 {
@@ -153,67 +241,54 @@ bool grade_pipe(int fds[2])
     return false;
 }
 
+grade_run_result grade_run(char *const argv[], const grade_run_opts *o) { return grade_run_piped(argv, o, 0, 0); }
+
 grade_run_result grade_run_piped(char *const argv[], const grade_run_opts *o, int in_fd, int fd3)
 {
-    grade_run_result r = {false, -1, false, 0.0};
+    grade_run_result r = {false, -1, false, false, 0.0};
     double t0 = clock_seconds();
-    int log_fd = open_log(o->log_path), fds[2] = {-1, -1};
-    if (log_fd < 0 || !grade_pipe(fds)) {
-        if (log_fd >= 0) close(log_fd);
+    int log_fd = open_log(o->log_path), fds[2] = {-1, -1}, cap[2] = {-1, -1};
+    if (o->capture) o->capture->len = 0, o->capture->overflow = false;
+    if (log_fd < 0 || !grade_pipe(fds) || (o->capture && !grade_pipe(cap))) {
+        int opened[] = {log_fd, fds[0], fds[1], cap[0]};
+        for (int i = 0; i < 4; i++)
+            if (opened[i] >= 0) close(opened[i]);
         return r;
     }
     pid_t pid = fork();
-    if (pid < 0) {
-        close(log_fd), close(fds[0]), close(fds[1]);
-        return r;
-    }
     if (pid == 0) {
-        child_setup(o, fds[1], in_fd, fd3);
-        execvp(argv[0], argv);
+        child_setup(o, fds[1], cap[1], in_fd, fd3);
+        if (o->untrusted && !o->compiler && sandbox.filter) sandbox_exec(argv, o->writes_files);
+        else execvp(argv[0], argv);
         _exit(127);
     }
-    setpgid(pid, pid);  /* also from the parent: no race with the first kill */
+    if (pid > 0) setpgid(pid, pid);  /* also from the parent: no race with the first kill */
     close(fds[1]);
+    if (cap[1] >= 0) close(cap[1]);
     fcntl(fds[0], F_SETFL, O_NONBLOCK);
-
-    /* Copy its output to the log until it ends or its time is up; then kill the whole group either
-     * way, so no grandchild it left behind keeps running. */
-    int status = 0;
-    long written = 0;
-    bool open_pipe = true;
-    for (;;) {
-        pid_t w = waitpid(pid, &status, WNOHANG);
-        if (w == pid) break;
-        if (w < 0 && errno != EINTR) break;
-        if (clock_seconds() - t0 > o->wall_seconds) {
-            r.timed_out = true;
-            kill(-pid, SIGKILL);
-            waitpid(pid, &status, 0);
-            break;
-        }
-        if (open_pipe) open_pipe = pump(fds[0], log_fd, o->log_max, &written, 5);
-        else nanosleep(&(struct timespec){0, 5 * 1000 * 1000}, NULL);  /* it closed its output, still runs */
-    }
-    kill(-pid, SIGKILL);
-    while (open_pipe && pump(fds[0], log_fd, o->log_max, &written, 0)) {
-        struct pollfd p = {fds[0], POLLIN, 0};  /* what is left in the pipe; stops when it is empty */
-        if (poll(&p, 1, 0) <= 0) break;
-    }
+    if (cap[0] >= 0) fcntl(cap[0], F_SETFL, O_NONBLOCK);
+    int status = pid > 0 ? watch(pid, o, fds[0], log_fd, cap[0], &r) : 0;
+    /* Nothing outlives its stage: its group is killed above, the orphans the grader adopted here (not
+     * every process of the sandbox's user: two graders may share a machine, as test-autograder's do). */
+    sandbox_kill_orphans();
     close(fds[0]);
+    if (cap[0] >= 0) close(cap[0]);
     close(log_fd);
     r.seconds = clock_seconds() - t0;
-    if (!r.timed_out && WIFEXITED(status)) {
+    if (pid > 0 && !r.timed_out && WIFEXITED(status)) {
         r.exited = true;
         r.status = WEXITSTATUS(status);
     }
-    else if (WIFSIGNALED(status))
+    else if (pid > 0 && WIFSIGNALED(status))
         r.status = WTERMSIG(status);
     return r;
 }
 
 void grade_run_describe(const grade_run_result *r, char *out, size_t size)
 {
-    if (r->timed_out) snprintf(out, size, "timed out after %.0f s", r->seconds);
+    if (r->timed_out) snprintf(out, size, "ran past %.0f s", r->seconds);
+    else if (!r->exited && r->status == SIGXCPU) snprintf(out, size, "ran past its CPU time");
+    else if (!r->exited && r->status == SIGSYS) snprintf(out, size, "made a system call the sandbox forbids");
     else if (!r->exited) snprintf(out, size, "killed by signal %d (%s)", r->status, strsignal(r->status));
     else snprintf(out, size, "exited with status %d", r->status);
 }

@@ -1,8 +1,14 @@
 # The grader (bin/grade) and its suite. It ships to students (make grade: their own tree, public
 # cases) and to the autograder (bin/grade --submission: each part on its own).
 
-GRADER_SRC := $(filter-out grader/grade_main.c,$(wildcard grader/*.c))
+# The sandbox's system-call filter needs Debian's libseccomp (libseccomp-dev, in tools/setup's list);
+# without it (macOS) grader/sandbox_posix.c stands in, and bin/grade --submission as root refuses to
+# grade. grader/probe_main.c is bin/grade-probe, the sandbox's self-test (its own program).
+SANDBOX_IMPL := $(if $(shell pkg-config --exists libseccomp 2>/dev/null && echo yes),linux,posix)
+GRADER_SRC := $(filter-out grader/grade_main.c grader/probe_main.c grader/sandbox_linux.c grader/sandbox_posix.c,\
+                $(wildcard grader/*.c)) grader/sandbox_$(SANDBOX_IMPL).c
 GRADER_OBJ := $(patsubst %.c,$(BUILD)/%.o,$(GRADER_SRC))
+GRADER_LIBS := $(if $(filter linux,$(SANDBOX_IMPL)),$(shell pkg-config --libs libseccomp))
 # bin/grade links the framework's file, image and statistics code, never a part: it must not run
 # student code in its own process. The command line and the render key (cli.o, range.o and the
 # output.o the merge writes through) come along for checking the references (grade_refs.c).
@@ -12,11 +18,19 @@ GRADER_FRAMEWORK_OBJ := $(addprefix $(BUILD)/framework/,image.o file.o exr.o fil
 $(BIN)/grade: $(BUILD)/grader/grade_main.o $(GRADER_OBJ) $(GRADER_FRAMEWORK_OBJ)
 	$(say) LD $@
 	@mkdir -p $(dir $@)
+	$(Q)$(CC) $(LDFLAGS) -o $@ $^ $(LDLIBS) $(GRADER_LIBS)
+
+# The sandbox's self-test: tries what the filter forbids, and sweeps folders for secret bytes.
+$(BIN)/grade-probe: $(BUILD)/grader/probe_main.o
+	$(say) LD $@
+	@mkdir -p $(dir $@)
 	$(Q)$(CC) $(LDFLAGS) -o $@ $^ $(LDLIBS)
 
-# The grader's suite (make test-grader) tests its modules, all but main, so it links them; and it
-# runs bin/grade itself once (a clean run, leak detection on under SAN=1).
-$(BIN)/test-grader: $(GRADER_OBJ)
+# The grader's suite (make test-grader) tests its modules, all but main, so it links them; it runs
+# bin/grade itself once (a clean run, leak detection on under SAN=1) and bin/grade-probe under the
+# sandbox (order-only: not linked in).
+$(BIN)/test-grader: $(GRADER_OBJ) | $(BIN)/grade-probe
+$(BIN)/test-grader: LDLIBS += $(GRADER_LIBS)
 test-grader: $(BIN)/grade
 # The grader's paths and messages live in fixed buffers on purpose: a long path is cut in a message
 # (or makes a file not found, which fails safe), never overflows. GCC's truncation analysis, which
@@ -32,7 +46,9 @@ test-report: $(BIN)/grade $(BIN)/pathtracer $(BIN)/imgtool  ## the grader's HTML
 	$(Q)sh tests/grader/report.sh
 
 # The grader's containment at process level (tests/grader/sandbox.sh says what it proves): grades
-# part 1 of two hostile submissions; as root it also checks what nobody can read.
-test-grader-process: $(BIN)/grade $(BIN)/test-grader $(foreach n,1 2 3 4 5,$(BIN)/test-part$(n))  ## the grader's containment, at process level
+# part 1 of hostile submissions; as root it also sweeps the file system as student code for secrets
+# (bin/strip_solutions makes its stubbed submission: the instructor's tree only).
+test-grader-process: $(BIN)/grade $(BIN)/grade-probe $(BIN)/test-grader $(foreach n,1 2 3 4 5,$(BIN)/test-part$(n)) \
+                     $(if $(wildcard course/course.mk),$(BIN)/strip_solutions)  ## the grader's containment, at process level
 	$(Q)sh tests/grader/sandbox.sh
 

@@ -11,7 +11,10 @@
 #   adversaries  course/autograder/adversarial/*.c (each replaces one part file; its header names
 #                the part, the base ("stub": the part as released, or "solution") and the points it
 #                should get: "expect: unit=0|full|lost images=0|full|lost"), graded on their part
-#                and one other, which must keep full marks
+#                and one other, which must keep full marks ("other: none": their own part only);
+#                "present: TEXT" / "absent: TEXT" lines say what results.json must (not) hold,
+#                "absent-files: PATH..." what must not exist afterwards; no results.json may hold
+#                a line of a hidden scene
 #   no-parts, linked-part, timeout   run_autograder's own fallbacks: an upload without parts/, a
 #                part folder that is a symbolic link to the solution, a grader out of time
 # Settings: AUTOGRADER_TEST_JOBS (2) cases at once; AUTOGRADER_TEST_SEED (12345) the grader's seed
@@ -143,6 +146,26 @@ finish() {
     if [ -z "$problems" ]; then verdict "$1" PASS "${summary# }"; else verdict "$1" FAIL "${problems# }${summary:+ (${summary# })}"; fi
 }
 
+# expect_text ADVERSARY RESULTS: the adversary's "present: TEXT" lines must be in results.json, its
+# "absent: TEXT" lines and every hidden scene's distinctive lines must not, and none of its
+# "absent-files: PATH..." may exist.
+expect_text() {
+    tp=$(dirname "$(dirname "$2")")/text-problems
+    sed -n 's/^ \* present: *//p' "$1" | while IFS= read -r t; do
+        grep -qF -- "$t" "$2" || echo "results.json lacks \"$t\";"; done >"$tp"
+    sed -n 's/^ \* absent: *//p' "$1" | while IFS= read -r t; do
+        grep -qF -- "$t" "$2" && echo "results.json holds \"$t\";"; done >>"$tp"
+    for scene in "$repo"/grading/hidden/*.dae; do
+        grep -E '^ *<(source|float_array|p|triangles|light|node)[ >]' "$scene" | head -n 20 | while IFS= read -r t; do
+            grep -qF -- "$t" "$2" && echo "results.json holds a line of $(basename "$scene");"; done
+    done | sort -u >>"$tp"
+    for p in $(sed -n 's/^ \* absent-files: *//p' "$1"); do
+        [ ! -e "$p" ] || { echo "$p exists: student code wrote outside its sandbox;"; rm -rf "$p"; }
+    done >>"$tp"
+    problems="$problems$(tr '\n' ' ' <"$tp")"
+    rm -f "$tp"
+}
+
 # ---- the cases -------------------------------------------------------------------------------
 
 case_solution() {
@@ -185,6 +208,7 @@ case_adversary() {
     unit=$(sed -n 's/^ \* expect:.*unit=\([a-z0-9]*\).*/\1/p' "$f")
     images=$(sed -n 's/^ \* expect:.*images=\([a-z0-9]*\).*/\1/p' "$f")
     other=$ISOLATION_PART; [ "$part" = "$ISOLATION_PART" ] && other=5
+    grep -q '^ \* other: *none' "$f" && other=  # the newer adversaries: their own part only (time)
     base=$(sed -n 's/^ \* base: *\([a-z]*\).*/\1/p' "$f")
     r=$(new_root "$name"); solution_parts "$r/submission"
     if [ -z "$part" ] || [ -z "$unit" ] || [ -z "$images" ] || [ ! -f "$repo/$file" ]; then
@@ -196,12 +220,13 @@ case_adversary() {
     folder=$(echo "$file" | cut -d/ -f1-2)
     if [ "$base" = stub ]; then rm -rf "$r/submission/$folder" && cp -a "$repo/release/student/$folder" "$r/submission/$folder"; fi
     cp "$f" "$r/submission/$file"
-    grade "$name" "$part,$other"
+    grade "$name" "$part${other:+,$other}"
     read_results "$name"; summary=
     graded_by_grader || problems="$problems not the grader's results;"
     grep -q '"forged"' "$r/results/results.json" && problems="$problems the forged results.json is in place;"
     expect_part "$part" "$unit" "$images"
-    expect_part "$other" full full
+    [ -z "$other" ] || expect_part "$other" full full
+    expect_text "$f" "$r/results/results.json"
     finish "$name"
 }
 

@@ -191,7 +191,7 @@ static void recorded_key(const ref_case *rc, char out[17])
 
 static bool run_logged(char *const argv[], const char *log)
 {
-    grade_run_opts o = {RENDER_SECONDS, NULL, log, 1 << 20, NULL, false};
+    grade_run_opts o = {.wall_seconds = RENDER_SECONDS, .log_path = log, .log_max = 1 << 20};
     grade_run_result r = grade_run(argv, &o);
     return r.exited && r.status == 0;
 }

@@ -6,13 +6,22 @@
 #    part, the message naming `system` (the allow-list reads the objects the build linked).
 # 3. A submission that does not compile shows the compiler's own message in results.json and in
 #    the HTML report.
-# 4. As root: the graded tree holds no reference or hidden case, and nobody can read the references,
-#    the hidden cases, results.json or the report.
+# 4. As root: no grading tree outlives its grading, and nobody can read the references, the hidden
+#    cases, results.json or the report.
 # 5. As a user that is not root, untrusted children still get a process limit (the grader's suite
 #    run as nobody).
 # 6. A submission cannot take code that is not its own: an #include from outside its folder, a
 #    symbolic link in place of a file, or a function that replaces a library's (cmocka's assert)
 #    each scores zero for the part, the message naming it.
+# 7. As root: nothing secret is in reach of student code. bin/grade-probe sweeps the file system as
+#    student code runs (the sandbox's user, filter and limits, from the part's tree, while part 3 is
+#    graded) for byte sequences of every part's solution, every reference EXR and every hidden case
+#    and scene, and finds none; the same sweep run on a folder holding one of them finds it. It
+#    sweeps the course's tree, the grader's output and sandbox folders and the usual shared places
+#    (/var/tmp, /dev/shm, /home, /root, /etc, /opt, /srv), not all of /: on a shared machine other
+#    checkouts of the course are readable there, which says nothing about the grader. Then the
+#    filter, as the grader installs it, refuses what the probe tries (exec, fork, files, sockets...),
+#    and `#include "/dev/zero"` ends the build fast with the limit it ran past.
 set -eu
 cd "$(dirname "$0")/../.."
 out=out/sandbox-test
@@ -52,18 +61,17 @@ submission '#ifdef _REENTRANT
 #include <stdlib.h>
 int pl_sneaky(void) { return system("true"); }
 #endif'
-bin/grade --submission "$out/sub" --parts 1 --seed 1 --out "$out/reentrant" >"$out/reentrant.log" 2>&1 || true
+mkdir -p "$out/tmp" && chmod 711 "$out/tmp"  # the grader's sandbox folder goes here (TMPDIR)
+TMPDIR=$PWD/$out/tmp bin/grade --submission "$out/sub" --parts 1 --seed 1 --out "$out/reentrant" >"$out/reentrant.log" 2>&1 || true
 unit_output "$out/reentrant" | grep -q 'calls `system`' || fail "system() under _REENTRANT was not refused (see $out/reentrant.log)"
 [ "$(part1_score "$out/reentrant")" = 0 ] || fail "system() under _REENTRANT scored $(part1_score "$out/reentrant")"
 echo "  system() under _REENTRANT: refused, part 1 scores 0"
 
 # 4. what nobody can reach after a grading, as root
 if [ "$(id -u)" = 0 ]; then
-    tree="$out/reentrant/work/part1/tree"
-    [ -d "$tree/parts" ] || fail "no graded tree at $tree"
-    [ ! -e "$tree/grading" ] && [ ! -e "$tree/reference_images" ] ||
-        fail "the graded tree holds grading/ or reference_images/"
-    [ -z "$(find "$tree" -name '*.exr' | head -1)" ] || fail "the graded tree holds an EXR"
+    # No grading tree outlives its grading (what a tree may hold is the sweep's concern, below).
+    [ -z "$(ls -A "$out/tmp")" ] || fail "the grading left $(ls -A "$out/tmp") in its TMPDIR"
+    grep -q 'unit tests' "$out/reentrant.log" || fail "the grading did not run ($out/reentrant.log)"
     as_nobody() { setpriv --reuid=nobody --regid=nogroup --clear-groups "$@" >/dev/null 2>&1; }
     ref=$(find reference_images -name '*.exr' | head -1)
     for secret in "$ref" grading/hidden/cases.json "$out/reentrant/results.json" "$out/reentrant/report/index.html"; do
@@ -74,8 +82,11 @@ if [ "$(id -u)" = 0 ]; then
     echo "  as nobody: references, hidden cases, results.json and the report are unreadable"
 
     # 5. not root: the grader's own suite, as nobody, checks its children's process limit
-    PL_TEST_FILTER='*process_limit*' setpriv --reuid=nobody --regid=nogroup --clear-groups bin/test-grader \
-        >"$out/nproc.log" 2>&1 || fail "not root, an untrusted child has no process limit (see $out/nproc.log)"
+    # (a copy: bin/ is root's alone once bin/grade --submission ran here as root)
+    copy=$(mktemp -d /tmp/pathlab-nproc.XXXXXX) && chmod 755 "$copy" && cp bin/test-grader "$copy/"
+    (cd "$copy" && PL_TEST_FILTER='*process_limit*' setpriv --reuid=nobody --regid=nogroup --clear-groups \
+        ./test-grader) >"$out/nproc.log" 2>&1 || { rm -rf "$copy"; fail "not root, an untrusted child has no process limit (see $out/nproc.log)"; }
+    rm -rf "$copy"
     grep -q 'PASSED.*1 test' "$out/nproc.log" || fail "the process-limit test did not run as nobody ($out/nproc.log)"
     echo "  as nobody (not root): untrusted children have a process limit"
 else
@@ -106,4 +117,67 @@ ln -s "$PWD/parts/part1_raygen/pixel.c" "$out/sub/parts/part1_raygen/pixel.c"
 refused "a symbolic link in place of a file" "is a symbolic link"
 submission 'void _assert_true(const unsigned long result, const char *const expression, const char *const file, const int line) { (void)result; (void)expression; (void)file; (void)line; }'
 refused "a function that replaces cmocka's _assert_true" 'defines `_assert_true`'
+
+# 7. nothing secret in reach, as root (the stubbed submission needs the instructor's strip tool)
+if [ "$(id -u)" = 0 ] && [ ! -x bin/strip_solutions ]; then
+    echo "  (no bin/strip_solutions, not the instructor's tree: the sweep is skipped)"
+elif [ "$(id -u)" = 0 ]; then
+    # The needles, hex: solution lines (40+ characters, 8 a file), 48 bytes from the middle of each
+    # reference EXR and of each hidden file. Kept in a file only root can read.
+    needles=$out/needles
+    hexof() { od -An -tx1 -v | tr -d ' \n'; }
+    : >"$needles.raw"
+    for f in parts/*/*.c; do
+        awk '/BEGIN SOLUTION/ { on = 1; next } /END SOLUTION/ { on = 0 } on' "$f" |
+            sed 's/^[[:space:]]*//' | awk 'length($0) >= 40 && !/^\/[*\/]/' | head -n 8 |
+            while IFS= read -r line; do printf '%s' "$line" | hexof; echo; done >>"$needles.raw"
+    done
+    for f in $(find reference_images grading/hidden -type f); do
+        size=$(wc -c <"$f"); [ "$size" -ge 96 ] || continue
+        tail -c +$((size / 2)) "$f" | head -c 48 | hexof >>"$needles.raw"; echo >>"$needles.raw"
+    done
+    # A secret the student release also holds is no secret (a solution line that repeats framework
+    # code, a hidden scene's chunk that a public scene shares): those needles are dropped.
+    public="framework tests scenes tools third_party fuzz handout bench grading/cases.json Makefile README.md"
+    PL_SWEEP_NEEDLES=$(grep . "$needles.raw" | paste -sd, -) bin/grade-probe sweep $public >"$out/public.log" 2>&1 || true
+    sed -n 's/^FOUND secret \([0-9]*\) in .*/\1/p' "$out/public.log" | sort -un >"$out/public.ids"
+    grep . "$needles.raw" | awk 'NR == FNR { drop[$1 + 1] = 1; next } !(FNR in drop)' "$out/public.ids" - >"$needles.kept"
+    count=$(grep -c . "$needles.kept")
+    [ "$count" -ge 40 ] || fail "only $count secrets to look for"
+    PL_SWEEP_NEEDLES=$(paste -sd, - <"$needles.kept"); export PL_SWEEP_NEEDLES
+    chmod 600 "$needles.raw" "$needles.kept"
+    # The sweep can fail: a folder holding a hidden scene, readable, is found.
+    bait=$(mktemp -d /tmp/pathlab-bait.XXXXXX); chmod 755 "$bait"
+    cp grading/hidden/cases.json "$bait/"; chmod 644 "$bait/cases.json"
+    cp bin/grade-probe "$bait/"
+    if setpriv --reuid=nobody --regid=nogroup --clear-groups "$bait/grade-probe" sweep "$bait" >"$out/bait.log" 2>&1; then
+        rm -rf "$bait"; fail "the sweep does not find a hidden case in plain sight ($out/bait.log)"
+    fi
+    # A stubbed submission (the graded part earns nothing, the sweep is what matters), graded with
+    # the sweep hook, its sandbox folder under a TMPDIR of its own.
+    rm -rf "$out/sub" && mkdir -p "$out/sub"
+    for f in parts/*/*; do mkdir -p "$out/sub/$(dirname "$f")"; done
+    for f in parts/*/*.c parts/*/*.h; do bin/strip_solutions "$f" "$out/sub/$f" || fail "cannot strip $f"; done
+    tmpbase=$(mktemp -d /tmp/pathlab-sweep.XXXXXX); chmod 711 "$tmpbase"
+    roots="$PWD $PWD/$out $tmpbase /var/tmp /dev/shm /home /root /etc /opt /srv"
+    TMPDIR=$tmpbase PL_GRADE_SWEEP="$bait/grade-probe $roots" timeout 600 \
+        bin/grade --submission "$out/sub" --parts 3 --seed 1 --out "$out/swept" >"$out/swept.log" 2>&1 || true
+    unset PL_SWEEP_NEEDLES
+    rm -rf "$bait" "$tmpbase"
+    grep 'sweep as student code' "$out/swept.log" >"$out/sweep-result" || fail "the sweep did not run ($out/swept.log)"
+    grep -q 'exit 0: swept [0-9]* files' "$out/sweep-result" ||
+        fail "student code can read a secret: $(cat "$out/sweep-result") (see $out/swept/work/part3/sweep.log)"
+    echo "  as student code, a sweep of $(sed 's/.*swept \([0-9]*\) files.*/\1/' "$out/sweep-result") files finds none of $count secrets"
+    grep -q 'protections in force: student code as user nobody; network namespace; seccomp' "$out/swept.log" ||
+        fail "the staff log does not name the protections in force ($out/swept.log)"
+    echo "  the staff log names the protections in force"
+fi
+
+# 8. the compiler's limits: #include "/dev/zero" stops fast, with the limit named
+submission '#include "/dev/zero"'
+start=$(date +%s)
+timeout 600 bin/grade --submission "$out/sub" --parts 1 --seed 1 --out "$out/zero" >"$out/zero.log" 2>&1 || true
+unit_output "$out/zero" | grep -q "part 1's build ran past its memory limit" ||
+    fail "#include \"/dev/zero\": no verdict naming the memory limit (see $out/zero/results.json)"
+echo "  #include \"/dev/zero\": part 1's build ran past its memory limit ($(( $(date +%s) - start )) s with the course's build)"
 echo "test-grader-process: passed"

@@ -11,7 +11,10 @@
 #include "../../grader/grade.h"
 #include "../../grader/grade_guard.h"
 #include "../../grader/grade_inspect.h"
+#include "../../grader/grade_diag.h"
+#include "../../framework/output.h"
 #include <fcntl.h>
+#include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -53,11 +56,12 @@ static long file_size(const char *path)
     return lstat(path, &st) == 0 ? (long)st.st_size : -1;
 }
 
-/* Runs sh -c script as the grader runs untrusted code; its exit status (-1: did not exit). */
+/* Runs sh -c script as the grader runs the compiler on student files (the sandbox's user and limits;
+ * no filter, which would stop the shell's fork); its exit status (-1: did not exit). */
 static int run_untrusted(const char *script, const char *log)
 {
     char *argv[] = {"sh", "-c", (char *)script, NULL};
-    grade_run_opts o = {30, NULL, log, 4096, NULL, true};
+    grade_run_opts o = {.wall_seconds = 30, .log_path = log, .log_max = 4096, .untrusted = true, .compiler = true};
     grade_run_result r = grade_run(argv, &o);
     return r.exited ? r.status : -1;
 }
@@ -195,6 +199,49 @@ static void test_run__a_flood_is_cut_while_the_child_runs(void **state)
     assert_string_equal(tail, "[grader: output cut here]");
 }
 
+/* ---- the filter: student code from its first instruction ----------------------------------- */
+
+/* bin/grade-probe MODE run as the grader runs student code, from a copy in the scratch folder (the
+ * sandbox's user may not enter bin/ once bin/grade --submission ran here as root); its exit status
+ * (-1: did not exit). */
+static int run_probe(const char *mode, const char *log, bool *cut)
+{
+    char probe[128], copy[300];
+    snprintf(probe, sizeof probe, "%s/grade-probe", scratch);
+    snprintf(copy, sizeof copy, "cp bin/grade-probe '%s'", probe);
+    assert_int_equal(system(copy), 0);
+    char *argv[] = {probe, (char *)mode, NULL};
+    grade_run_opts o = {.wall_seconds = 30, .cwd = scratch, .log_path = log, .log_max = 1 << 16, .untrusted = true};
+    grade_run_result r = grade_run(argv, &o);
+    if (cut) *cut = r.output_cut;
+    return r.exited ? r.status : -1;
+}
+
+static void test_run__student_code_is_filtered_from_its_first_instruction(void **state)
+{
+    (void)state;
+    grade_sandbox s = grade_sandbox_probe();
+    if (!s.filter) {
+        printf("  (skipped: no filter on this machine: %s)\n", s.filter_why);
+        return;
+    }
+    char log[256], tail[4096];
+    snprintf(log, sizeof log, "%s/forbidden.log", scratch);
+    int status = run_probe("forbidden", log, NULL);
+    grade_log_tail(log, 40, tail, sizeof tail);
+    if (status != 0) fail_msg("under the sandbox, grade-probe forbidden exited %d:\n%s", status, tail);
+    /* The probe ran its checks (a probe that never started would also not succeed). */
+    assert_non_null(strstr(tail, "fork()                                       refused"));
+    assert_non_null(strstr(tail, "a thread                                     worked"));
+    /* Unconfined, the same probe finds the forbidden things allowed: the test can fail. */
+    char probe[128];
+    snprintf(probe, sizeof probe, "%s/grade-probe", scratch);
+    char *argv[] = {probe, "forbidden", NULL};
+    grade_run_opts o = {.wall_seconds = 30, .cwd = scratch, .log_path = log, .log_max = 1 << 16};
+    grade_run_result r = grade_run(argv, &o);
+    assert_true(r.exited && r.status != 0);
+}
+
 /* ---- limits and what the report says ------------------------------------------------------- */
 
 static void test_run__untrusted_children_have_a_process_limit(void **state)
@@ -216,11 +263,12 @@ static void test_sandbox__report_names_what_is_missing(void **state)
 {
     (void)state;
     char text[256];
-    grade_sandbox s = {false, false, 0, 0, 300};
+    grade_sandbox s = {.process_limit = 300, .filter_why = "built without libseccomp"};
     grade_sandbox_describe(&s, text, sizeof text);
     assert_non_null(strstr(text, "not root: student code ran as your own user"));
     assert_non_null(strstr(text, "had the network"));
-    s.as_other_user = s.no_network = true;
+    assert_non_null(strstr(text, "no system-call filter: built without libseccomp"));
+    s.as_other_user = s.no_network = s.filter = true;
     grade_sandbox_describe(&s, text, sizeof text);
     assert_string_equal(text, "");
 }
@@ -301,6 +349,64 @@ static void test_log_tail__last_lines_bounded(void **state)
     assert_string_equal(small, "");
 }
 
+/* The compiler's lines a student sees: their own files' only, printable, bounded. */
+static void test_diagnostics__only_the_parts_own_files(void **state)
+{
+    (void)state;
+    char path[256], text[4096];
+    snprintf(path, sizeof path, "%s/diag.log", scratch);
+    write_text(path, "  CC     parts/part3_direct/direct.c\n"
+                     "In file included from parts/part3_direct/direct.c:2:\n"
+                     "grading/hidden/secret.dae:1:1: error: expected identifier before '<' token\n"
+                     "    1 | <COLLADA secret scene line>\n"
+                     "      | ^\n"
+                     "parts/part3_direct/direct.c:7:5: error: 'x' undeclared \xff\x1b[31m\n"
+                     "    7 |     x = 1;\n"
+                     "      |     ^\n"
+                     "parts/part3_direct/../../framework/render.c:3:1: error: in another file\n"
+                     "    3 | framework line\n"
+                     "make: *** [Makefile:75: build/release/parts/part3_direct/direct.o] Error 1\n");
+    grade_diagnostics(path, "part3_direct", 40, text, sizeof text);
+    assert_string_equal(text, "parts/part3_direct/direct.c:7:5: error: 'x' undeclared ??[31m\n"
+                              "    7 |     x = 1;\n"
+                              "      |     ^");
+    /* Bounded by lines. */
+    grade_diagnostics(path, "part3_direct", 1, text, sizeof text);
+    assert_string_equal(text, "parts/part3_direct/direct.c:7:5: error: 'x' undeclared ??[31m");
+}
+
+/* The film stream: what a render sends is what the grader receives, bit for bit; a stream cut
+ * short, of another size or with trailing bytes is refused whole. */
+static void test_film_stream__round_trip_and_refusals(void **state)
+{
+    (void)state;
+    film f = {0}, got = {0};
+    assert_int_equal(film_alloc(&f, 3, 2), PL_OK);
+    for (int i = 0; i < 6; i++)
+        for (int k = 0; k < 1 + i; k++) film_pixel_add(&f.pixels[i], rgb_make(0.25f * (float)k, 1e-7f, 3.5f));
+    film_pixel_add(&f.pixels[5], rgb_make(NAN, 0, 0));
+    int fds[2];
+    assert_int_equal(pipe(fds), 0);
+    output_film_counts sent = {10, 20, 30, 21}, counts;
+    pl_diag d = pl_diag_default();
+    assert_int_equal(output_film_send(fds[1], &f, &sent, &d), PL_OK);
+    close(fds[1]);
+    static char buf[4096];
+    ssize_t n = read(fds[0], buf, sizeof buf);
+    close(fds[0]);
+    assert_int_equal(n, 48 + 6 * OUTPUT_FILM_PIXEL_BYTES + 8);
+    assert_int_equal(output_film_receive(buf, (size_t)n, 3, 2, &got, &counts, &d), PL_OK);
+    assert_memory_equal(got.pixels, f.pixels, 6 * sizeof *f.pixels);
+    assert_true(counts.rays == 10 && counts.node_visits == 20 && counts.prim_tests == 30 && counts.samples == 21);
+    film_free(&got);
+    assert_int_not_equal(output_film_receive(buf, (size_t)n - 1, 3, 2, &got, &counts, &d), PL_OK);
+    assert_int_not_equal(output_film_receive(buf, (size_t)n, 2, 3, &got, &counts, &d), PL_OK);
+    assert_non_null(strstr(d.error, "the film is 3x2, the case renders 2x3"));
+    buf[n] = 'x';
+    assert_int_not_equal(output_film_receive(buf, (size_t)n + 1, 3, 2, &got, &counts, &d), PL_OK);
+    film_free(&f);
+}
+
 int sandbox_tests(void)
 {
     const struct CMUnitTest tests[] = {
@@ -309,9 +415,12 @@ int sandbox_tests(void)
         cmocka_unit_test(test_run__log_is_a_fresh_file_never_a_planted_link),
         cmocka_unit_test(test_run__a_flood_is_cut_while_the_child_runs),
         cmocka_unit_test(test_run__untrusted_children_have_a_process_limit),
+        cmocka_unit_test(test_run__student_code_is_filtered_from_its_first_instruction),
         cmocka_unit_test(test_sandbox__report_names_what_is_missing),
         cmocka_unit_test(test_guard__nobody_cannot_open_a_reference),
         cmocka_unit_test(test_log_tail__last_lines_bounded),
+        cmocka_unit_test(test_diagnostics__only_the_parts_own_files),
+        cmocka_unit_test(test_film_stream__round_trip_and_refusals),
     };
     return cmocka_run_group_tests_name("grader sandbox", tests, make_scratch, remove_scratch);
 }

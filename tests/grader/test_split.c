@@ -22,7 +22,7 @@ static void run_with_pipes(const char *script, int in_fd, int number, char *out,
     assert_int_equal(fcntl(record, F_SETFD, FD_CLOEXEC), 0);
     close(fds[1]);
     char *argv[] = {"sh", "-c", (char *)script, NULL};
-    grade_run_opts o = {10, NULL, NULL, 0, NULL, false};
+    grade_run_opts o = {.wall_seconds = 10};
     grade_run_result r = grade_run_piped(argv, &o, in_fd, record);
     close(record);
     assert_true(r.exited);

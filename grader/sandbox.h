@@ -1,0 +1,32 @@
+/* Grader machinery: not part of any assignment.
+ * The operating system's part of the sandbox: what confines a process that runs student code from
+ * its first instruction, and what makes sure nothing it started outlives its stage. One interface,
+ * two implementations: grader/sandbox_linux.c (seccomp through Debian's libseccomp, a subreaper),
+ * used wherever the build finds libseccomp, and grader/sandbox_posix.c (no filter: the grader then
+ * refuses to grade a submission as root, and says why), everywhere else. */
+#ifndef PL_SANDBOX_H
+#define PL_SANDBOX_H
+
+#include <stdbool.h>
+#include <stddef.h>
+
+/* The descriptor slot the confined exec runs from; the child's RLIMIT_NOFILE is set to it, so no
+ * descriptor can ever be made there again (sandbox_linux.c says why that matters). */
+#define SANDBOX_EXEC_FD 255
+
+/* Whether a filter can be installed here (tries it in a throwaway child); false with why. */
+bool sandbox_filter_supported(char *why, size_t size);
+/* The filter's name and version for the staff log ("seccomp (libseccomp 2.5.4)"), or "none". */
+void sandbox_filter_name(char *out, size_t size);
+
+/* In a forked child, as its last step: no_new_privs, the filter, and exec of argv (a path, or a
+ * name looked up in PATH) as the only exec the process will ever make. may_write_files: the filter
+ * lets it create and write files (the legacy XML suite; nothing else). Returns only on failure. */
+void sandbox_exec(char *const argv[], bool may_write_files);
+
+/* The grader adopts every orphan of its children (Linux: a subreaper), so none can escape. */
+void sandbox_adopt_orphans(void);
+/* Kills and reaps every descendant the grader adopted, e.g. a grandchild that called setsid. */
+void sandbox_kill_orphans(void);
+
+#endif
