@@ -95,32 +95,28 @@ static void test_heatmap__colours_visits_and_adds_a_legend(void **state)
     assert_implemented();
     render_ctx ctx;
     render_ctx_init(&ctx, &s, &a, &o);
-    char dir[] = "/tmp/pathlab_heatmap_XXXXXX", path[64];  /* mkstemps, which keeps a suffix, is not POSIX */
-    if (!mkdtemp(dir)) fail_msg("cannot make a temporary folder");
-    snprintf(path, sizeof path, "%s/heat.png", dir);
-    pl_status st = render_heatmap(&ctx, path, &diag);
+    /* In memory: the graded half of a split suite may write no file (grader/sandbox.h); the PNG
+     * writer itself is the framework suite's to test. */
+    heatmap map;
+    pl_status st = heatmap_render(&ctx, "the heat map", &map, &diag);
     assert_implemented();
-    if (st != PL_OK) fail_msg("render_heatmap failed: %s", diag.error);
-    image img = {0};
-    st = image_read(path, &img, &diag);
-    unlink(path);
-    rmdir(dir);
-    if (st != PL_OK) fail_msg("the heat map does not read back: %s", diag.error);
+    if (st != PL_OK) fail_msg("heatmap_render failed: %s", diag.error);
     /* The picture, then the legend strip; a sphere in the middle of the frame is hotter than the
-     * empty corner, where rays miss the root box (0 visits beyond it: the darkest blue). */
-    assert_true(img.width == 64 && img.height > 48);
-    rgb corner = image_get(&img, 0, 0), centre = image_get(&img, 32, 24);
-    if (!(centre.r + centre.g > corner.r + corner.g))
-        fail_msg("the centre (on the mesh) should be warmer than the corner: centre rgb(%g, %g, %g), corner rgb(%g, %g, %g)",
-                 centre.r, centre.g, centre.b, corner.r, corner.g, corner.b);
-    image_free(&img);
+     * empty corner, where rays miss the root box (0 visits beyond it: the darkest blue). Rows run
+     * from the top. */
+    assert_true(map.width == 64 && map.height > 48);
+    const uint8_t *corner = map.rgb8, *centre = map.rgb8 + 3 * (24 * 64 + 32);
+    if (!(centre[0] + centre[1] > corner[0] + corner[1]))
+        fail_msg("the centre (on the mesh) should be warmer than the corner: centre rgb8(%d, %d, %d), corner rgb8(%d, %d, %d)",
+                 centre[0], centre[1], centre[2], corner[0], corner[1], corner[2]);
+    heatmap_free(&map);
     accel_free(&a);
 
-    /* Without the BVH there is nothing to count: a clear error, no file. */
+    /* Without the BVH there is nothing to count: a clear error, no picture. */
     assert_int_equal(accel_build(&a, &s, false, o.max_leaf_size, &diag), PL_OK);
     render_ctx_init(&ctx, &s, &a, &o);
-    assert_int_equal(render_heatmap(&ctx, path, &diag), PL_ERR_INVALID);
-    assert_int_equal(access(path, F_OK), -1);
+    assert_int_equal(heatmap_render(&ctx, "the heat map", &map, &diag), PL_ERR_INVALID);
+    assert_null(map.rgb8);
     accel_free(&a);
     scene_free(&s);
 }
