@@ -39,6 +39,8 @@ typedef struct {
     bool hidden;
     bool work_per_ray;                  /* also judge BVH node visits per ray against the solution's */
     bool known_variance;                /* "statistic": "known_variance" (verdict.h), else the paired t */
+    bool rounding;                      /* "statistic": "rounding": a deterministic case, compared up to
+                                           VERDICT_ROUNDING_TOLERANCE with VERDICT_TIE_PIXELS ties */
     char shows[160];                    /* what the case makes visible, for the report */
 } grade_case;
 

@@ -49,10 +49,16 @@ static pl_status read_case(const char *path, int part, json_t *j, grade_case *c,
     c->work_per_ray = json_is_true(json_object_get(j, "work_per_ray"));
     const char *statistic = json_string_value(json_object_get(j, "statistic"));
     c->known_variance = statistic && !strcmp(statistic, "known_variance");
+    c->rounding = statistic && !strcmp(statistic, "rounding");
 
-    if (statistic && !c->known_variance && strcmp(statistic, "paired_t"))
-        return pl_fail(diag, PL_ERR_PARSE, "%s: case %s: statistic '%.40s': expected paired_t or known_variance",
-                       path, c->name, statistic);
+    if (statistic && !c->known_variance && !c->rounding && strcmp(statistic, "paired_t"))
+        return pl_fail(diag, PL_ERR_PARSE, "%s: case %s: statistic '%.40s': expected paired_t, known_variance "
+                       "or rounding", path, c->name, statistic);
+    /* Only a render with no randomness in it can be compared up to rounding. */
+    if (c->rounding && (json_integer_value(json_object_get(j, "samples")) != 1 ||
+                        json_integer_value(json_object_get(j, "reference_samples")) != 1))
+        return pl_fail(diag, PL_ERR_PARSE, "%s: case %s: statistic rounding needs samples 1 and "
+                       "reference_samples 1 (a deterministic render)", path, c->name);
 
     const char *shows = json_string_value(json_object_get(j, "shows"));
     snprintf(c->shows, sizeof c->shows, "%s", shows ? shows : "");

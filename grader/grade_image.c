@@ -157,7 +157,7 @@ void grade_image_case(const grade_env *env, const grade_spec *spec, const char *
     }
 
     /* The verdict, from the two files, in this process. */
-    image cand = {0}, refimg = {0}, refvar = {0};
+    image cand = {0}, candvar = {0}, refimg = {0}, refvar = {0};
     long bad;
     double cand_n, ref_n;
     if (read_film(ref, &refimg, &refvar, &bad, &ref_n, &diag) != PL_OK || bad) {
@@ -175,18 +175,21 @@ void grade_image_case(const grade_env *env, const grade_spec *spec, const char *
     snprintf(by_fd, sizeof by_fd, "/proc/self/fd/%d", fd);
     pl_status st = fd < 0 ? pl_fail(&diag, PL_ERR_IO, "%s: missing, a link, not a regular file, or over %ld MiB",
                                     out, RENDER_MAX >> 20)
-                          : read_film(by_fd, &cand, NULL, &bad, &cand_n, &diag);
+                          : read_film(by_fd, &cand, &candvar, &bad, &cand_n, &diag);
     if (fd >= 0) close(fd);
     if (st != PL_OK) {
         snprintf(c->reason, sizeof c->reason, "the render wrote no readable image: %s", diag.error);
         image_free(&refimg);
         image_free(&refvar);
+        image_free(&cand);
+        image_free(&candvar);
         return;
     }
-    verdict_image vc = {cand.width, cand.height, (const float *)cand.pixels, NULL};
+    verdict_image vc = {cand.width, cand.height, (const float *)cand.pixels, (const float *)candvar.pixels};
     verdict_image vr = {refimg.width, refimg.height, (const float *)refimg.pixels, (const float *)refvar.pixels};
     verdict_params vp = verdict_params_default(k->samples);
     vp.known_variance = k->known_variance;
+    vp.deterministic = k->rounding;
     vp.reference_spp = k->reference_samples;
     if (k->block_side > 0) {
         vp.min_block_pixels = k->block_side * k->block_side;
@@ -230,6 +233,7 @@ void grade_image_case(const grade_env *env, const grade_spec *spec, const char *
         }
     }
     image_free(&cand);
+    image_free(&candvar);
     image_free(&refimg);
     image_free(&refvar);
 }

@@ -18,17 +18,46 @@
  *   min_block_samples candidate samples (and min_block_pixels pixels), never a fixed 8x8.
  * (With known_variance, a z test against the reference's variance instead: verdict_params.)
  * The p-values of all K tests are combined with Sidak: the case p-value is 1 - (1 - p_min)^K, uniform
- * on [0, 1] for a correct render, and the case fails when it is below family_alpha. */
+ * on [0, 1] for a correct render, and the case fails when it is below family_alpha.
+ *
+ * Deterministic cases (one sample per pixel at its centre, normal shading) run no test at all: two
+ * correct implementations differ there by rounding only, and a t test divides that rounding by its
+ * own spread, which is just as tiny (a geometric sphere test against the quadratic failed at
+ * p = 1e-309). They compare each pixel with a tolerance instead (verdict_params.deterministic):
+ * - VERDICT_ROUNDING_TOLERANCE per channel: a quarter of one step of the 8-bit output (1/1020),
+ *   so a difference within it changes the PNG a student looks at by at most one level. Normal
+ *   shading is 0.5 n + 0.5 of a unit normal computed in float; two correct algorithms agree to a
+ *   few ulps (1e-7) on flat faces, and a sphere's normal inherits the error of its root, which the
+ *   cancellation in b^2 - ac amplifies near the silhouette by about b^2 / disc: 1e-4 within a
+ *   pixel of it (measured: geometric against quadratic, grading/README.md), 1e-3 only for rays
+ *   a few 1e-5 pixel widths from tangent;
+ * - VERDICT_TIE_PIXELS pixels may differ by more: a ray through a shared edge or vertex, or one
+ *   that grazes a silhouette, may hit either surface or none, and correct implementations decide
+ *   such ties differently. Each tie is a single pixel; a bug moves a whole edge (a half-pixel shift
+ *   differs at hundreds of pixels) or a whole surface (a wrong normal: thousands, by 0.1 or more).
+ * The case passes when at most tie_pixels pixels differ by more than tolerance in some channel;
+ * the verdict names how many did and the largest difference. */
 #ifndef PL_VERDICT_H
 #define PL_VERDICT_H
 
 #include <stdbool.h>
 #include "../framework/status.h"
 
+#define VERDICT_ROUNDING_TOLERANCE (1.0 / 1020.0)  /* per channel, deterministic cases: see above */
+#define VERDICT_TIE_PIXELS 8                         /* pixels beyond it, deterministic cases */
+/* known_variance: the rounding every pixel's difference may carry (the largest measured between
+ * correct implementations, 1.2e-4, rounded down: it pads a block's variance, and a bug's
+ * differences are thousands of times larger), and the per-sample spread below which a reference
+ * pixel counts as having seen no variation at all (its samples equal up to the rounding of the
+ * film's sums). */
+#define VERDICT_ROUNDING_SD 1e-4
+#define VERDICT_NO_SPREAD 1e-6
+
 typedef struct {
     int width, height;
     const float *rgb;  /* width * height * 3 linear means, top row first; not owned */
-    const float *var;  /* the same layout: each mean's variance (the reference's; NULL if unknown) */
+    const float *var;  /* the same layout: each mean's variance (NULL if unknown); the candidate's
+                          is used only where the reference's is zero (known_variance, below) */
 } verdict_image;
 
 typedef struct {
@@ -40,9 +69,17 @@ typedef struct {
      * predicts (ref->var, scaled to the candidate's samples: reference_spp / candidate_spp + 1),
      * a z test, instead of the paired t test's spread. For images whose differences are mostly
      * exactly zero (normal shading: only edge pixels vary), where the spread of a few pixels makes
-     * a poor estimate and t with m - 1 degrees of freedom rejects far too often. */
+     * a poor estimate and t with m - 1 degrees of freedom rejects far too often.
+     * Coverage at an edge is a Bernoulli event: a sliver that the reference's samples all missed
+     * (zero variance) may be hit by a candidate sample. Such a pixel takes the candidate's own
+     * variance of the mean instead (cand->var), which is what that one hit weighs: never p = 0 for
+     * a difference the reference could not predict, and no leniency where the reference varies. */
     bool known_variance;
     int reference_spp;
+    /* Deterministic: no test, a per-pixel tolerance and a number of tie pixels (above). */
+    bool deterministic;
+    double tolerance;       /* VERDICT_ROUNDING_TOLERANCE */
+    long tie_pixels;        /* VERDICT_TIE_PIXELS */
 } verdict_params;
 
 verdict_params verdict_params_default(int candidate_spp);
@@ -61,6 +98,14 @@ typedef struct {
     long bad_pixels;             /* candidate pixels with NaN, Inf or negative values */
     int bad_x, bad_y;            /* the first one, counted from the bottom-left as the renderer does */
     char hint[200];              /* a likely cause when the ratio matches a known mistake, else "" */
+    /* Deterministic cases (p_value is 1 on a pass, 0 on a failure; t holds each block's largest
+     * signed difference in units of the tolerance): */
+    bool deterministic;
+    long beyond_tolerance;       /* pixels differing by more than tolerance in some channel */
+    double max_diff;             /* the largest |candidate - reference| of any pixel and channel */
+    int max_x, max_y, max_channel;  /* where (from the bottom-left, as the renderer counts) */
+    double tolerance;            /* params' tolerance ... */
+    long tie_pixels;             /* ... and how many pixels may exceed it */
 } verdict;
 
 /* Compares cand with ref (same size). Fills out (free with verdict_free); PL_ERR_INVALID with a
