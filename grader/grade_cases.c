@@ -47,6 +47,7 @@ static pl_status read_case(const char *path, int part, json_t *j, grade_case *c,
     c->points = json_number_value(json_object_get(j, "points"));
     c->block_side = (int)json_integer_value(json_object_get(j, "block_side"));
     c->work_per_ray = json_is_true(json_object_get(j, "work_per_ray"));
+    c->noise_check = json_is_true(json_object_get(j, "noise_check"));
     const char *statistic = json_string_value(json_object_get(j, "statistic"));
     c->known_variance = statistic && !strcmp(statistic, "known_variance");
     c->rounding = statistic && !strcmp(statistic, "rounding");

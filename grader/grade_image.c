@@ -218,6 +218,10 @@ void grade_image_case(const grade_env *env, const grade_spec *spec, const char *
             c->course_work = course_work;
             figures_ok = figures_ok && c->work >= 0 && c->work <= GRADE_WORK_FACTOR * course_work;
         }
+        if (k->noise_check) {  /* as noisy as the course's render, not more (verdict_noise_ratio) */
+            c->noise = verdict_noise_ratio(&vc, &vr, k->samples, k->reference_samples);
+            figures_ok = figures_ok && c->noise <= GRADE_NOISE_FACTOR;
+        }
         c->pass = c->v.pass && figures_ok;
         c->score = c->pass ? k->points : 0.0;
         /* Pictures for the report: candidate, reference, z-map. */

@@ -1,16 +1,18 @@
 /* Grader machinery: not part of any assignment.
  * bin/grade [--submission DIR] [--public] [--out DIR] [--seed N] [--threads N] [--parts 1,3]
- * bin/grade --calibrate N [--parts ...]
+ * bin/grade --calibrate N [--parts ...] [--cases name,name]
  *   --submission DIR  grade DIR/parts/ part by part, each among the solution's other parts (autograder);
  *                     without it, grade this tree as it is, public cases only (a student's make grade)
  *   --out DIR         where results.json, the report (DIR/report/index.html) and scratch go (out/grade)
  *   --calibrate N     render every case of this tree N times with fresh seeds and print, per case, how
  *                     often it failed beside the alpha it claims, and the deciles of its p-values
+ *   --cases A,B       with --calibrate: only the cases of these names (a slow case's 2,000 runs alone)
  * Exit status: 0 when every graded part got full marks, 1 otherwise, 2 for bad arguments. */
 #include "grade.h"
 #include "grade_guard.h"
 #include "grade_image.h"
 #include <errno.h>
+#include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -29,7 +31,7 @@ static double now(void)
 static int usage(const char *msg)
 {
     fprintf(stderr, "grade: %s\nusage: grade [--submission DIR] [--public] [--out DIR] [--seed N] [--threads N] "
-                    "[--parts 1,2,...]\n", msg);
+                    "[--parts 1,2,...]\n       grade --calibrate N [--parts 1,2,...] [--cases name,...]\n", msg);
     return 2;
 }
 
@@ -42,7 +44,17 @@ static uint64_t fresh_seed(void)
 }
 
 /* --calibrate: the grader's own false-failure rate, measured on this tree (the solution). */
-static int calibrate(const grade_env *base, const grade_spec *spec, const char *parts, int runs)
+/* Whether name is one of the comma-separated names (NULL: every name). */
+static bool name_listed(const char *names, const char *name)
+{
+    if (!names) return true;
+    size_t len = strlen(name);
+    for (const char *p = names; (p = strstr(p, name)) != NULL; p += len)
+        if ((p == names || p[-1] == ',') && (p[len] == ',' || p[len] == '\0')) return true;
+    return false;
+}
+
+static int calibrate(const grade_env *base, const grade_spec *spec, const char *parts, const char *cases, int runs)
 {
     int worst = 0;
     printf("%-28s %6s %9s %8s  p-value deciles\n", "case", "runs", "failures", "alpha");
@@ -55,7 +67,9 @@ static int calibrate(const grade_env *base, const grade_spec *spec, const char *
             return 1;
         }
         for (int i = 0; i < p->num_cases; i++) {
+            if (!name_listed(cases, p->cases[i].name)) continue;
             int failures = 0, decile[10] = {0};
+            double noise_min = INFINITY, noise_max = 0.0;  /* noise_check cases: the range over the runs */
             for (int run = 0; run < runs; run++) {
                 grade_env env = *base;
                 env.seed = fresh_seed();
@@ -68,11 +82,15 @@ static int calibrate(const grade_env *base, const grade_spec *spec, const char *
                     return 1;
                 }
                 failures += !c.pass;
+                noise_max = c.noise > noise_max ? c.noise : noise_max;
+                noise_min = c.noise < noise_min ? c.noise : noise_min;
                 decile[c.v.p_value >= 1.0 ? 9 : (int)(c.v.p_value * 10)]++;
                 verdict_free(&c.v);
             }
             printf("part%d/%-22s %6d %9d %8.0e ", p->part, p->cases[i].name, runs, failures, spec->family_alpha);
             for (int d = 0; d < 10; d++) printf(" %3d", decile[d]);
+            if (p->cases[i].noise_check) printf("   noise ratio %.3f to %.3f (limit %.2f)", noise_min, noise_max,
+                                                   GRADE_NOISE_FACTOR);
             printf("\n");
             fflush(stdout);
             worst = failures > worst ? failures : worst;
@@ -97,7 +115,7 @@ static bool make_dir(const char *path)
 
 int main(int argc, char **argv)
 {
-    const char *submission = NULL, *out = "out/grade", *parts = "1,2,3,4,5";
+    const char *submission = NULL, *out = "out/grade", *parts = "1,2,3,4,5", *cases = NULL;
     bool public_only = false, seed_given = false;
     uint64_t seed = 0;
     int threads = 2, calibrate_runs = 0;
@@ -111,6 +129,7 @@ int main(int argc, char **argv)
         else if (!strcmp(a, "--seed")) { seed = strtoull(argv[++i], NULL, 10); seed_given = true; }
         else if (!strcmp(a, "--threads")) threads = atoi(argv[++i]);
         else if (!strcmp(a, "--calibrate")) calibrate_runs = atoi(argv[++i]);
+        else if (!strcmp(a, "--cases")) cases = argv[++i];
         else return usage("unknown option");
     }
     if (threads < 1 || threads > 64) return usage("--threads: expected 1..64");
@@ -147,7 +166,7 @@ int main(int argc, char **argv)
     if (submission) grade_sandbox_describe(&env.sandbox, result.unprotected, sizeof result.unprotected);
     if (result.unprotected[0]) fprintf(stderr, "grade: unavailable protections: %s\n", result.unprotected);
     if (calibrate_runs > 0) {
-        int code = calibrate(&env, &spec, parts, calibrate_runs);
+        int code = calibrate(&env, &spec, parts, cases, calibrate_runs);
         grade_spec_free(&spec);
         return code;
     }

@@ -62,6 +62,15 @@ static void case_text(const grade_case_result *c, char *out, size_t size)
                             ? "Pixels stop later than they should: does adaptive_converged ever say yes?"
                             : "Pixels stop earlier than they should: check the confidence test.");
     }
+    if (c->spec->noise_check && len >= 0 && (size_t)len < size) {
+        bool ok = c->noise <= GRADE_NOISE_FACTOR;
+        len += snprintf(out + len, size - len, " Noise per sample: %.3f x the course's (%s %.2fx).", c->noise,
+                        ok ? "within" : "more than", GRADE_NOISE_FACTOR);
+        if (!ok && (size_t)len < size)
+            len += snprintf(out + len, size - len, " The image is right on average but noisier than it should be: "
+                            "does every one of the -l light samples draw its own random numbers, and are they "
+                            "spent where the handout says?");
+    }
     if (c->course_work > 0 && len >= 0 && (size_t)len < size) {
         bool ok = c->work >= 0 && c->work <= GRADE_WORK_FACTOR * c->course_work;
         len += snprintf(out + len, size - len, " Work per camera ray (node visits + primitive tests, counted by "

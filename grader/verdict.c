@@ -252,3 +252,18 @@ pl_status verdict_compute(const verdict_image *cand, const verdict_image *ref, c
     find_hint(out, cand, ref);
     return PL_OK;
 }
+
+double verdict_noise_ratio(const verdict_image *cand, const verdict_image *ref, int cand_spp, int ref_spp)
+{
+    if (!cand->var || !ref->var || cand->width != ref->width || cand->height != ref->height) return NAN;
+    double sum = 0.0;
+    long pixels = 0;
+    for (long i = 0; i < (long)ref->width * ref->height; i++) {
+        const float *c = cand->var + 3 * i, *r = ref->var + 3 * i;
+        double rv = ((double)r[0] + r[1] + r[2]) * ref_spp, cv = ((double)c[0] + c[1] + c[2]) * cand_spp;
+        if (!(rv > 0.0)) continue;  /* no noise to compare with */
+        sum += isfinite(cv) ? fmin(cv / rv, VERDICT_NOISE_CAP) : VERDICT_NOISE_CAP;
+        pixels++;
+    }
+    return pixels > 0 ? sum / pixels : NAN;
+}

@@ -114,4 +114,18 @@ pl_status verdict_compute(const verdict_image *cand, const verdict_image *ref, c
                           verdict *out, pl_diag *diag);
 void verdict_free(verdict *v);  /* NULL-safe */
 
+/* The candidate's noise against the reference's, for a fixed-rate case rendered with the same flags:
+ * per pixel, the candidate's per-sample variance (its mean's variance times its samples, summed
+ * over channels) over the reference's, capped at VERDICT_NOISE_CAP, averaged over the pixels where
+ * the reference varies. About 1 for a render whose samples are as noisy as the course's (a little
+ * below: a variance estimated from few samples of a skewed radiance is more often low than high);
+ * the cap keeps one firefly from deciding it (an uncapped ratio of sums varied by 20% between
+ * seeds). Both variances come from the framework's sums of the samples (the film), never from a
+ * number student code reports. A render that reuses one light sample for all -l, or spends the
+ * light samples where the course does not, is unbiased but noisier: its means pass, this ratio does
+ * not (grader/grade_image.c judges it against GRADE_NOISE_FACTOR). NAN when the reference has no
+ * variance at all. */
+#define VERDICT_NOISE_CAP 4.0
+double verdict_noise_ratio(const verdict_image *cand, const verdict_image *ref, int cand_spp, int ref_spp);
+
 #endif

@@ -419,6 +419,39 @@ static void test_verdict__known_variance_models_coverage_the_reference_missed(vo
     free(cand_var);
 }
 
+/* ---- the noise check: as noisy as the course's render, not more --------------------------------- */
+
+/* Per-sample variances: the reference's v everywhere; a candidate equal to it but for one firefly
+ * pixel (a thousand times) has a ratio near 1, one whose third of pixels is 4x as noisy (a light
+ * sample reused for 4) well above GRADE's 1.15. */
+static void test_verdict__noise_ratio_sees_extra_noise_not_one_firefly(void **state)
+{
+    (void)state;
+    float *ref = malloc(sizeof(float) * 3 * W * H), *ref_var = malloc(sizeof(float) * 3 * W * H);
+    float *cand_var = malloc(sizeof(float) * 3 * W * H);
+    assert_true(ref && ref_var && cand_var);
+    for (int i = 0; i < 3 * W * H; i++) {
+        ref[i] = 0.5f;
+        ref_var[i] = 0.04f / 1024.0f;  /* per-sample 0.04 at 1024 samples */
+        cand_var[i] = 0.04f / 16.0f;   /* the same per sample at 16 */
+    }
+    verdict_image c = {W, H, ref, cand_var}, r = {W, H, ref, ref_var};
+    assert_float_near(1.0, verdict_noise_ratio(&c, &r, 16, 1024), 1e-6);
+    cand_var[3 * 77] = cand_var[3 * 77 + 1] = 1000.0f * 0.04f / 16.0f;
+    double one_firefly = verdict_noise_ratio(&c, &r, 16, 1024);
+    for (int i = 0; i < 3 * W * H; i++)
+        if (i / 3 % 3 == 0) cand_var[i] *= 4.0f;
+    double reused = verdict_noise_ratio(&c, &r, 16, 1024);
+    print_message("noise ratio: one firefly %.4f, a third of the pixels 4x as noisy %.3f\n", one_firefly, reused);
+    assert_true(one_firefly < 1.001);
+    assert_true(reused > 1.9);
+    verdict_image no_var = {W, H, ref, NULL};
+    assert_true(isnan(verdict_noise_ratio(&no_var, &r, 16, 1024)));
+    free(ref);
+    free(ref_var);
+    free(cand_var);
+}
+
 int verdict_tests(void)
 {
     const struct CMUnitTest tests[] = {
@@ -431,6 +464,7 @@ int verdict_tests(void)
         cmocka_unit_test(test_verdict__deterministic_tolerates_rounding_and_ties),
         cmocka_unit_test(test_verdict__deterministic_fails_flips_shifts_scales_and_wrong_normals),
         cmocka_unit_test(test_verdict__known_variance_models_coverage_the_reference_missed),
+        cmocka_unit_test(test_verdict__noise_ratio_sees_extra_noise_not_one_firefly),
     };
     return cmocka_run_group_tests_name("verdict", tests, make_reference, free_reference);
 }

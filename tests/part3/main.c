@@ -2,6 +2,7 @@
 int sampling_tests(void);
 int direct_tests(void);
 int cornell_tests(void);
+int delta_light_tests(void);
 
 int main(void)
 {
@@ -9,5 +10,6 @@ int main(void)
     failed += sampling_tests();
     failed += direct_tests();
     failed += cornell_tests();
+    failed += delta_light_tests();
     return failed != 0;
 }
