@@ -78,7 +78,8 @@ static void case_text(const grade_case_result *c, char *out, size_t size)
                         ok ? "within" : "more than", GRADE_WORK_FACTOR);
         if (!ok && (size_t)len < size)
             snprintf(out + len, size - len, " The image is right, but the tree does not save work: check the SAH "
-                                            "split, the leaf size and the nearest-first traversal (task 2.2, 2.3).");
+                     "split, the leaf size, the nearest-first traversal, skipping boxes entered beyond the nearest "
+                     "hit, and stopping a shadow ray at its first hit (tasks 2.2 to 2.4).");
     }
 }
 
