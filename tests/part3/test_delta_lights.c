@@ -3,8 +3,8 @@
  * and its contribution must not change with -l. A point light and a directional light over a
  * diffuse floor: rho / pi * E, with E = I cos / d^2 for the point and E = irradiance * cos for the
  * directional light, exact (no randomness reaches a delta light's sample), at -l 1, 4 and 16.
- * Caught: a delta light divided by the light-sample count, or summed over it without dividing
- * (course/mutants/part3-delta-light-divided-by-light-samples.patch). No statistics: no alpha. */
+ * Caught: a delta light divided by the light-sample count, or summed over it without dividing.
+ * No statistics: no alpha. */
 #include <stdio.h>
 #include <string.h>
 #include "../common/test.h"
