@@ -1,7 +1,8 @@
 # Instructor-only targets: the release and its proof, the autograder bundle and its end-to-end test,
 # references (locally or on Slurm), mutants and calibration. The student release leaves course/ out,
 # and the Makefile includes this fragment only where it exists.
-.PHONY: release release-check test-autograder references test-slurm mutants trace-mutants grade-mutants calibrate test-judge test-portable test-grade-local
+.PHONY: release release-check test-autograder references test-slurm mutants trace-mutants grade-mutants calibrate test-judge \
+        test-portable test-grade-local calibrate-alternatives calibrate-grader
 
 COURSE_TOOL_OBJ := $(addprefix $(BUILD)/framework/,image.o file.o status.o) $(BUILD)/third_party/lodepng/lodepng.o
 
@@ -71,8 +72,19 @@ trace-mutants: all $(BIN)/strip_solutions $(BIN)/grade  ## each --trace-pixel ma
 grade-mutants: $(BIN)/grade $(BIN)/pathtracer  ## grade each catalogued bug: it must lose points on its own part only
 	$(Q)sh course/mutants/grade.sh
 
-# ---- calibration: each suite's false-failure rate over fresh seeds ------------------------------
+# ---- calibration: each suite's false-failure rate over fresh seeds, and the grader's ------------
 N ?= 200
+ALT_SEEDS ?= 3
+GRADE_RUNS ?= 200
 CALIBRATE_SUITES ?= $(filter-out course,$(SUITES))
-calibrate: $(addprefix $(BIN)/test-,$(CALIBRATE_SUITES)) $(BIN)/pathtracer  ## each suite's false-failure rate over N=200 fresh seeds, beside its alpha
+calibrate: $(addprefix $(BIN)/test-,$(CALIBRATE_SUITES)) $(BIN)/pathtracer $(BIN)/grade  ## suites' false-failure rates (N=200 seeds), then every correct alternative graded (ALT_SEEDS=3)
 	$(Q)BIN=$(BIN) course/calibrate $(N) $(CALIBRATE_SUITES)
+	$(Q)ALT_SEEDS=$(ALT_SEEDS) sh course/alternatives/grade.sh
+
+# Slow (one graded submission per alternative and seed): each must get full marks every time.
+calibrate-alternatives: $(BIN)/grade $(BIN)/pathtracer  ## grade every correct alternative in course/alternatives at ALT_SEEDS=3 fresh seeds
+	$(Q)ALT_SEEDS=$(ALT_SEEDS) sh course/alternatives/grade.sh
+
+# Slow (grading/CALIBRATION.md has the figures and their cost): the solution's false failures per case.
+calibrate-grader: $(BIN)/grade $(BIN)/pathtracer  ## grade the solution GRADE_RUNS=200 times per case at fresh seeds (PARTS=3, CASES=a,b)
+	$(Q)$(BIN)/grade --calibrate $(GRADE_RUNS) --out build/calibrate-grader $(if $(PARTS),--parts $(PARTS)) $(if $(CASES),--cases $(CASES))

@@ -24,6 +24,8 @@
 #define GRADE_NUM_PARTS 5
 #define GRADE_WORK_FACTOR 3.0     /* a BVH may do up to 3x the course's work per camera ray */
 #define GRADE_SPP_TOLERANCE 0.05  /* an adaptive render's mean samples per pixel: the course's +-5% */
+#define GRADE_NOISE_FACTOR 1.15   /* noise_check cases: per-sample variance at most 1.15x the course's
+                                     (grading/README.md: measured on the solution and the alternatives) */
 
 /* ---- cases (grading/cases.json) ------------------------------------------------------------ */
 
@@ -43,6 +45,9 @@ typedef struct {
     bool work_per_ray;                  /* also judge BVH node visits per ray against the solution's */
     bool known_variance;                /* "statistic": "known_variance" (verdict.h), else the paired t */
     bool grazing;                       /* "grazing": lit at grazing angles, so dark means self-shadowing */
+    bool noise_check;                   /* also judge the per-sample variance against the reference's */
+    bool rounding;                      /* "statistic": "rounding": a deterministic case, compared up to
+                                           VERDICT_ROUNDING_TOLERANCE with VERDICT_TIE_PIXELS ties */
     char shows[160];                    /* what the case makes visible, for the report */
 } grade_case;
 
@@ -86,6 +91,7 @@ typedef struct {
     verdict v;                 /* the image verdict (when ran) */
     double spp, course_spp;    /* adaptive cases: mean samples per pixel, the candidate's and the course's */
     double work, course_work;  /* work_per_ray cases: node visits + primitive tests per camera ray */
+    double noise;              /* noise_check cases: per-sample variance over the course's (0: not judged) */
     double score;
     char images[3][320];       /* candidate, reference, z-map PNGs, relative to the report folder */
     /* A failing case: the pixels that differ most from the reference, one line each with the

@@ -27,7 +27,7 @@ typedef struct { const char *name; char type; } member;
 static const member case_members[] = {
     {"name", 's'}, {"scene", 's'}, {"flags", 'a'}, {"resolution", 'a'}, {"samples", 'i'}, {"reference_samples", 'i'},
     {"reference_flags", 'a'}, {"points", 'n'}, {"visibility", 's'}, {"shows", 's'}, {"block_side", 'i'},
-    {"work_per_ray", 'b'}, {"statistic", 's'}, {"grazing", 'b'}, {NULL, 0}};
+    {"work_per_ray", 'b'}, {"statistic", 's'}, {"grazing", 'b'}, {"noise_check", 'b'}, {NULL, 0}};
 static const member part_members[] = {{"part", 'i'}, {"unit_points", 'n'}, {"unit_tests", 'i'}, {"cases", 'a'}, {NULL, 0}};
 static const member root_members[] = {{"about", 's'}, {"family_alpha", 'n'}, {"parts", 'a'}, {NULL, 0}};
 
@@ -94,13 +94,20 @@ static pl_status read_case(const char *path, int part, json_t *j, grade_case *c,
     c->points = json_number_value(json_object_get(j, "points"));
     c->block_side = (int)json_integer_value(json_object_get(j, "block_side"));
     c->work_per_ray = json_is_true(json_object_get(j, "work_per_ray"));
+    c->noise_check = json_is_true(json_object_get(j, "noise_check"));
     const char *statistic = json_string_value(json_object_get(j, "statistic"));
     c->known_variance = statistic && !strcmp(statistic, "known_variance");
     c->grazing = json_is_true(json_object_get(j, "grazing"));
+    c->rounding = statistic && !strcmp(statistic, "rounding");
 
-    if (statistic && !c->known_variance && strcmp(statistic, "paired_t"))
-        return pl_fail(diag, PL_ERR_PARSE, "%s: case %s: statistic '%.40s': expected paired_t or known_variance",
-                       path, c->name, statistic);
+    if (statistic && !c->known_variance && !c->rounding && strcmp(statistic, "paired_t"))
+        return pl_fail(diag, PL_ERR_PARSE, "%s: case %s: statistic '%.40s': expected paired_t, known_variance "
+                       "or rounding", path, c->name, statistic);
+    /* Only a render with no randomness in it can be compared up to rounding. */
+    if (c->rounding && (json_integer_value(json_object_get(j, "samples")) != 1 ||
+                        json_integer_value(json_object_get(j, "reference_samples")) != 1))
+        return pl_fail(diag, PL_ERR_PARSE, "%s: case %s: statistic rounding needs samples 1 and "
+                       "reference_samples 1 (a deterministic render)", path, c->name);
 
     const char *shows = json_string_value(json_object_get(j, "shows"));
     snprintf(c->shows, sizeof c->shows, "%s", shows ? shows : "");

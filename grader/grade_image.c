@@ -286,18 +286,23 @@ static void judge(const grade_env *env, const grade_spec *spec, int part, const 
                   const image *refvar, const film *f, const output_film_counts *counts, grade_case_result *c)
 {
     const grade_case *k = c->spec;
-    image cand = {0};
+    image cand = {0}, candvar = {0};
     long bad;
     double cand_n;
     pl_diag diag = pl_diag_default();
-    if (film_inputs(f, &cand, NULL, &bad, &cand_n, &diag) != PL_OK) {
+    if (film_inputs(f, &cand, &candvar, &bad, &cand_n, &diag) != PL_OK) {
         snprintf(c->reason, sizeof c->reason, "%s", diag.error);
+        image_free(&cand);
+        image_free(&candvar);
         return;
     }
-    verdict_image vc = {cand.width, cand.height, (const float *)cand.pixels, NULL};
+    /* The candidate's own variance too: where the reference's samples never varied, coverage is a
+     * Bernoulli event it did not see (verdict.h). */
+    verdict_image vc = {cand.width, cand.height, (const float *)cand.pixels, (const float *)candvar.pixels};
     verdict_image vr = {refimg->width, refimg->height, (const float *)refimg->pixels, (const float *)refvar->pixels};
     verdict_params vp = verdict_params_default(k->samples);
     vp.known_variance = k->known_variance;
+    vp.deterministic = k->rounding;
     vp.grazing = k->grazing;
     vp.reference_spp = k->reference_samples;
     if (k->block_side > 0) {
@@ -308,12 +313,18 @@ static void judge(const grade_env *env, const grade_spec *spec, int part, const 
     if (verdict_compute(&vc, &vr, &vp, &c->v, &diag) != PL_OK) snprintf(c->reason, sizeof c->reason, "%s", diag.error);
     else {
         c->ran = true;
-        c->pass = figures_ok(ref, k, cand_n, counts, c) && c->v.pass;
+        bool figures = figures_ok(ref, k, cand_n, counts, c);
+        if (k->noise_check) {  /* as noisy as the course's render, not more (verdict_noise_ratio) */
+            c->noise = verdict_noise_ratio(&vc, &vr, k->samples, k->reference_samples);
+            figures = figures && c->noise <= GRADE_NOISE_FACTOR;
+        }
+        c->pass = figures && c->v.pass;
         c->score = c->pass ? k->points : 0.0;
         if (!c->pass) point_at_pixels(env, k, &cand, refimg, c);
         write_pictures(env, part, c, &cand, refimg);
     }
     image_free(&cand);
+    image_free(&candvar);
 }
 
 void grade_image_case(const grade_env *env, const grade_spec *spec, const char *tree, int part, grade_case_result *c)

@@ -1,12 +1,13 @@
 /* Grader machinery: not part of any assignment.
  * bin/grade [--submission DIR] [--public] [--out DIR] [--seed N] [--threads N] [--parts 1,3]
- * bin/grade --calibrate N [--parts ...]
+ * bin/grade --calibrate N [--parts ...] [--cases name,name]
  * bin/grade --prebuild   build the course's objects ahead of time (setup.sh), for every grading to reuse
  *   --submission DIR  grade DIR/parts/ part by part, each among the solution's other parts (autograder);
  *                     without it, grade this tree as it is, public cases only (a student's make grade)
  *   --out DIR         where results.json, the report (DIR/report/index.html) and scratch go (out/grade)
  *   --calibrate N     render every case of this tree N times with fresh seeds and print, per case, how
  *                     often it failed beside the alpha it claims, and the deciles of its p-values
+ *   --cases A,B       with --calibrate: only the cases of these names (a slow case's 2,000 runs alone)
  * Exit status: 0 when every graded part got full marks, 1 otherwise, 2 for bad arguments or a course's
  * file that is not usable (grading/cases.json, a reference: grade_refs.h), before anyone is graded, 3
  * when the grader's own set-up on this machine is wrong (the course's problem: no part was graded). */
@@ -17,6 +18,7 @@
 #include "grade_refs.h"
 #include "grade_tree.h"
 #include <errno.h>
+#include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -28,7 +30,7 @@
 static int usage(const char *msg)
 {
     fprintf(stderr, "grade: %s\nusage: grade [--submission DIR] [--public] [--out DIR] [--seed N] [--threads N] [--prebuild] "
-                    "[--parts 1,2,...]\n", msg);
+                    "[--parts 1,2,...]\n       grade --calibrate N [--parts 1,2,...] [--cases name,...]\n", msg);
     return 2;
 }
 
@@ -44,7 +46,17 @@ static uint64_t fresh_seed(void)
 }
 
 /* --calibrate: the grader's own false-failure rate, measured on this tree (the solution). */
-static int calibrate(const grade_env *base, const grade_spec *spec, const char *parts, int runs)
+/* Whether name is one of the comma-separated names (NULL: every name). */
+static bool name_listed(const char *names, const char *name)
+{
+    if (!names) return true;
+    size_t len = strlen(name);
+    for (const char *p = names; (p = strstr(p, name)) != NULL; p += len)
+        if ((p == names || p[-1] == ',') && (p[len] == ',' || p[len] == '\0')) return true;
+    return false;
+}
+
+static int calibrate(const grade_env *base, const grade_spec *spec, const char *parts, const char *cases, int runs)
 {
     int worst = 0;
     printf("%-28s %6s %9s %8s  p-value deciles\n", "case", "runs", "failures", "alpha");
@@ -57,7 +69,9 @@ static int calibrate(const grade_env *base, const grade_spec *spec, const char *
             return 1;
         }
         for (int i = 0; i < p->num_cases; i++) {
+            if (!name_listed(cases, p->cases[i].name)) continue;
             int failures = 0, decile[10] = {0};
+            double noise_min = INFINITY, noise_max = 0.0;  /* noise_check cases: the range over the runs */
             for (int run = 0; run < runs; run++) {
                 grade_env env = *base;
                 env.seed = fresh_seed();
@@ -70,11 +84,15 @@ static int calibrate(const grade_env *base, const grade_spec *spec, const char *
                     return 1;
                 }
                 failures += !c.pass;
+                noise_max = c.noise > noise_max ? c.noise : noise_max;
+                noise_min = c.noise < noise_min ? c.noise : noise_min;
                 decile[c.v.p_value >= 1.0 ? 9 : (int)(c.v.p_value * 10)]++;
                 verdict_free(&c.v);
             }
             printf("part%d/%-22s %6d %9d %8.0e ", p->part, p->cases[i].name, runs, failures, spec->family_alpha);
             for (int d = 0; d < 10; d++) printf(" %3d", decile[d]);
+            if (p->cases[i].noise_check) printf("   noise ratio %.3f to %.3f (limit %.2f)", noise_min, noise_max,
+                                                   GRADE_NOISE_FACTOR);
             printf("\n");
             fflush(stdout);
             worst = failures > worst ? failures : worst;
@@ -201,7 +219,7 @@ static void free_verdicts(grade_result *result)
 
 /* The command line (see the top of this file). */
 typedef struct {
-    const char *submission, *out, *parts;
+    const char *submission, *out, *parts, *cases;
     bool public_only, seed_given, prebuild;
     uint64_t seed;
     int threads, calibrate_runs;
@@ -222,6 +240,7 @@ static const char *parse_args(int argc, char **argv, grade_args *a)
         else if (!strcmp(f, "--seed")) { a->seed = strtoull(argv[++i], NULL, 10); a->seed_given = true; }
         else if (!strcmp(f, "--threads")) a->threads = atoi(argv[++i]);
         else if (!strcmp(f, "--calibrate")) a->calibrate_runs = atoi(argv[++i]);
+        else if (!strcmp(f, "--cases")) a->cases = argv[++i];
         else return "unknown option";
     }
     if (a->threads < 1 || a->threads > 64) return "--threads: expected 1..64";
@@ -284,7 +303,7 @@ int main(int argc, char **argv)
                         "your official grade comes from the autograder\n");
     if (result.unprotected[0]) fprintf(stderr, "grade: unavailable protections: %s\n", result.unprotected);
     if (a.calibrate_runs > 0) {
-        int code = calibrate(&env, &spec, parts, a.calibrate_runs);
+        int code = calibrate(&env, &spec, parts, a.cases, a.calibrate_runs);
         grade_tree_remove(sandbox_dir);
         grade_spec_free(&spec);
         return code;

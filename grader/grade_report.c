@@ -11,6 +11,23 @@
 
 static const char *const channel_names[3] = {"red", "green", "blue"};
 
+/* A deterministic case's verdict: how many pixels are beyond the rounding tolerance, against the
+ * ties allowed, and the largest difference. A pass within the tolerance is never called a failure. */
+static int rounding_text(const verdict *v, char *out, size_t size)
+{
+    int len = snprintf(out, size, "%s: %ld pixels differ by more than the rounding tolerance %.1e (at most %ld may: "
+                       "rays that graze an edge go either way); the largest difference is %.3g",
+                       v->pass ? "**matches the reference** up to rounding" : "**differs from the reference**",
+                       v->beyond_tolerance, v->tolerance, v->tie_pixels, v->max_diff);
+    if (len >= 0 && (size_t)len < size && v->max_x >= 0)
+        len += snprintf(out + len, size - len, ", in the %s channel at x=%d y=%d (from the bottom-left)",
+                        channel_names[v->max_channel], v->max_x, v->max_y);
+    if (len >= 0 && (size_t)len < size)
+        len += snprintf(out + len, size - len, ". relMSE %.4f, mean ratio red %.3f green %.3f blue %.3f.", v->rel_mse,
+                        v->ratio[0], v->ratio[1], v->ratio[2]);
+    return len;
+}
+
 /* One case's verdict in words (Markdown): the same text in results.json and the HTML report. */
 static void case_text(const grade_case_result *c, char *out, size_t size)
 {
@@ -19,19 +36,20 @@ static void case_text(const grade_case_result *c, char *out, size_t size)
         snprintf(out, size, "**did not run**: %s", c->reason);
         return;
     }
-    int len = snprintf(out, size, "%s. p-value %.3g (the case fails below %.0e), relMSE %.4f, mean ratio "
-                       "red %.3f green %.3f blue %.3f.",
-                       v->pass ? "**matches the reference**" : "**differs from the reference**", v->p_value, v->alpha,
-                       v->rel_mse, v->ratio[0], v->ratio[1], v->ratio[2]);
+    int len = v->deterministic ? rounding_text(v, out, size)
+                               : snprintf(out, size, "%s. p-value %.3g (the case fails below %.0e), relMSE %.4f, "
+                                          "mean ratio red %.3f green %.3f blue %.3f.",
+                                          v->pass ? "**matches the reference**" : "**differs from the reference**",
+                                          v->p_value, v->alpha, v->rel_mse, v->ratio[0], v->ratio[1], v->ratio[2]);
     if (len < 0 || (size_t)len >= size) return;
     if (v->bad_pixels)
         len += snprintf(out + len, size - len, " %ld pixels are NaN, infinite or negative; the first at x=%d y=%d "
                         "(from the bottom-left).", v->bad_pixels, v->bad_x, v->bad_y);
-    else if (!v->pass && v->worst_block_x >= 0)
+    else if (!v->pass && !v->deterministic && v->worst_block_x >= 0)  /* rounding_text says where */
         len += snprintf(out + len, size - len, " Most different: the %s channel of block (%d, %d) from the top-left "
                         "(t = %+.1f: %s than the reference).", channel_names[v->worst_channel], v->worst_block_x,
                         v->worst_block_y, v->worst_t, v->worst_t > 0 ? "brighter" : "darker");
-    else if (!v->pass)
+    else if (!v->pass && !v->deterministic)
         len += snprintf(out + len, size - len, " The whole image's %s channel is %s than the reference (t = %+.1f).",
                         channel_names[v->worst_channel], v->worst_t > 0 ? "brighter" : "darker", v->worst_t);
     if (!v->pass && v->hint[0] && (size_t)len < size) len += snprintf(out + len, size - len, " Hint: %s.", v->hint);
@@ -45,6 +63,15 @@ static void case_text(const grade_case_result *c, char *out, size_t size)
                             ? "Pixels stop later than they should: does adaptive_converged ever say yes?"
                             : "Pixels stop earlier than they should: check the confidence test.");
     }
+    if (c->spec->noise_check && len >= 0 && (size_t)len < size) {
+        bool ok = c->noise <= GRADE_NOISE_FACTOR;
+        len += snprintf(out + len, size - len, " Noise per sample: %.3f x the course's (%s %.2fx).", c->noise,
+                        ok ? "within" : "more than", GRADE_NOISE_FACTOR);
+        if (!ok && (size_t)len < size)
+            len += snprintf(out + len, size - len, " The image is right on average but noisier than it should be: "
+                            "does every one of the -l light samples draw its own random numbers, and are they "
+                            "spent where the handout says?");
+    }
     if (c->course_work > 0 && len >= 0 && (size_t)len < size) {
         bool ok = c->work >= 0 && c->work <= GRADE_WORK_FACTOR * c->course_work;
         len += snprintf(out + len, size - len, " Work per camera ray (node visits + primitive tests, counted by "
@@ -52,7 +79,8 @@ static void case_text(const grade_case_result *c, char *out, size_t size)
                         ok ? "within" : "more than", GRADE_WORK_FACTOR);
         if (!ok && (size_t)len < size)
             snprintf(out + len, size - len, " The image is right, but the tree does not save work: check the SAH "
-                                            "split, the leaf size and the nearest-first traversal (task 2.2, 2.3).");
+                     "split, the leaf size, the nearest-first traversal, skipping boxes entered beyond the nearest "
+                     "hit, and stopping a shadow ray at its first hit (tasks 2.2 to 2.4).");
     }
 }
 

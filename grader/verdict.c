@@ -8,7 +8,8 @@
 
 verdict_params verdict_params_default(int candidate_spp)
 {
-    verdict_params p = {1e-3, candidate_spp > 0 ? candidate_spp : 1, 64, 8192, false, 0, false};
+    verdict_params p = {1e-3, candidate_spp > 0 ? candidate_spp : 1, 64, 8192, false, 0, false,
+                        false, VERDICT_ROUNDING_TOLERANCE, VERDICT_TIE_PIXELS};
     return p;
 }
 
@@ -33,13 +34,11 @@ static void diff_add(diff_acc *a, double d, double ref, double var)
     a->var += var;
 }
 
-/* Known variance: z = sum(d) / sqrt(sum of the predicted variances of d). No predicted variance at
- * all (every pixel of the block the same in every sample) asks for agreement up to rounding. */
+/* Known variance: z = sum(d) / sqrt(sum of the predicted variances of d). Every pixel's variance
+ * includes its rounding (pixel_variance), so no block has none, and none gets p = 0 from it. */
 static double known_p(const diff_acc *a, double *t)
 {
-    *t = 0.0;
-    if (a->var <= 0.0) return fabs(a->s1) <= 1e-5 * (1.0 + fabs(a->ref)) ? 1.0 : 0.0;
-    *t = a->s1 / sqrt(a->var);
+    *t = a->var > 0.0 ? a->s1 / sqrt(a->var) : 0.0;
     return erfc(fabs(*t) / sqrt(2.0));
 }
 
@@ -107,6 +106,120 @@ static void find_hint(verdict *v, const verdict_image *cand, const verdict_image
     }
 }
 
+/* The predicted variance of one difference d = candidate - reference, known_variance only:
+ * Var(candidate) + Var(reference), the first from the reference's per-sample variance (its variance
+ * of the mean times its samples) over the candidate's samples. Where the reference's samples all
+ * agreed, coverage is a Bernoulli event it did not see: the candidate's own variance of the mean
+ * stands in (verdict.h). Plus the rounding of two correct implementations (VERDICT_ROUNDING_SD). */
+static double pixel_variance(const verdict_params *p, double ref_var, double cand_var)
+{
+    double per_sample = ref_var * p->reference_spp;
+    double var = per_sample <= VERDICT_NO_SPREAD * VERDICT_NO_SPREAD
+                     ? fmax(cand_var, 0.0) + ref_var
+                     : ref_var * ((double)p->reference_spp / p->candidate_spp + 1.0);
+    return var + VERDICT_ROUNDING_SD * VERDICT_ROUNDING_SD;
+}
+
+/* A deterministic pixel: its largest difference, and each block's largest signed one (in units of
+ * the tolerance, for the z-map). Returns whether some channel is beyond the tolerance. */
+static bool compare_pixel(verdict *v, const float *c, const float *r, int x, int y, long block)
+{
+    bool beyond = false;
+    for (int ch = 0; ch < 3; ch++) {
+        double d = (double)c[ch] - (double)r[ch], ad = fabs(d);
+        if (ad > v->max_diff) {
+            v->max_diff = ad;
+            v->max_x = x;
+            v->max_y = y;
+            v->max_channel = ch;
+        }
+        beyond = beyond || ad > v->tolerance;
+        float *t = &v->t[block * 3 + ch];
+        if (fabs(d / v->tolerance) > fabsf(*t)) *t = (float)(d / v->tolerance);
+    }
+    return beyond;
+}
+
+/* A bad candidate pixel (NaN, Inf, negative): counted, and the first one located. */
+static bool bad_pixel(verdict *v, const float *c, int x, int y)
+{
+    if (isfinite(c[0]) && isfinite(c[1]) && isfinite(c[2]) && c[0] >= 0 && c[1] >= 0 && c[2] >= 0) return false;
+    if (v->bad_pixels++ == 0) {
+        v->bad_x = x;
+        v->bad_y = y;
+    }
+    return true;
+}
+
+/* One pass over the pixels: bad values, relMSE, the ratio, and either the differences per block and
+ * over the image (acc: blocks x 3, then the 3 whole-image channels) or the deterministic comparison. */
+static void scan_pixels(verdict *v, const verdict_image *cand, const verdict_image *ref, const verdict_params *p,
+                        diff_acc *acc)
+{
+    int w = ref->width, h = ref->height;
+    diff_acc *whole = acc + (size_t)v->blocks_x * v->blocks_y * 3;
+    double cand_total[3] = {0, 0, 0}, ref_total[3] = {0, 0, 0}, se = 0.0;
+    for (int y = 0; y < h; y++) {
+        int by = (int)((long)y * v->blocks_y / h);
+        for (int x = 0; x < w; x++) {
+            long i = (long)y * w + x, block = (long)by * v->blocks_x + (int)((long)x * v->blocks_x / w);
+            const float *c = cand->rgb + 3 * i, *r = ref->rgb + 3 * i;
+            if (bad_pixel(v, c, x, h - 1 - y)) continue;
+            if (p->deterministic) v->beyond_tolerance += compare_pixel(v, c, r, x, h - 1 - y, block);
+            for (int ch = 0; ch < 3; ch++) {
+                double d = (double)c[ch] - (double)r[ch];
+                double var = p->known_variance && ref->var
+                                 ? pixel_variance(p, ref->var[3 * i + ch], cand->var ? cand->var[3 * i + ch] : 0.0)
+                                 : 0.0;
+                diff_add(&acc[block * 3 + ch], d, r[ch], var);
+                diff_add(&whole[ch], d, r[ch], var);
+                cand_total[ch] += c[ch];
+                ref_total[ch] += r[ch];
+                se += d * d / ((double)r[ch] * r[ch] + 0.01);
+            }
+        }
+    }
+    v->rel_mse = se / (3.0 * (double)w * h);
+    for (int ch = 0; ch < 3; ch++) v->ratio[ch] = ref_total[ch] > 0 ? cand_total[ch] / ref_total[ch] : NAN;
+}
+
+/* Every test, the smallest p-value, and Sidak over all of them. */
+static void run_tests(verdict *v, const verdict_params *p, bool known, const diff_acc *acc)
+{
+    long nblocks = (long)v->blocks_x * v->blocks_y;
+    v->num_tests = (int)(nblocks * 3 + 3);
+    double p_min = 1.0;
+    v->worst_block_x = v->worst_block_y = -1;
+    for (long k = 0; k < nblocks * 3 + 3; k++) {
+        double t, pk = known ? known_p(&acc[k], &t) : paired_p(&acc[k], &t);
+        if (k < nblocks * 3) v->t[k] = (float)t;
+        if (pk < p_min || k == 0) {
+            p_min = pk;
+            v->worst_t = t;
+            v->worst_channel = (int)(k % 3);
+            bool block = k < nblocks * 3;
+            v->worst_block_x = block ? (int)(k / 3 % v->blocks_x) : -1;
+            v->worst_block_y = block ? (int)(k / 3 / v->blocks_x) : -1;
+        }
+    }
+    v->p_value = -expm1((double)v->num_tests * log1p(-fmin(p_min, 1.0)));
+    v->pass = v->bad_pixels == 0 && v->p_value >= p->family_alpha;
+}
+
+/* The deterministic verdict: at most tie_pixels pixels beyond the tolerance (verdict.h); the worst
+ * block is the one holding the largest difference. */
+static void judge_rounding(verdict *v, int width, int height)
+{
+    v->pass = v->bad_pixels == 0 && v->beyond_tolerance <= v->tie_pixels;
+    v->p_value = v->pass ? 1.0 : 0.0;
+    v->worst_channel = v->max_channel;
+    v->worst_block_x = v->worst_block_y = -1;
+    if (v->max_x < 0) return;  /* no difference at all */
+    v->worst_block_x = (int)((long)v->max_x * v->blocks_x / width);
+    v->worst_block_y = (int)((long)(height - 1 - v->max_y) * v->blocks_y / height);
+    v->worst_t = v->t[((long)v->worst_block_y * v->blocks_x + v->worst_block_x) * 3 + v->max_channel];
+}
+
 /* Self-shadowing: on a case lit at grazing angles, a failure on the dark side, darker overall in
  * every lit channel (acne steals light whatever its colour), that no known factor explains. */
 static void self_shadow_hint(verdict *v, const verdict_params *p)
@@ -125,10 +238,12 @@ pl_status verdict_compute(const verdict_image *cand, const verdict_image *ref, c
     if (cand->width != ref->width || cand->height != ref->height || cand->width <= 0 || cand->height <= 0)
         return pl_fail(diag, PL_ERR_INVALID, "the candidate is %dx%d, the reference %dx%d: expected the same size",
                        cand->width, cand->height, ref->width, ref->height);
+    if (p->deterministic && !(p->tolerance > 0.0 && p->tie_pixels >= 0))
+        return pl_fail(diag, PL_ERR_INVALID, "a deterministic verdict needs a tolerance > 0 and tie pixels >= 0");
     int w = ref->width, h = ref->height, b = block_side(p);
     out->blocks_x = w / b > 0 ? w / b : 1;
     out->blocks_y = h / b > 0 ? h / b : 1;
-    int nblocks = out->blocks_x * out->blocks_y;
+    long nblocks = (long)out->blocks_x * out->blocks_y;
     out->t = calloc((size_t)nblocks * 3, sizeof *out->t);
     diff_acc *acc = calloc((size_t)nblocks * 3 + 3, sizeof *acc);
     if (!out->t || !acc) {
@@ -136,61 +251,31 @@ pl_status verdict_compute(const verdict_image *cand, const verdict_image *ref, c
         verdict_free(out);
         return pl_fail(diag, PL_ERR_NOMEM, "out of memory comparing %dx%d images", w, h);
     }
-    diff_acc *whole = acc + (size_t)nblocks * 3;
-    double cand_total[3] = {0, 0, 0}, se = 0.0;
-
-    /* One pass over the pixels: bad values, the differences per block and over the image, relMSE. */
-    out->bad_x = out->bad_y = -1;
-    for (int y = 0; y < h; y++) {
-        int by = (int)((long)y * out->blocks_y / h);
-        for (int x = 0; x < w; x++) {
-            int bx = (int)((long)x * out->blocks_x / w);
-            const float *c = cand->rgb + 3 * ((long)y * w + x), *r = ref->rgb + 3 * ((long)y * w + x);
-            if (!(isfinite(c[0]) && isfinite(c[1]) && isfinite(c[2]) && c[0] >= 0 && c[1] >= 0 && c[2] >= 0)) {
-                if (out->bad_pixels++ == 0) {
-                    out->bad_x = x;
-                    out->bad_y = h - 1 - y;
-                }
-                continue;
-            }
-            const float *rv = ref->var ? ref->var + 3 * ((long)y * w + x) : NULL;
-            for (int ch = 0; ch < 3; ch++) {
-                double d = (double)c[ch] - (double)r[ch];
-                /* Var(d) = Var(candidate) + Var(reference), the first from the reference's per-sample
-                 * variance (its variance of the mean times its samples) over the candidate's samples. */
-                double var = rv ? (double)rv[ch] * ((double)p->reference_spp / p->candidate_spp + 1.0) : 0.0;
-                long k = ((long)by * out->blocks_x + bx) * 3 + ch;
-                diff_add(&acc[k], d, r[ch], var);
-                diff_add(&whole[ch], d, r[ch], var);
-                cand_total[ch] += c[ch];
-                se += stats_rel_se(c[ch], r[ch]);
-            }
-        }
-    }
-    out->rel_mse = se / (3.0 * (double)w * h);
-    for (int ch = 0; ch < 3; ch++) out->ratio[ch] = whole[ch].ref > 0 ? cand_total[ch] / whole[ch].ref : NAN;
-
-    /* Every test, the smallest p-value, and Sidak over all of them. */
-    out->num_tests = nblocks * 3 + 3;
-    double p_min = 1.0;
-    out->worst_block_x = out->worst_block_y = -1;
-    for (long k = 0; k < (long)nblocks * 3 + 3; k++) {
-        double t, pk = p->known_variance && ref->var ? known_p(&acc[k], &t) : paired_p(&acc[k], &t);
-        if (k < (long)nblocks * 3) out->t[k] = (float)t;
-        if (pk < p_min || k == 0) {
-            p_min = pk;
-            out->worst_t = t;
-            out->worst_channel = (int)(k % 3);
-            bool block = k < (long)nblocks * 3;
-            out->worst_block_x = block ? (int)(k / 3 % out->blocks_x) : -1;
-            out->worst_block_y = block ? (int)(k / 3 / out->blocks_x) : -1;
-        }
-    }
+    out->bad_x = out->bad_y = out->max_x = out->max_y = -1;
+    out->deterministic = p->deterministic;
+    out->tolerance = p->tolerance;
+    out->tie_pixels = p->tie_pixels;
+    scan_pixels(out, cand, ref, p, acc);
+    if (p->deterministic) judge_rounding(out, w, h);
+    else run_tests(out, p, p->known_variance && ref->var, acc);
     free(acc);
-    out->p_value = -expm1((double)out->num_tests * log1p(-fmin(p_min, 1.0)));
     out->alpha = p->family_alpha;
-    out->pass = out->bad_pixels == 0 && out->p_value >= p->family_alpha;
     find_hint(out, cand, ref);
     self_shadow_hint(out, p);
     return PL_OK;
+}
+
+double verdict_noise_ratio(const verdict_image *cand, const verdict_image *ref, int cand_spp, int ref_spp)
+{
+    if (!cand->var || !ref->var || cand->width != ref->width || cand->height != ref->height) return NAN;
+    double sum = 0.0;
+    long pixels = 0;
+    for (long i = 0; i < (long)ref->width * ref->height; i++) {
+        const float *c = cand->var + 3 * i, *r = ref->var + 3 * i;
+        double rv = ((double)r[0] + r[1] + r[2]) * ref_spp, cv = ((double)c[0] + c[1] + c[2]) * cand_spp;
+        if (!(rv > 0.0)) continue;  /* no noise to compare with */
+        sum += isfinite(cv) ? fmin(cv / rv, VERDICT_NOISE_CAP) : VERDICT_NOISE_CAP;
+        pixels++;
+    }
+    return pixels > 0 ? sum / pixels : NAN;
 }

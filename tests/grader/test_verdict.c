@@ -272,6 +272,212 @@ static void test_verdict__known_variance_passes_jittered_edges_at_its_alpha(void
     free(cand_var);
 }
 
+/* ---- deterministic cases: rounding tolerated, nothing else ------------------------------------- */
+
+/* A normal-shaded picture as a pixel-centre render makes it: a wall facing the camera, a floor
+ * below row FLOOR_Y, and a sphere of radius SPHERE_R pixels. The sphere's normal varies across it;
+ * the picture is moved by (dx, dy) pixels, zoomed about the centre by zoom, and flipped upside down
+ * when flip is set. */
+#define SPHERE_R 30.0
+#define FLOOR_Y 30.0
+
+static void normals_picture(float *out, double dx, double dy, double zoom, bool flip)
+{
+    for (int row = 0; row < H; row++)
+        for (int x = 0; x < W; x++) {
+            int y = flip ? row : H - 1 - row;  /* from the bottom, as the renderer counts */
+            double px = (x + 0.5 - dx - W / 2.0) / zoom + W / 2.0, py = (y + 0.5 - dy - H / 2.0) / zoom + H / 2.0;
+            double sx = (px - 80.0) / SPHERE_R, sy = (py - 64.0) / SPHERE_R, n[3] = {0.0, 0.0, 1.0};
+            if (sx * sx + sy * sy < 1.0) {
+                n[0] = sx;
+                n[1] = sy;
+                n[2] = sqrt(1.0 - sx * sx - sy * sy);
+            } else if (py < FLOOR_Y) {
+                n[1] = 1.0;
+                n[2] = 0.0;
+            }
+            for (int ch = 0; ch < 3; ch++) out[3 * (row * W + x) + ch] = (float)(0.5 * n[ch] + 0.5);
+        }
+}
+
+static verdict judge_rounding_case(const float *cand, const float *ref)
+{
+    verdict_image c = {W, H, cand, NULL}, r = {W, H, ref, NULL};
+    verdict_params p = verdict_params_default(1);
+    p.deterministic = true;
+    p.min_block_pixels = 32 * 32;
+    p.min_block_samples = 0;
+    verdict v;
+    assert_int_equal(verdict_compute(&c, &r, &p, &v, NULL), PL_OK);
+    return v;
+}
+
+/* Another correct implementation: every pixel off by rounding (up to 0.9 of the tolerance, both
+ * signs), and VERDICT_TIE_PIXELS pixels of an edge that went the other way. It passes, and the
+ * verdict says how many pixels were beyond the tolerance. One tie more fails. */
+static void test_verdict__deterministic_tolerates_rounding_and_ties(void **state)
+{
+    (void)state;
+    float *ref = malloc(sizeof(float) * 3 * W * H), *cand = malloc(sizeof(float) * 3 * W * H);
+    assert_true(ref && cand);
+    normals_picture(ref, 0.0, 0.0, 1.0, false);
+    rng g = rng_for_sample(4242, 0, 0);
+    for (int i = 0; i < 3 * W * H; i++)
+        cand[i] = ref[i] + (float)((2.0 * rng_uniform(&g) - 1.0) * 0.9 * VERDICT_ROUNDING_TOLERANCE);
+    for (int k = 0; k < VERDICT_TIE_PIXELS; k++) {  /* ties along the floor's edge */
+        int i = 3 * ((H - 1 - (int)FLOOR_Y) * W + 10 * k);
+        cand[i + 1] = 1.0f;  /* the floor's colour (0.5, 1, 0.5) where the wall's (0.5, 0.5, 1) is */
+        cand[i + 2] = 0.5f;
+    }
+    verdict v = judge_rounding_case(cand, ref);
+    if (!v.pass) fail_msg("rounding and %d ties failed: %ld beyond, largest %g", VERDICT_TIE_PIXELS, v.beyond_tolerance, v.max_diff);
+    assert_true(v.deterministic);
+    assert_int_equal(v.beyond_tolerance, VERDICT_TIE_PIXELS);
+    assert_true(v.max_diff >= 0.49 && v.p_value == 1.0);
+    verdict_free(&v);
+    cand[3 * ((H - 1 - (int)FLOOR_Y) * W + 155) + 2] = 0.5f;  /* one tie too many */
+    v = judge_rounding_case(cand, ref);
+    assert_false(v.pass);
+    assert_int_equal(v.beyond_tolerance, VERDICT_TIE_PIXELS + 1);
+    verdict_free(&v);
+    free(ref);
+    free(cand);
+}
+
+/* Real bugs fail by a wide margin: at least ten times the ties allowed beyond the tolerance, and
+ * a largest difference at least ten times the tolerance. */
+static void test_verdict__deterministic_fails_flips_shifts_scales_and_wrong_normals(void **state)
+{
+    (void)state;
+    static const struct { const char *what; double dx, dy, zoom; bool flip; int channel; float gain; } bugs[] = {
+        {"flipped upside down", 0, 0, 1, true, -1, 1},  {"shifted half a pixel right", 0.5, 0, 1, false, -1, 1},
+        {"shifted one pixel up", 0, 1, 1, false, -1, 1}, {"zoomed by 2%", 0, 0, 1.02, false, -1, 1},
+        {"a normal not normalised (x 1.1)", 0, 0, 1, false, 0, 1.1f}, {"blue channel 2% dark", 0, 0, 1, false, 2, 0.98f},
+    };
+    float *ref = malloc(sizeof(float) * 3 * W * H), *cand = malloc(sizeof(float) * 3 * W * H);
+    assert_true(ref && cand);
+    normals_picture(ref, 0.0, 0.0, 1.0, false);
+    for (size_t k = 0; k < sizeof bugs / sizeof bugs[0]; k++) {
+        normals_picture(cand, bugs[k].dx, bugs[k].dy, bugs[k].zoom, bugs[k].flip);
+        for (int i = 0; bugs[k].channel >= 0 && i < W * H; i++) {  /* scale the component, not the colour */
+            float *c = &cand[3 * i + bugs[k].channel];
+            *c = 0.5f + bugs[k].gain * (*c - 0.5f);
+            if (bugs[k].channel == 2) *c = bugs[k].gain * *c;
+        }
+        verdict v = judge_rounding_case(cand, ref);
+        print_message("%s: %ld pixels beyond the tolerance, largest difference %.3g\n", bugs[k].what,
+                      v.beyond_tolerance, v.max_diff);
+        if (v.pass || v.beyond_tolerance < 10 * VERDICT_TIE_PIXELS || v.max_diff < 10 * VERDICT_ROUNDING_TOLERANCE)
+            fail_msg("%s: not a wide failure (%ld pixels beyond, largest %g)", bugs[k].what, v.beyond_tolerance,
+                     v.max_diff);
+        assert_true(v.p_value == 0.0 && v.max_x >= 0 && v.worst_block_x >= 0);
+        verdict_free(&v);
+    }
+    free(ref);
+    free(cand);
+}
+
+/* ---- statistical cases: coverage the reference never saw --------------------------------------- */
+
+/* Slivers: pixels scattered over a flat image where a sample hits another surface with a tiny
+ * probability (1e-5 to 1e-4), so the reference's 1024 samples almost always all miss it (zero
+ * variance) while a candidate's 16 now and then hit it. Such a pixel must weigh what one Bernoulli
+ * hit weighs, never p = 0: the verdict uses the candidate's own variance where the reference's is
+ * zero. Alpha: the case's 1e-3; at most 3 of RUNS fail (6e-5 at that alpha). Fixed seeds
+ * (base_seed). Without the candidate's variance most renders fail; a coverage 0.05 too high fails. */
+static float sliver_coverage(int x, int y)
+{
+    if ((x + 3 * y) % 7 != 0) return -1.0f;
+    return 1e-5f + 9e-5f * (float)((x * 7 + y * 13) % 17) / 16.0f;
+}
+
+static void render_slivers(float *mean, float *var, int spp, uint64_t seed, float bias)
+{
+    static const float inside[3] = {0.8f, 0.2f, 0.5f}, outside[3] = {0.3f, 0.6f, 0.9f};
+    for (int y = 0; y < H; y++)
+        for (int x = 0; x < W; x++) {
+            float p = sliver_coverage(x, y);
+            int k = 0;
+            rng g = rng_for_sample(seed, (uint64_t)y * W + x, 0);
+            for (int s = 0; p >= 0.0f && s < spp; s++) k += rng_uniform(&g) < p + bias;
+            for (int ch = 0; ch < 3; ch++) {
+                double a = inside[ch], b = outside[ch], f = (double)k / spp;
+                mean[3 * (y * W + x) + ch] = (float)(f * a + (1.0 - f) * b);
+                var[3 * (y * W + x) + ch] = (float)((double)k * (spp - k) / ((double)spp * (spp - 1)) * (a - b) * (a - b) / spp);
+            }
+        }
+}
+
+static void test_verdict__known_variance_models_coverage_the_reference_missed(void **state)
+{
+    (void)state;
+    float *ref = malloc(sizeof(float) * 3 * W * H), *ref_var = malloc(sizeof(float) * 3 * W * H);
+    float *cand = malloc(sizeof(float) * 3 * W * H), *cand_var = malloc(sizeof(float) * 3 * W * H);
+    assert_true(ref && ref_var && cand && cand_var);
+    render_slivers(ref, ref_var, EDGE_REF_SPP, 778, 0.0f);
+    verdict_image r = {W, H, ref, ref_var};
+    verdict_params p = verdict_params_default(SPP);
+    p.known_variance = true;
+    p.reference_spp = EDGE_REF_SPP;
+    int failures = 0, unseen = 0;
+    for (int run = 0; run < RUNS; run++) {
+        render_slivers(cand, cand_var, SPP, base_seed() + 5000 + (uint64_t)run, 0.0f);
+        for (int i = 0; i < W * H; i++) unseen += ref_var[3 * i] == 0.0f && cand[3 * i] != ref[3 * i];
+        verdict_image c = {W, H, cand, cand_var};
+        verdict v;
+        assert_int_equal(verdict_compute(&c, &r, &p, &v, NULL), PL_OK);
+        failures += !v.pass;
+        verdict_free(&v);
+    }
+    print_message("slivers: %d of %d correct renders failed; %d candidate pixels hit what the reference never "
+                  "saw\n", failures, RUNS, unseen);
+    assert_true(unseen > RUNS);  /* the test exercises what it claims to: several per render */
+    assert_in_range(failures, 0, 3);
+    render_slivers(cand, cand_var, SPP, base_seed() + 9000, 0.05f);
+    verdict_image c = {W, H, cand, cand_var};
+    verdict v;
+    assert_int_equal(verdict_compute(&c, &r, &p, &v, NULL), PL_OK);
+    if (v.pass) fail_msg("slivers 0.05 more covered passed (p = %g)", v.p_value);
+    verdict_free(&v);
+    free(ref);
+    free(ref_var);
+    free(cand);
+    free(cand_var);
+}
+
+/* ---- the noise check: as noisy as the course's render, not more --------------------------------- */
+
+/* Per-sample variances: the reference's v everywhere; a candidate equal to it but for one firefly
+ * pixel (a thousand times) has a ratio near 1, one whose third of pixels is 4x as noisy (a light
+ * sample reused for 4) well above GRADE's 1.15. */
+static void test_verdict__noise_ratio_sees_extra_noise_not_one_firefly(void **state)
+{
+    (void)state;
+    float *ref = malloc(sizeof(float) * 3 * W * H), *ref_var = malloc(sizeof(float) * 3 * W * H);
+    float *cand_var = malloc(sizeof(float) * 3 * W * H);
+    assert_true(ref && ref_var && cand_var);
+    for (int i = 0; i < 3 * W * H; i++) {
+        ref[i] = 0.5f;
+        ref_var[i] = 0.04f / 1024.0f;  /* per-sample 0.04 at 1024 samples */
+        cand_var[i] = 0.04f / 16.0f;   /* the same per sample at 16 */
+    }
+    verdict_image c = {W, H, ref, cand_var}, r = {W, H, ref, ref_var};
+    assert_float_near(1.0, verdict_noise_ratio(&c, &r, 16, 1024), 1e-6);
+    cand_var[3 * 77] = cand_var[3 * 77 + 1] = 1000.0f * 0.04f / 16.0f;
+    double one_firefly = verdict_noise_ratio(&c, &r, 16, 1024);
+    for (int i = 0; i < 3 * W * H; i++)
+        if (i / 3 % 3 == 0) cand_var[i] *= 4.0f;
+    double reused = verdict_noise_ratio(&c, &r, 16, 1024);
+    print_message("noise ratio: one firefly %.4f, a third of the pixels 4x as noisy %.3f\n", one_firefly, reused);
+    assert_true(one_firefly < 1.001);
+    assert_true(reused > 1.9);
+    verdict_image no_var = {W, H, ref, NULL};
+    assert_true(isnan(verdict_noise_ratio(&no_var, &r, 16, 1024)));
+    free(ref);
+    free(ref_var);
+    free(cand_var);
+}
+
 int verdict_tests(void)
 {
     const struct CMUnitTest tests[] = {
@@ -282,6 +488,10 @@ int verdict_tests(void)
         cmocka_unit_test(test_verdict__black_where_lit_and_bad_pixels),
         cmocka_unit_test(test_verdict__identical_deterministic_images_pass),
         cmocka_unit_test(test_verdict__known_variance_passes_jittered_edges_at_its_alpha),
+        cmocka_unit_test(test_verdict__deterministic_tolerates_rounding_and_ties),
+        cmocka_unit_test(test_verdict__deterministic_fails_flips_shifts_scales_and_wrong_normals),
+        cmocka_unit_test(test_verdict__known_variance_models_coverage_the_reference_missed),
+        cmocka_unit_test(test_verdict__noise_ratio_sees_extra_noise_not_one_firefly),
     };
     return cmocka_run_group_tests_name("verdict", tests, make_reference, free_reference);
 }
