@@ -7,6 +7,7 @@
 #include "../framework/clock.h"
 #include "grade.h"
 #include "grade_suite.h"
+#include "sandbox.h"
 #include <errno.h>
 #include <fcntl.h>
 #include <signal.h>
@@ -85,6 +86,8 @@ static pid_t start_subject(const char *tree, int n, const char *name, const char
 {
     pid_t helper = fork();
     if (helper != 0) return helper;
+    /* The subject's orphans (a setsid grandchild) come to this helper, whose grade_run kills them. */
+    sandbox_adopt_orphans();
     char bin[4200], log[4200], filter[200];
     snprintf(bin, sizeof bin, "%s/bin/subject-part%d", tree, n);
     snprintf(log, sizeof log, "%s/subject-%d.log", dir, k);

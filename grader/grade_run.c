@@ -268,9 +268,11 @@ grade_run_result grade_run_piped(char *const argv[], const grade_run_opts *o, in
     fcntl(fds[0], F_SETFL, O_NONBLOCK);
     if (cap[0] >= 0) fcntl(cap[0], F_SETFL, O_NONBLOCK);
     int status = pid > 0 ? watch(pid, o, fds[0], log_fd, cap[0], &r) : 0;
-    /* Nothing outlives its stage: its group is killed above, the orphans the grader adopted here (not
-     * every process of the sandbox's user: two graders may share a machine, as test-autograder's do). */
-    sandbox_kill_orphans();
+    /* Nothing of student code outlives its stage: its group is killed above, the orphans the grader
+     * adopted here (not every process of the sandbox's user: two graders may share a machine, as
+     * test-autograder's do). Only after an untrusted child: the course's own children may run side
+     * by side (the reference maker's threads, the judge beside its subject), and this would kill them. */
+    if (o->untrusted) sandbox_kill_orphans();
     close(fds[0]);
     if (cap[0] >= 0) close(cap[0]);
     close(log_fd);
