@@ -18,7 +18,7 @@ FUZZ_TARGETS := scene film json suite
 FUZZ_TARGET  ?= $(FUZZ_TARGETS)
 FUZZ_BUILD   := build/fuzz
 FUZZ_FLAGS   := -fsanitize=fuzzer-no-link,address,undefined -fno-sanitize-recover=undefined -O1 -g
-FUZZ_LIB_SRC := $(FRAMEWORK_SRC) $(PARTS_SRC) $(THIRD_SRC) $(filter-out grader/grade_main.c,$(wildcard grader/*.c))
+FUZZ_LIB_SRC := $(FRAMEWORK_SRC) $(PARTS_SRC) $(THIRD_SRC) $(GRADER_SRC)  # grader.mk: the library, no main
 FUZZ_LIB_OBJ := $(patsubst %.c,$(FUZZ_BUILD)/%.o,$(FUZZ_LIB_SRC))
 FUZZ_LIMITS  := -malloc_limit_mb=1024 -rss_limit_mb=2048 -timeout=10
 # Per target: its options and its seed folders (built by fuzz-seeds).
@@ -43,7 +43,7 @@ $(FUZZ_BUILD)/%.o: %.c $(BUILD)/gen/version.h
 bin/fuzz/fuzz_%: $(FUZZ_BUILD)/fuzz/fuzz_%.o $(FUZZ_LIB_OBJ)
 	$(say) LD $@
 	@mkdir -p $(dir $@)
-	$(Q)$(FUZZ_CC) -fsanitize=fuzzer,address,undefined -o $@ $^ $(LDLIBS)
+	$(Q)$(FUZZ_CC) -fsanitize=fuzzer,address,undefined -o $@ $^ $(LDLIBS) $(GRADER_LIBS)
 
 # The seeds are the project's own files, made fresh: what pathlab writes and reads.
 fuzz-seeds: $(BIN)/pathtracer $(BIN)/test-part1
