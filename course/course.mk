@@ -9,6 +9,8 @@ COURSE_TOOL_OBJ := $(addprefix $(BUILD)/framework/,image.o file.o status.o) $(BU
 # ---- the release: release/student (solutions -> stubs) and release/autograder.zip --------------
 # The stripper's rules are a library, so the course suite (course/release/test_strip.c) tests them.
 STRIP_OBJ := $(BUILD)/course/release/strip.o
+# The stub maker, also the grader's process test's (grader/grader.mk).
+STRIP_TOOL := $(BIN)/strip_solutions
 $(BIN)/strip_solutions: $(BUILD)/course/release/strip_solutions.o $(STRIP_OBJ) $(COURSE_TOOL_OBJ)
 	$(say) LD $@
 	@mkdir -p $(dir $@)

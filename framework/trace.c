@@ -5,7 +5,7 @@
 #include "frame.h"
 #include "sampler.h"
 #include "todo.h"
-#include "../parts/part3_direct/part3.h"  /* replayed part functions: framework/parts.h */
+#include "../parts/part3_direct/part3.h"  /* replayed part functions (framework/README.md) */
 #include "../parts/part4_global/part4.h"
 #include <jansson.h>
 #include <math.h>

@@ -4,9 +4,10 @@
 # The sandbox's system-call filter needs Debian's libseccomp (libseccomp-dev, in tools/setup's list);
 # without it (macOS) grader/sandbox_posix.c stands in, and bin/grade --submission as root refuses to
 # grade. grader/probe_main.c is bin/grade-probe, the sandbox's self-test (its own program).
-SANDBOX_IMPL := $(if $(shell pkg-config --exists libseccomp 2>/dev/null && echo yes),linux,posix)
+SANDBOX_SRC := $(if $(shell pkg-config --exists libseccomp 2>/dev/null && echo yes),grader/sandbox_linux.c,grader/sandbox_posix.c)
+SANDBOX_IMPL := $(if $(filter grader/sandbox_linux.c,$(SANDBOX_SRC)),linux,posix)
 GRADER_SRC := $(filter-out grader/grade_main.c grader/probe_main.c grader/sandbox_linux.c grader/sandbox_posix.c,\
-                $(wildcard grader/*.c)) grader/sandbox_$(SANDBOX_IMPL).c
+                $(wildcard grader/*.c)) $(SANDBOX_SRC)
 GRADER_OBJ := $(patsubst %.c,$(BUILD)/%.o,$(GRADER_SRC))
 GRADER_LIBS := $(if $(filter linux,$(SANDBOX_IMPL)),$(shell pkg-config --libs libseccomp))
 # bin/grade links the framework's file, image and statistics code, never a part: it must not run
@@ -47,8 +48,9 @@ test-report: $(BIN)/grade $(BIN)/pathtracer $(BIN)/imgtool  ## the grader's HTML
 
 # The grader's containment at process level (tests/grader/sandbox.sh says what it proves): grades
 # part 1 of hostile submissions; as root it also sweeps the file system as student code for secrets
-# (bin/strip_solutions makes its stubbed submission: the instructor's tree only).
-test-grader-process: $(BIN)/grade $(BIN)/grade-probe $(BIN)/test-grader $(foreach n,1 2 3 4 5,$(BIN)/test-part$(n)) \
-                     $(if $(wildcard course/course.mk),$(BIN)/strip_solutions)  ## the grader's containment, at process level
-	$(Q)sh tests/grader/sandbox.sh
+# (STRIP_TOOL, the course's stub maker from course/course.mk, makes its stubbed submission: where
+# the tree has none, the sweep is skipped).
+test-grader-process: $(BIN)/grade $(BIN)/grade-probe $(BIN)/test-grader $(foreach n,1 2 3 4 5,$(BIN)/test-part$(n))  ## the grader's containment, at process level
+	$(if $(STRIP_TOOL),$(Q)$(MAKE) --no-print-directory $(STRIP_TOOL))
+	$(Q)STRIP_TOOL='$(STRIP_TOOL)' sh tests/grader/sandbox.sh
 

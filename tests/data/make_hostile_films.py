@@ -137,9 +137,9 @@ def main(out):
             ("pathlab.render_key", b"0123456789ABCDEF", "pathlab.render_key"),
             ("pathlab.render_key", b"0123456789abcdeg", "pathlab.render_key"),
             ("pathlab.render_key", b"0123456789abcde", "pathlab.render_key"),
-            ("pathlab.command", b"rm -rf / scenes/x.dae", "pathlab.command"),
-            ("pathlab.command", b"pathtracer \xff\xfe scenes/x.dae", "pathlab.command: expected UTF-8"),
-            ("pathlab.command", b"pathtracer \x1b[2J scenes/x.dae", "pathlab.command: expected UTF-8"),
+            ("pathlab.command", b"rm -rf / scene.dae", "pathlab.command"),
+            ("pathlab.command", b"pathtracer \xff\xfe scene.dae", "pathlab.command: expected UTF-8"),
+            ("pathlab.command", b"pathtracer \x1b[2J scene.dae", "pathlab.command: expected UTF-8"),
             ("pathlab.version", None, "pathlab.version"),
             ("pathlab.seed", ("int", struct.pack("<i", 7)), "pathlab.seed")]):
         case(words, "attribute%02d.exr" % i, attrs={field: value})

@@ -118,17 +118,19 @@ refused "a symbolic link in place of a file" "is a symbolic link"
 submission 'void _assert_true(const unsigned long result, const char *const expression, const char *const file, const int line) { (void)result; (void)expression; (void)file; (void)line; }'
 refused "a function that replaces cmocka's _assert_true" 'defines `_assert_true`'
 
-# 7. nothing secret in reach, as root (the stubbed submission needs the instructor's strip tool)
-if [ "$(id -u)" = 0 ] && [ ! -x bin/strip_solutions ]; then
-    echo "  (no bin/strip_solutions, not the instructor's tree: the sweep is skipped)"
+# 7. nothing secret in reach, as root (the stubbed submission needs the course's strip tool)
+strip=${STRIP_TOOL:-}  # the course's stub maker (course/course.mk), absent from other trees
+if [ "$(id -u)" = 0 ] && { [ -z "$strip" ] || [ ! -x "$strip" ]; }; then
+    echo "  (no stub maker, not the course's own tree: the sweep is skipped)"
 elif [ "$(id -u)" = 0 ]; then
     # The needles, hex: solution lines (40+ characters, 8 a file), 48 bytes from the middle of each
     # reference EXR and of each hidden file. Kept in a file only root can read.
     needles=$out/needles
     hexof() { od -An -tx1 -v | tr -d ' \n'; }
     : >"$needles.raw"
+    marker=SOLUTION  # the region's markers, spelt apart so this file holds none
     for f in parts/*/*.c; do
-        awk '/BEGIN SOLUTION/ { on = 1; next } /END SOLUTION/ { on = 0 } on' "$f" |
+        awk -v b="BEGIN $marker" -v e="END $marker" 'index($0, b) { on = 1; next } index($0, e) { on = 0 } on' "$f" |
             sed 's/^[[:space:]]*//' | awk 'length($0) >= 40 && !/^\/[*\/]/' | head -n 8 |
             while IFS= read -r line; do printf '%s' "$line" | hexof; echo; done >>"$needles.raw"
     done
@@ -157,7 +159,7 @@ elif [ "$(id -u)" = 0 ]; then
     # the sweep hook, its sandbox folder under a TMPDIR of its own.
     rm -rf "$out/sub" && mkdir -p "$out/sub"
     for f in parts/*/*; do mkdir -p "$out/sub/$(dirname "$f")"; done
-    for f in parts/*/*.c parts/*/*.h; do bin/strip_solutions "$f" "$out/sub/$f" || fail "cannot strip $f"; done
+    for f in parts/*/*.c parts/*/*.h; do "$strip" "$f" "$out/sub/$f" || fail "cannot strip $f"; done
     tmpbase=$(mktemp -d /tmp/pathlab-sweep.XXXXXX); chmod 711 "$tmpbase"
     roots="$PWD $PWD/$out $tmpbase /var/tmp /dev/shm /home /root /etc /opt /srv"
     TMPDIR=$tmpbase PL_GRADE_SWEEP="$bait/grade-probe $roots" timeout 600 \

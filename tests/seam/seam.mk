@@ -5,9 +5,10 @@
 # judge-partN: the same tests, framework and other parts, with part N's functions replayed from
 # stdin: it links no object of part N. The function names come from the part's header, so the
 # wrappers cannot miss one the header declares (the seam's table, tests/seam/seam.c, names them too).
-part_obj    = $(patsubst %.c,$(BUILD)/%.o,$(wildcard parts/part$(1)_*/*.c))
+part_dir    = $(dir $(wildcard parts/*/part$(1).h))  # parts/part<N>_<name>/
+part_obj    = $(patsubst %.c,$(BUILD)/%.o,$(wildcard $(call part_dir,$(1))*.c))
 paren      := (
-part_fns    = $(shell sed -n 's/^[a-z_]* [*]*\([a-z_0-9]*\)[$(paren)].*/\1/p' parts/part$(1)_*/part$(1).h)
+part_fns    = $(shell sed -n 's/^[a-z_]* [*]*\([a-z_0-9]*\)[$(paren)].*/\1/p' $(wildcard parts/*/part$(1).h))
 seam_obj    = $(addprefix $(BUILD)/tests/seam/$(1)/,seam.o $(2).o seam_part$(3).o)
 
 # ld --wrap redirects only calls the linker resolves: link-time optimisation resolves calls inside its
