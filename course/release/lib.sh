@@ -86,12 +86,12 @@ copy_one() {
     stripped=0
     case "$1" in
         *.c|*.h)
-            [ "$3" = 1 ] && { cp -p "$1" "$2/$1"; return; }
+            [ "$3" = 1 ] && { cp -p -- "$1" "$2/$1"; return; }
             "$strip" "$1" "$2/$1" || return 1
             stripped=1
             if [ -x "$1" ]; then chmod 755 "$2/$1"; else chmod 644 "$2/$1"; fi ;;
         *.md) strip_markdown "$1" "$2/$1" ;;
-        *) cp -p "$1" "$2/$1" ;;
+        *) cp -p -- "$1" "$2/$1" ;;
     esac
 }
 
@@ -103,7 +103,7 @@ copy_tree() {
     rm -rf "$dest" && mkdir -p "$dest" || die "cannot create $dest"
     files=0 n_stripped=0 failed=0
     while IFS= read -r -d '' f; do
-        mkdir -p "$dest/$(dirname "$f")"
+        mkdir -p -- "$dest/$(dirname -- "$f")"
         solved=0
         case "$f" in
             parts/part[1-9]_*/*) k=${f#parts/part}; k=${k%%_*}; [ "$k" -le "$solved_up_to" ] && solved=1 ;;
