@@ -33,7 +33,7 @@ bool grade_guard_secrets(const char *root, const char *outdir, const grade_sandb
     if (!s->as_other_user) return true;  /* the child is the grader's own user: nothing a mode can hide */
     /* parts/: the course's solutions, which a submission could otherwise #include or link to; bin/
      * and build/: the course's programs and objects (the solution as machine code); course/ and
-     * release/: the course's own tools, mutants and the bundle's own copy of everything; the course's
+     * release/: the course's own tools, its catalogues of bugs and the bundle's own copy of everything; the course's
      * prebuilt objects (grade_tree.h). */
     static const char *const secrets[] = {"reference_images", "grading/hidden", "parts", "bin", "build", "course",
                                           "release", GRADE_PREBUILD};

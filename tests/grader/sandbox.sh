@@ -143,7 +143,10 @@ elif [ "$(id -u)" = 0 ]; then
     done
     # A secret the student release also holds is no secret (a solution line that repeats framework
     # code, a hidden scene's chunk that a public scene shares): those needles are dropped.
-    public="framework tests scenes tools third_party fuzz handout bench grading/cases.json Makefile README.md"
+    # The public cases' preview PNGs too: a hidden case may look the same as a public one (the bunny
+    # at another leaf size), and then its preview is no secret either.
+    public="framework tests scenes tools third_party fuzz handout bench grading/cases.json Makefile README.md
+            $(echo reference_images/part*/*.png)"
     PL_SWEEP_NEEDLES=$(grep . "$needles.raw" | paste -sd, -) bin/grade-probe sweep $public >"$out/public.log" 2>&1 || true
     sed -n 's/^FOUND secret \([0-9]*\) in .*/\1/p' "$out/public.log" | sort -un >"$out/public.ids"
     grep . "$needles.raw" | awk 'NR == FNR { drop[$1 + 1] = 1; next } !(FNR in drop)' "$out/public.ids" - >"$needles.kept"
