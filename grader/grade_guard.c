@@ -34,9 +34,10 @@ bool grade_guard_secrets(const char *root, const char *outdir, const grade_sandb
     /* parts/: the course's solutions, which a submission could otherwise #include or link to; bin/
      * and build/: the course's programs and objects (the solution as machine code); course/ and
      * release/: the course's own tools, its catalogues of bugs and the bundle's own copy of everything; the course's
-     * prebuilt objects (grade_tree.h). */
+     * prebuilt objects (grade_tree.h); .git/: a checkout's history holds every solution and reference
+     * (a loose object of an EXR stores its bytes as they are). */
     static const char *const secrets[] = {"reference_images", "grading/hidden", "parts", "bin", "build", "course",
-                                          "release", GRADE_PREBUILD};
+                                          "release", ".git", GRADE_PREBUILD};
     char path[4200];
     for (size_t k = 0; k < sizeof secrets / sizeof secrets[0]; k++) {
         snprintf(path, sizeof path, "%s/%s", root, secrets[k]);

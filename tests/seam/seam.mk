@@ -5,7 +5,8 @@
 # judge-partN: the same tests, framework and other parts, with part N's functions replayed from
 # stdin: it links no object of part N. The function names come from the part's header, so the
 # wrappers cannot miss one the header declares (the seam's table, tests/seam/seam.c, names them too).
-part_dir    = $(dir $(wildcard parts/*/part$(1).h))  # parts/part<N>_<name>/
+# A part's folder (parts/part<N>_<name>/), found by its header.
+part_dir    = $(dir $(wildcard parts/*/part$(1).h))
 part_obj    = $(patsubst %.c,$(BUILD)/%.o,$(wildcard $(call part_dir,$(1))*.c))
 paren      := (
 part_fns    = $(shell sed -n 's/^[a-z_]* [*]*\([a-z_0-9]*\)[$(paren)].*/\1/p' $(wildcard parts/*/part$(1).h))
