@@ -23,6 +23,7 @@ static bool make_private(const char *path, const grade_sandbox *s)
 {
     struct stat st;
     if (lstat(path, &st) != 0) return errno == ENOENT;  /* nothing to hide */
+    if (S_ISREG(st.st_mode)) return chmod(path, 0600) == 0;  /* a worktree's .git: a pointer only */
     if (!S_ISDIR(st.st_mode)) return false;
     if (st.st_uid == s->uid && chown(path, 0, 0) != 0) return false;
     return chmod(path, 0700) == 0;
