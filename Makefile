@@ -67,7 +67,6 @@ endif
 cc_option = $(shell $(CC) -Werror $(1) -E -x c /dev/null >/dev/null 2>&1 && echo $(1))
 # -Wno-newline-eof: clang's -Wpedantic wants a final newline, which the vendored lodepng lacks.
 WARN     := -Wall -Wextra -Wpedantic -Wshadow -Wno-unused-parameter $(call cc_option,-Wno-newline-eof)
-NO_FORMAT_TRUNCATION := $(call cc_option,-Wno-format-truncation)  # GCC's; for grader/grader.mk
 CPPFLAGS += $(FEATURES) -MMD -MP $(shell pkg-config --cflags $(PKGS))
 CFLAGS   += -std=c11 $(OPT) -g $(WARN) -pthread
 LDLIBS   += $(shell pkg-config --libs $(PKGS)) -lm -pthread

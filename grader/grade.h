@@ -135,7 +135,15 @@ typedef struct {
 #define GRADE_FILE_BYTES ((long)64 << 20)       /* any file a child writes (objects, the legacy XML) */
 #define GRADE_PROCESSES 256              /* the sandbox user's processes and threads: make -j2 and cc1 */
 #define GRADE_LOG_MAX (256 * 1024)       /* what the grader keeps of a child's output */
+#define GRADE_ROOT_MAX 1024              /* the course, --out and --submission paths: every path is one of
+                                            these and short names, so buffers of 4096 always fit */
 #define GRADE_FILM_MAX ((long)128 << 20) /* a streamed film: 136 bytes a pixel, far above any case */
+
+/* Formatting into fixed buffers (grade_fmt.c). grade_path: a path, never cut: false (and a line on
+ * stderr) when it does not fit, with out emptied; the caller gives up on what the path was for.
+ * grade_msg: a message for a person, cut to fit with "..." at the end. */
+bool grade_path(char *out, size_t size, const char *format, ...) __attribute__((format(printf, 3, 4)));
+void grade_msg(char *out, size_t size, const char *format, ...) __attribute__((format(printf, 3, 4)));
 
 /* What a child sends the grader on a descriptor of its own besides its log (a render's film): the
  * grader reads it while the child runs, into memory, never through a file the child could name. */

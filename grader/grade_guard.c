@@ -41,15 +41,15 @@ bool grade_guard_secrets(const char *root, const char *outdir, const grade_sandb
                                           "release", ".git", GRADE_PREBUILD};
     char path[4200];
     for (size_t k = 0; k < sizeof secrets / sizeof secrets[0]; k++) {
-        snprintf(path, sizeof path, "%s/%s", root, secrets[k]);
-        if (!make_private(path, s)) return snprintf(why, size, "cannot make %s private to root", path), false;
+        grade_path(path, sizeof path, "%s/%s", root, secrets[k]);
+        if (!make_private(path, s)) return grade_msg(why, size, "cannot make %s private to root", path), false;
     }
     /* The report shows references as PNGs; results.json is the verdict. The output folder itself
      * stays enterable (the children's scratch lives below it), its results do not. */
-    snprintf(path, sizeof path, "%s/report", outdir);
-    if (!make_private(path, s)) return snprintf(why, size, "cannot make %s private to root", path), false;
-    snprintf(path, sizeof path, "%s/results.json", outdir);
-    if (chmod(path, 0600) != 0 && errno != ENOENT) return snprintf(why, size, "cannot protect %s", path), false;
+    grade_path(path, sizeof path, "%s/report", outdir);
+    if (!make_private(path, s)) return grade_msg(why, size, "cannot make %s private to root", path), false;
+    grade_path(path, sizeof path, "%s/results.json", outdir);
+    if (chmod(path, 0600) != 0 && errno != ENOENT) return grade_msg(why, size, "cannot protect %s", path), false;
     return true;
 }
 

@@ -72,7 +72,7 @@ static bool film_shape_ok(const film *f, const grade_case *k, bool adaptive, cha
             sums_ok = s >= 0 && (q + p->n * 0x1p-32) * p->n >= s * s * (1.0 - 1e-9);
         }
         if (!count_ok || !sums_ok)
-            return snprintf(why, size, "the film's pixel %ld (x=%ld, y=%ld from the top) %s", i, i % f->width,
+            return grade_msg(why, size, "the film's pixel %ld (x=%ld, y=%ld from the top) %s", i, i % f->width,
                             i / f->width, count_ok ? "holds sums no samples can have" : "has the wrong sample count"), false;
     }
     return true;
@@ -117,13 +117,13 @@ static pl_status write_z_map(const verdict *v, int width, int height, const char
 static bool scene_for_child(const grade_env *env, const char *tree, const grade_case *k, char *path, size_t size,
                             pl_diag *diag)
 {
-    snprintf(path, size, "%s/%s", env->root, k->scene);
+    grade_path(path, size, "%s/%s", env->root, k->scene);
     if (strncmp(k->scene, "grading/", 8) != 0) return true;
     char *data = NULL;
     size_t len = 0;
     const char *base = strrchr(k->scene, '/') + 1;
     pl_status st = file_read_all(path, "scene", SCENE_MAX, &data, &len, diag);
-    snprintf(path, size, "%s/%s", tree, base);
+    grade_path(path, size, "%s/%s", tree, base);
     if (!st) st = file_write_atomic(path, data, len, diag);
     free(data);
     return st == PL_OK;
@@ -144,10 +144,10 @@ static bool render_candidate(const grade_env *env, const char *tree, int part, g
     const grade_case *k = c->spec;
     char log[4096], bin[4096], scene[4096];
     pl_diag diag = pl_diag_default();
-    snprintf(log, sizeof log, "%s/part%d/%s.log", env->work, part, k->name);
-    snprintf(bin, sizeof bin, "%s/bin/pathtracer", tree);
+    grade_path(log, sizeof log, "%s/part%d/%s.log", env->work, part, k->name);
+    grade_path(bin, sizeof bin, "%s/bin/pathtracer", tree);
     if (!scene_for_child(env, tree, k, scene, sizeof scene, &diag)) {
-        snprintf(c->reason, sizeof c->reason, "the course's scene: %s", diag.error);
+        grade_msg(c->reason, sizeof c->reason, "the course's scene: %s", diag.error);
         return false;
     }
     char *argv[GRADE_MAX_FLAGS + 16];
@@ -162,11 +162,11 @@ static bool render_candidate(const grade_env *env, const char *tree, int part, g
     if (!ok) {
         char why[128];
         grade_run_describe(&rr, why, sizeof why);
-        snprintf(c->reason, sizeof c->reason, "the render %s", why);
+        grade_msg(c->reason, sizeof c->reason, "the render %s", why);
     }
     else if (film_pipe.overflow || output_film_receive(film_pipe.data, (size_t)film_pipe.len, k->width, k->height, out,
                                                        counts, &diag) != PL_OK) {
-        snprintf(c->reason, sizeof c->reason, "the render sent no usable film: %s",
+        grade_msg(c->reason, sizeof c->reason, "the render sent no usable film: %s",
                  film_pipe.overflow ? "it sent more than any film of the case takes" : diag.error);
         ok = false;
     }
@@ -183,8 +183,8 @@ static bool load_reference(const char *ref, image *img, image *var, grade_case_r
     double n;
     pl_diag diag = pl_diag_default();
     if (read_reference(ref, img, var, &bad, &n, &diag) == PL_OK && !bad) return true;
-    if (bad) snprintf(c->reason, sizeof c->reason, "the reference %s has %ld bad pixels (run make references)", ref, bad);
-    else snprintf(c->reason, sizeof c->reason, "the course's reference: %s (run make references FORCE=1 CASES=%s)",
+    if (bad) grade_msg(c->reason, sizeof c->reason, "the reference %s has %ld bad pixels (run make references)", ref, bad);
+    else grade_msg(c->reason, sizeof c->reason, "the course's reference: %s (run make references FORCE=1 CASES=%s)",
                   diag.error, c->spec->name);
     image_free(img);
     image_free(var);
@@ -195,7 +195,7 @@ static bool load_reference(const char *ref, image *img, image *var, grade_case_r
 static void write_candidate_exr(const grade_env *env, int part, const grade_case *k, const film *f)
 {
     char path[4096];
-    snprintf(path, sizeof path, "%s/part%d/%s.exr", env->work, part, k->name);
+    grade_path(path, sizeof path, "%s/part%d/%s.exr", env->work, part, k->name);
     exr_info info = {.seed = env->seed, .sample_end = k->samples, .sample_total = k->samples};
     snprintf(info.command, sizeof info.command, "bin/grade: part %d, case %s (streamed film)", part, k->name);
     snprintf(info.version, sizeof info.version, "candidate");
@@ -216,7 +216,7 @@ static bool figures_ok(const char *ref, const grade_case *k, double cand_n, cons
     double course_spp = 0, course_work = 0;
     pl_diag diag = pl_diag_default();
     bool ok = grade_refs_figures(ref, k, &course_spp, &course_work, &diag) == PL_OK;  /* checked before grading */
-    if (!ok) snprintf(c->reason, sizeof c->reason, "the course's reference: %s", diag.error);
+    if (!ok) grade_msg(c->reason, sizeof c->reason, "the course's reference: %s", diag.error);
     if (adaptive_case(k) && course_spp > 0) {
         c->spp = cand_n;
         c->course_spp = course_spp;
@@ -273,7 +273,7 @@ static void write_pictures(const grade_env *env, int part, grade_case_result *c,
     for (int i = 0; i < 3; i++) {
         char path[4096];
         snprintf(c->images[i], sizeof c->images[i], "part%d_%s_%s.png", part, c->spec->name, kinds[i]);
-        snprintf(path, sizeof path, "%s/%s", env->report, c->images[i]);
+        grade_path(path, sizeof path, "%s/%s", env->report, c->images[i]);
         pl_status st = i == 0 ? image_write_png(cand, path, &diag)
                      : i == 1 ? image_write_png(ref, path, &diag)
                               : write_z_map(&c->v, cand->width, cand->height, path, &diag);
@@ -291,7 +291,7 @@ static void judge(const grade_env *env, const grade_spec *spec, int part, const 
     double cand_n;
     pl_diag diag = pl_diag_default();
     if (film_inputs(f, &cand, &candvar, &bad, &cand_n, &diag) != PL_OK) {
-        snprintf(c->reason, sizeof c->reason, "%s", diag.error);
+        grade_msg(c->reason, sizeof c->reason, "%s", diag.error);
         image_free(&cand);
         image_free(&candvar);
         return;
@@ -310,7 +310,7 @@ static void judge(const grade_env *env, const grade_spec *spec, int part, const 
         vp.min_block_samples = 0;
     }
     vp.family_alpha = spec->family_alpha;
-    if (verdict_compute(&vc, &vr, &vp, &c->v, &diag) != PL_OK) snprintf(c->reason, sizeof c->reason, "%s", diag.error);
+    if (verdict_compute(&vc, &vr, &vp, &c->v, &diag) != PL_OK) grade_msg(c->reason, sizeof c->reason, "%s", diag.error);
     else {
         c->ran = true;
         bool figures = figures_ok(ref, k, cand_n, counts, c);

@@ -105,7 +105,7 @@ static bool bad_symbol(const char *line, const char *symbols, char *why, size_t 
     const char *name = line;
     while (*name == ' ') name++;
     if (!*name || defined_in(symbols, name) || grade_allowed_symbol(name)) return false;
-    snprintf(why, size, "calls `%s`, which part code may not use (handout/README.md, \"What your part may "
+    grade_msg(why, size, "calls `%s`, which part code may not use (handout/README.md, \"What your part may "
                         "call\", lists what it may)", name);
     return true;
 }
@@ -116,7 +116,7 @@ static bool bad_section(const char *line, const char *symbols, char *why, size_t
     static const char *const sections[] = {".init_array", ".fini_array", ".preinit_array", ".ctors", ".dtors", NULL};
     for (const char *const *s = sections; *s; s++)
         if (strstr(line, *s)) {
-            snprintf(why, size, "has a constructor or destructor (section %s): code may not run outside its tasks", *s);
+            grade_msg(why, size, "has a constructor or destructor (section %s): code may not run outside its tasks", *s);
             return true;
         }
     return false;
@@ -127,7 +127,7 @@ static bool bad_instruction(const char *line, const char *symbols, char *why, si
     (void)symbols;
     /* objdump -d prints "syscall", "sysenter" or "int $0x80" as the mnemonic column. */
     if (strstr(line, "\tsyscall") || strstr(line, "\tsysenter") || strstr(line, "\tint    $0x80")) {
-        snprintf(why, size, "contains a system call instruction: part code may not talk to the kernel");
+        grade_msg(why, size, "contains a system call instruction: part code may not talk to the kernel");
         return true;
     }
     return false;
@@ -138,7 +138,7 @@ static bool bad_definition(const char *line, const char *library, char *why, siz
     const char *name = line;
     while (*name == ' ') name++;
     if (!*name || !defined_in(library, name)) return false;
-    snprintf(why, size, "defines `%s`, which a library of the program already defines: part code may not "
+    grade_msg(why, size, "defines `%s`, which a library of the program already defines: part code may not "
                         "replace library functions (rename it, or make it static)", name);
     return true;
 }
@@ -183,10 +183,10 @@ static bool bad_dependencies(const char *folder, const char *dep_file, char *why
     size_t len = 0;
     pl_diag diag = pl_diag_default();
     if (file_read_all(dep_file, "dependency file", LOG_MAX, &text, &len, &diag) != PL_OK)
-        return snprintf(why, size, "the build left no dependency file (%s)", diag.error), true;
+        return grade_msg(why, size, "the build left no dependency file (%s)", diag.error), true;
     bool bad = false;
     char own[300];
-    snprintf(own, sizeof own, "parts/%s/", folder);
+    grade_path(own, sizeof own, "parts/%s/", folder);
     for (char *save = NULL, *tok = strtok_r(text, " \t\r\n", &save); tok && !bad; tok = strtok_r(NULL, " \t\r\n", &save)) {
         size_t n = strlen(tok);
         if (!strcmp(tok, "\\") || tok[n - 1] == ':') continue;  /* a line continuation, or a rule's target */
@@ -198,7 +198,7 @@ static bool bad_dependencies(const char *folder, const char *dep_file, char *why
                    (!strncmp(path, "parts/", 6) && (slash = strchr(path + 6, '/')) && !strncmp(slash + 1, "part", 4) &&
                     !strchr(slash + 1, '/') && is_header(path)));
         if (!ok) {
-            snprintf(why, size, "reads `%.300s` when compiled: part code may include only its own files and the "
+            grade_msg(why, size, "reads `%.300s` when compiled: part code may include only its own files and the "
                                 "framework's and parts' headers", tok);
             bad = true;
         }
@@ -211,30 +211,33 @@ bool grade_inspect_part(const char *tree, const char *folder, const char *work, 
                         size_t size)
 {
     char log[4200], src_dir[4200];
-    snprintf(src_dir, sizeof src_dir, "%s/parts/%s", tree, folder);
-    snprintf(log, sizeof log, "%s/inspect-symbols.txt", work);
+    grade_path(src_dir, sizeof src_dir, "%s/parts/%s", tree, folder);
+    grade_path(log, sizeof log, "%s/inspect-symbols.txt", work);
     char *symbols = defined_symbols(tree, log);
-    snprintf(log, sizeof log, "%s/inspect-libraries.txt", work);
+    grade_path(log, sizeof log, "%s/inspect-libraries.txt", work);
     char *library = library_symbols(tree, atoi(folder + 4), log);  /* folder: "part<N>_name" */
     if (!symbols || !library) {
         free(symbols);
         free(library);
-        return snprintf(why, size, "cannot list the parts' and the libraries' symbols"), false;
+        return grade_msg(why, size, "cannot list the parts' and the libraries' symbols"), false;
     }
 
     /* Each .c of the part has its object, made by the build with the build's own flags. */
     bool ok = true;
     DIR *d = opendir(src_dir);
-    if (!d) ok = snprintf(why, size, "cannot read parts/%s", folder) < 0;
+    if (!d) {
+        grade_msg(why, size, "cannot read parts/%s", folder);
+        ok = false;
+    }
     for (struct dirent *e; ok && d && (e = readdir(d));) {
         size_t n = strlen(e->d_name);
         if (n < 3 || strcmp(e->d_name + n - 2, ".c")) continue;
         char obj[4400], tool_log[4400], what[512] = "";
         struct stat st;
-        snprintf(obj, sizeof obj, "%s/" OBJ_DIR "/parts/%s/%.*s.o", tree, folder, (int)n - 2, e->d_name);
-        snprintf(tool_log, sizeof tool_log, "%s/inspect-%s.log", work, e->d_name);
+        grade_path(obj, sizeof obj, "%s/" OBJ_DIR "/parts/%s/%.*s.o", tree, folder, (int)n - 2, e->d_name);
+        grade_path(tool_log, sizeof tool_log, "%s/inspect-%s.log", work, e->d_name);
         if (stat(obj, &st) != 0 || !S_ISREG(st.st_mode)) {
-            snprintf(why, size, "parts/%s/%s: the build made no object file from it", folder, e->d_name);
+            grade_msg(why, size, "parts/%s/%s: the build made no object file from it", folder, e->d_name);
             ok = false;
             break;
         }
@@ -247,15 +250,15 @@ bool grade_inspect_part(const char *tree, const char *folder, const char *work, 
             {nm, bad_symbol, symbols}, {nm_defined, bad_definition, library}, {readelf, bad_section, NULL},
             {objdump, bad_instruction, NULL}};
         char dep[4400];
-        snprintf(dep, sizeof dep, "%s/" OBJ_DIR "/parts/%s/%.*s.d", tree, folder, (int)n - 2, e->d_name);
+        grade_path(dep, sizeof dep, "%s/" OBJ_DIR "/parts/%s/%.*s.d", tree, folder, (int)n - 2, e->d_name);
         if (bad_dependencies(folder, dep, what, sizeof what)) {
-            snprintf(why, size, "parts/%s/%s: %s", folder, e->d_name, what);
+            grade_msg(why, size, "parts/%s/%s: %s", folder, e->d_name, what);
             ok = false;
         }
         for (size_t k = 0; ok && k < sizeof steps / sizeof steps[0]; k++) {
             if (!run_to(steps[k].argv, NULL, tool_log, untrusted) ||
                 scan(tool_log, steps[k].check, steps[k].names, what, sizeof what)) {
-                snprintf(why, size, "parts/%s/%s: %s", folder, e->d_name, what[0] ? what : "could not be inspected "
+                grade_msg(why, size, "parts/%s/%s: %s", folder, e->d_name, what[0] ? what : "could not be inspected "
                          "(not an object file: was it built with link-time optimisation?)");
                 ok = false;
             }

@@ -39,8 +39,8 @@ static bool build_judge(const grade_env *env, int n, const char *dir, char *judg
 {
     char target[32], log[4200];
     snprintf(target, sizeof target, "bin/judge-part%d", n);
-    snprintf(judge, size, "%s/%s", env->root, target);
-    snprintf(log, sizeof log, "%s/judge-build.log", dir);
+    grade_path(judge, size, "%s/%s", env->root, target);
+    grade_path(log, sizeof log, "%s/judge-build.log", dir);
     char *argv[] = {"make", "-C", (char *)env->root, "-j2", "--no-print-directory", "LTO=0", "WERROR=0", "SAN=0", target, NULL};
     grade_run_opts o = {.wall_seconds = BUILD_SECONDS, .log_path = log, .log_max = LOG_MAX};
     grade_run_result rr = grade_run(argv, &o);
@@ -51,7 +51,7 @@ static bool build_judge(const grade_env *env, int n, const char *dir, char *judg
 static bool list_tests(const char *judge, const char *root, const char *dir, test_list *list)
 {
     char log[4200];
-    snprintf(log, sizeof log, "%s/tests.list", dir);
+    grade_path(log, sizeof log, "%s/tests.list", dir);
     char *envv[] = {"PL_TEST_LIST=1", NULL}, *argv[] = {(char *)judge, NULL};
     grade_run_opts o = {.wall_seconds = JUDGE_SECONDS, .cwd = root, .log_path = log, .log_max = LOG_MAX, .env = envv};
     grade_run_result rr = grade_run(argv, &o);
@@ -63,7 +63,7 @@ static bool list_tests(const char *judge, const char *root, const char *dir, tes
         line[len] = '\0';
         if (strncmp(line, "  ", 2) || len - 2 >= NAME_MAX_LEN || strspn(line + 2, "abcdefghijklmnopqrstuvwxyzABCDEFGHIJKLMNOPQRSTUVWXYZ0123456789_") != len - 2)
             continue;
-        if (list->count < MAX_TESTS) snprintf(list->names[list->count++], NAME_MAX_LEN, "%s", line + 2);
+        if (list->count < MAX_TESTS) memcpy(list->names[list->count++], line + 2, len - 1);  /* len - 2 < NAME_MAX_LEN, and its NUL */
     }
     if (f) fclose(f);
     return list->count > 0;
@@ -89,9 +89,9 @@ static pid_t start_subject(const char *tree, int n, const char *name, const char
     /* The subject's orphans (a setsid grandchild) come to this helper, whose grade_run kills them. */
     sandbox_adopt_orphans();
     char bin[4200], log[4200], filter[200];
-    snprintf(bin, sizeof bin, "%s/bin/subject-part%d", tree, n);
-    snprintf(log, sizeof log, "%s/subject-%d.log", dir, k);
-    snprintf(filter, sizeof filter, "PL_TEST_FILTER=%s", name);
+    grade_path(bin, sizeof bin, "%s/bin/subject-part%d", tree, n);
+    grade_path(log, sizeof log, "%s/subject-%d.log", dir, k);
+    grade_path(filter, sizeof filter, "PL_TEST_FILTER=%s", name);
     char *envv[] = {filter, "PL_SEAM_FD=3", NULL}, *argv[] = {bin, NULL};
     grade_run_opts o = {.wall_seconds = TEST_SECONDS, .cwd = tree, .log_path = log, .log_max = LOG_MAX, .env = envv,
                         .untrusted = true};
@@ -104,10 +104,10 @@ static void run_test(const grade_env *env, const char *tree, const char *judge, 
                      const char *dir, int k, grade_part_result *r)
 {
     char xml[4200], xml_env[4300], log[4200], filter[200], line[1024], why[700];
-    snprintf(xml, sizeof xml, "%s/judge-%d.xml", dir, k);
-    snprintf(xml_env, sizeof xml_env, "CMOCKA_XML_FILE=%s", xml);
-    snprintf(log, sizeof log, "%s/judge-%d.log", dir, k);
-    snprintf(filter, sizeof filter, "PL_TEST_FILTER=%s", name);
+    grade_path(xml, sizeof xml, "%s/judge-%d.xml", dir, k);
+    grade_path(xml_env, sizeof xml_env, "CMOCKA_XML_FILE=%s", xml);
+    grade_path(log, sizeof log, "%s/judge-%d.log", dir, k);
+    grade_path(filter, sizeof filter, "PL_TEST_FILTER=%s", name);
     unlink(xml);  /* cmocka does not overwrite a results file */
     int fds[2];
     grade_run_result rr = {.status = -1};
@@ -132,7 +132,7 @@ static void run_test(const grade_env *env, const char *tree, const char *judge, 
     else {
         char how[128];
         grade_run_describe(&rr, how, sizeof how);
-        snprintf(why, sizeof why, "the course's judge of this test did not finish (%s): please tell the course staff", how);
+        grade_msg(why, sizeof why, "the course's judge of this test did not finish (%s): please tell the course staff", how);
     }
     snprintf(line, sizeof line, "- `%s`: %s\n", name, why);
     size_t len = strlen(r->failures);
@@ -144,27 +144,27 @@ void grade_judge_suite(const grade_env *env, const char *tree, const grade_part_
     char dir[4096], judge[4200];
     r->tests_run = r->tests_failed = 0;
     r->failures[0] = '\0';
-    snprintf(dir, sizeof dir, "%s/part%d/split", env->work, p->part);
+    grade_path(dir, sizeof dir, "%s/part%d/split", env->work, p->part);
     /* The subjects' logs go here, written by the grader: the folder is the grader's own. */
     if (mkdir(dir, 0755) != 0 && errno != EEXIST) {
-        snprintf(r->suite_reason, sizeof r->suite_reason, "cannot create %s", dir);
+        grade_msg(r->suite_reason, sizeof r->suite_reason, "cannot create %s", dir);
         return;
     }
     static test_list list;
     if (!build_judge(env, p->part, dir, judge, sizeof judge) || !list_tests(judge, env->root, dir, &list)) {
-        snprintf(r->suite_reason, sizeof r->suite_reason, "the course's judge of part %d does not build or run "
+        grade_msg(r->suite_reason, sizeof r->suite_reason, "the course's judge of part %d does not build or run "
                  "(see %s/judge-build.log): the course's problem, please tell the staff", p->part, dir);
         return;
     }
     if (list.count != p->unit_tests) {
-        snprintf(r->suite_reason, sizeof r->suite_reason, "the course's suite has %d tests, grading/cases.json says "
+        grade_msg(r->suite_reason, sizeof r->suite_reason, "the course's suite has %d tests, grading/cases.json says "
                  "%d: the course's problem, please tell the staff", list.count, p->unit_tests);
         return;
     }
     double t0 = clock_seconds();
     for (int k = 0; k < list.count; k++) {
         if (clock_seconds() - t0 > SPLIT_SECONDS) {
-            snprintf(r->suite_reason, sizeof r->suite_reason, "the suite ran past %d s (%d of %d tests run)", SPLIT_SECONDS,
+            grade_msg(r->suite_reason, sizeof r->suite_reason, "the suite ran past %d s (%d of %d tests run)", SPLIT_SECONDS,
                      k, list.count);
             break;
         }

@@ -129,7 +129,7 @@ static bool make_dir(const char *path)
 static bool make_sandbox_dir(char *out, size_t size)
 {
     const char *tmp = getenv("TMPDIR") && getenv("TMPDIR")[0] == '/' ? getenv("TMPDIR") : "/tmp";
-    snprintf(out, size, "%s/pathlab-sandbox.XXXXXX", tmp);
+    grade_path(out, size, "%s/pathlab-sandbox.XXXXXX", tmp);
     return mkdtemp(out) && chmod(out, 0711) == 0;
 }
 
@@ -150,11 +150,11 @@ static bool setup_ok(const grade_env *env, const char *outdir, const char *parts
 {
     const grade_sandbox *s = &env->sandbox;
     if (s->as_other_user && !s->filter)
-        return snprintf(why, size, "student code cannot be confined: %s", s->filter_why), false;
+        return grade_msg(why, size, "student code cannot be confined: %s", s->filter_why), false;
     if (s->as_other_user && !reachable_by_sandbox_user(s, env->sandbox_dir))
-        return snprintf(why, size, "the sandbox's user cannot reach %s (a parent folder closed to others? set TMPDIR "
+        return grade_msg(why, size, "the sandbox's user cannot reach %s (a parent folder closed to others? set TMPDIR "
                                    "to a folder it can reach)", env->sandbox_dir), false;
-    if (chmod(env->work, 0700) != 0) return snprintf(why, size, "cannot make %s private", env->work), false;
+    if (chmod(env->work, 0700) != 0) return grade_msg(why, size, "cannot make %s private", env->work), false;
     if (!grade_guard_secrets(env->root, outdir, s, why, size)) return false;
     return grade_tree_course_build(env, parts, why, size);
 }
@@ -177,7 +177,7 @@ static void grade_parts(const grade_env *env, grade_spec *spec, const char *part
 static int prebuild_course(const char *root)
 {
     char work[4200], why[512];
-    snprintf(work, sizeof work, "%s/" GRADE_PREBUILD, root);
+    grade_path(work, sizeof work, "%s/" GRADE_PREBUILD, root);
     if (!make_dir(work) || chmod(work, 0700) != 0) return usage("--prebuild: cannot create " GRADE_PREBUILD);
     grade_env env = {.root = root, .work = work};
     if (!grade_tree_course_build(&env, "1,2,3,4,5", why, sizeof why)) {
@@ -195,7 +195,7 @@ static int write_outputs(const grade_result *result, const char *outdir, const g
     char json[4200], why[512];
     pl_diag diag = pl_diag_default();
     grade_print_table(result, stdout);
-    snprintf(json, sizeof json, "%s/results.json", outdir);
+    grade_path(json, sizeof json, "%s/results.json", outdir);
     int code = 0;
     if (grade_write_results_json(result, json, &diag) != PL_OK || grade_write_html(result, env->report, &diag) != PL_OK) {
         fprintf(stderr, "grade: %s\n", diag.error);
@@ -248,71 +248,93 @@ static const char *parse_args(int argc, char **argv, grade_args *a)
     return NULL;
 }
 
+/* ---- main: folders, the course's cases and references, the sandbox, then the parts ----------- */
+
+/* The folders a run needs, as absolute paths: the course (the current folder), --out with its work/
+ * and report/, and the submission. Every path the grader builds later starts with one of these, so
+ * bounding them here (GRADE_ROOT_MAX) leaves room for every name joined onto them. NULL or why not. */
+typedef struct { char root[GRADE_ROOT_MAX], outdir[GRADE_ROOT_MAX], work[4096], report[4096], submission[GRADE_ROOT_MAX]; } grade_folders;
+
+static const char *open_folders(const grade_args *a, grade_folders *f)
+{
+    if (!getcwd(f->root, sizeof f->root)) return "cannot read the current folder (or its path is over 1 KiB)";
+    if (a->prebuild) return NULL;
+    char real[4096];
+    if (!make_dir(a->out) || !realpath(a->out, real)) return "--out: cannot create the folder";
+    if (!grade_path(f->outdir, sizeof f->outdir, "%s", real)) return "--out: its path is over 1 KiB";
+    if (!grade_path(f->work, sizeof f->work, "%s/work", f->outdir) ||
+        !grade_path(f->report, sizeof f->report, "%s/report", f->outdir) || !make_dir(f->work) || !make_dir(f->report))
+        return "--out: cannot create its work/ and report/ folders";
+    f->submission[0] = '\0';
+    if (!a->submission) return NULL;
+    if (!realpath(a->submission, real)) return "--submission: no such folder";
+    if (!grade_path(f->submission, sizeof f->submission, "%s", real)) return "--submission: its path is over 1 KiB";
+    return NULL;
+}
+
+/* The cases, and the course's references checked before anyone is graded: a broken one stops the
+ * run as the course's error (exit 2), never a check skipped or a student's 0. */
+static bool load_course(const char *root, const grade_args *a, grade_spec *spec)
+{
+    pl_diag diag = pl_diag_default();
+    if (grade_spec_load(GRADE_CASES, GRADE_HIDDEN_CASES, spec, &diag) != PL_OK) {
+        fprintf(stderr, "grade: %s\n", diag.error);
+        return false;
+    }
+    if (grade_refs_check(root, spec, a->parts, a->public_only, &diag) != PL_OK) {
+        fprintf(stderr, "grade: %s\n", diag.error);
+        grade_spec_free(spec);
+        return false;
+    }
+    return true;
+}
+
+/* The protections: those in force go to the staff log; those missing to a submission's report, or
+ * to a student grading their own tree as a warning (their own code on their own machine:
+ * containment is the autograder's concern). */
+static void announce_protections(const grade_env *env, grade_result *result)
+{
+    char in_force[512];
+    grade_sandbox_in_force(&env->sandbox, in_force, sizeof in_force);
+    fprintf(stderr, "grade: protections in force: %s\n", in_force);
+    if (env->submission) grade_sandbox_describe(&env->sandbox, result->unprotected, sizeof result->unprotected);
+    else if (!sandbox_confines(&env->sandbox))
+        fprintf(stderr, "grade: no sandbox on this machine: your own code runs unconfined; "
+                        "your official grade comes from the autograder\n");
+    if (result->unprotected[0]) fprintf(stderr, "grade: unavailable protections: %s\n", result->unprotected);
+}
+
 int main(int argc, char **argv)
 {
     grade_args a;
     const char *bad = parse_args(argc, argv, &a);
     if (bad) return usage(bad);
-    const char *submission = a.submission, *out = a.out, *parts = a.parts;
-    char root[4096], outdir[4096], work[4096], report[4096];
-    if (!getcwd(root, sizeof root)) return usage("cannot read the current folder");
-    if (a.prebuild) return prebuild_course(root);
-    if (!make_dir(out) || !realpath(out, outdir)) return usage("--out: cannot create the folder");
-    snprintf(work, sizeof work, "%s/work", outdir);
-    snprintf(report, sizeof report, "%s/report", outdir);
-    if (!make_dir(work) || !make_dir(report)) return usage("--out: cannot create its work/ and report/ folders");
-    char subdir[4096];
-    if (submission && !realpath(submission, subdir)) return usage("--submission: no such folder");
-
-    pl_diag diag = pl_diag_default();
+    static grade_folders f;
+    if ((bad = open_folders(&a, &f))) return usage(bad);
+    if (a.prebuild) return prebuild_course(f.root);
     grade_spec spec;
-    if (grade_spec_load(GRADE_CASES, GRADE_HIDDEN_CASES, &spec, &diag) != PL_OK) {
-        fprintf(stderr, "grade: %s\n", diag.error);
-        return 2;
-    }
-    /* The course's references, before anyone is graded: a broken one stops the run as the course's
-     * error (exit 2), never a check skipped or a student's 0. */
-    if (grade_refs_check(root, &spec, parts, a.public_only, &diag) != PL_OK) {
-        fprintf(stderr, "grade: %s\n", diag.error);
-        grade_spec_free(&spec);
-        return 2;
-    }
+    if (!load_course(f.root, &a, &spec)) return 2;
     grade_result result;
     memset(&result, 0, sizeof result);
     result.seed = a.seed_given ? a.seed : fresh_seed();
     char sandbox_dir[4096];
     if (!make_sandbox_dir(sandbox_dir, sizeof sandbox_dir)) return usage("cannot create the sandbox's folder under $TMPDIR or /tmp");
-    grade_env env = {.root = root, .submission = submission ? subdir : NULL, .work = work, .sandbox_dir = sandbox_dir,
-                     .report = report, .public_only = a.public_only, .seed = result.seed, .threads = a.threads,
-                     .sandbox = grade_sandbox_probe()};
+    grade_env env = {.root = f.root, .submission = a.submission ? f.submission : NULL, .work = f.work,
+                     .sandbox_dir = sandbox_dir, .report = f.report, .public_only = a.public_only, .seed = result.seed,
+                     .threads = a.threads, .sandbox = grade_sandbox_probe()};
     /* Before any child runs: the grader's own set-up, and the answers out of the children's reach. */
-    char why[512] = "", in_force[512];
-    if (submission && !setup_ok(&env, outdir, parts, why, sizeof why)) {
-        fprintf(stderr, "grade: the grader's set-up on this machine is wrong (the course's problem, not the "
-                        "submission's): %s\n", why);
-        grade_tree_remove(sandbox_dir);
-        grade_spec_free(&spec);
-        return 3;
+    char why[512] = "";
+    bool set_up = !a.submission || setup_ok(&env, f.outdir, a.parts, why, sizeof why);
+    if (set_up) announce_protections(&env, &result);
+    else fprintf(stderr, "grade: the grader's set-up on this machine is wrong (the course's problem, not the "
+                         "submission's): %s\n", why);
+    int code = !set_up ? 3 : a.calibrate_runs > 0 ? calibrate(&env, &spec, a.parts, a.cases, a.calibrate_runs) : -1;
+    if (code < 0) grade_parts(&env, &spec, a.parts, &result);
+    grade_tree_remove(sandbox_dir);  /* every grading tree, before the outputs are written */
+    if (code < 0) {
+        code = write_outputs(&result, f.outdir, &env);
+        free_verdicts(&result);
     }
-    grade_sandbox_in_force(&env.sandbox, in_force, sizeof in_force);
-    fprintf(stderr, "grade: protections in force: %s\n", in_force);
-    /* A student's own tree is their code on their machine: containment is the autograder's concern. */
-    if (submission) grade_sandbox_describe(&env.sandbox, result.unprotected, sizeof result.unprotected);
-    else if (!sandbox_confines(&env.sandbox))
-        fprintf(stderr, "grade: no sandbox on this machine: your own code runs unconfined; "
-                        "your official grade comes from the autograder\n");
-    if (result.unprotected[0]) fprintf(stderr, "grade: unavailable protections: %s\n", result.unprotected);
-    if (a.calibrate_runs > 0) {
-        int code = calibrate(&env, &spec, parts, a.cases, a.calibrate_runs);
-        grade_tree_remove(sandbox_dir);
-        grade_spec_free(&spec);
-        return code;
-    }
-    grade_parts(&env, &spec, parts, &result);
-    grade_tree_remove(sandbox_dir);
-
-    int code = write_outputs(&result, outdir, &env);
-    free_verdicts(&result);
     grade_spec_free(&spec);
     return code;
 }

@@ -27,14 +27,14 @@
  * does not compile (the compiler's own lines for the part's files are shown beside it). */
 static void build_verdict(const grade_run_result *rr, int n, const char *raw, grade_part_result *r)
 {
-    if (rr->timed_out) snprintf(r->suite_reason, sizeof r->suite_reason, "part %d's build ran past %d s", n, GRADE_BUILD_SECONDS);
+    if (rr->timed_out) grade_msg(r->suite_reason, sizeof r->suite_reason, "part %d's build ran past %d s", n, GRADE_BUILD_SECONDS);
     else if (rr->output_cut)
-        snprintf(r->suite_reason, sizeof r->suite_reason, "part %d's build printed more than %d KiB", n, GRADE_LOG_MAX / 1024);
+        grade_msg(r->suite_reason, sizeof r->suite_reason, "part %d's build printed more than %d KiB", n, GRADE_LOG_MAX / 1024);
     else if (strstr(raw, "out of memory") || strstr(raw, "memory exhausted") || strstr(raw, "Killed signal"))
-        snprintf(r->suite_reason, sizeof r->suite_reason, "part %d's build ran past its memory limit (%ld MiB)", n,
+        grade_msg(r->suite_reason, sizeof r->suite_reason, "part %d's build ran past its memory limit (%ld MiB)", n,
                  GRADE_COMPILER_MEMORY >> 20);
     else if (!rr->exited)
-        snprintf(r->suite_reason, sizeof r->suite_reason, "part %d's build was stopped: it ran past its CPU time or "
+        grade_msg(r->suite_reason, sizeof r->suite_reason, "part %d's build was stopped: it ran past its CPU time or "
                  "another limit", n);
 }
 
@@ -43,7 +43,7 @@ static bool build(const grade_env *env, const char *tree, int n, grade_part_resu
     char target[32], subject[32], sources[8192] = "PARTS_SRC=";
     snprintf(target, sizeof target, "bin/test-part%d", n);
     snprintf(subject, sizeof subject, "bin/subject-part%d", n);  /* the split suite's half (grade_judge.c) */
-    snprintf(r->build_log, sizeof r->build_log, "%s/part%d/build.log", env->work, n);
+    grade_path(r->build_log, sizeof r->build_log, "%s/part%d/build.log", env->work, n);
     if (env->submission && !grade_tree_sources(env, tree, n, sources, sizeof sources)) return false;
     /* GRADE_MAKE_ARGS: LTO=0 (the objects hold machine code, and the allow-list reads the very files
      * linked; ld --wrap sees every call), WERROR=0 SAN=0 whatever the grader's caller exported. */
@@ -117,19 +117,19 @@ void grade_suite_score(const char *dir, int expected, double points, int status,
     /* The XML files are written group by group: a suite that stopped early (an _exit in a test, a
      * crash the suite survived) left fewer tests than it has; one with more was not the suite. */
     if (!all_read)
-        snprintf(r->suite_reason, sizeof r->suite_reason, "the suite's results are not what it writes: %s", why);
+        grade_msg(r->suite_reason, sizeof r->suite_reason, "the suite's results are not what it writes: %s", why);
     else if (r->tests_run == 0)
-        snprintf(r->suite_reason, sizeof r->suite_reason, "the suite wrote no readable test results");
+        grade_msg(r->suite_reason, sizeof r->suite_reason, "the suite wrote no readable test results");
     else if (r->tests_run < expected)
-        snprintf(r->suite_reason, sizeof r->suite_reason, "the suite stopped after %d of %d tests", r->tests_run,
+        grade_msg(r->suite_reason, sizeof r->suite_reason, "the suite stopped after %d of %d tests", r->tests_run,
                  expected);
     else if (r->tests_run > expected)
-        snprintf(r->suite_reason, sizeof r->suite_reason, "the suite reported %d tests, but it has %d: its results "
+        grade_msg(r->suite_reason, sizeof r->suite_reason, "the suite reported %d tests, but it has %d: its results "
                  "are not the suite's own", r->tests_run, expected);
     else if (status == 1 && r->tests_failed == 0)
-        snprintf(r->suite_reason, sizeof r->suite_reason, "the suite exited with status 1 but reported no failure");
+        grade_msg(r->suite_reason, sizeof r->suite_reason, "the suite exited with status 1 but reported no failure");
     else if (status != 0 && status != 1)
-        snprintf(r->suite_reason, sizeof r->suite_reason, "the suite exited with status %d", status);
+        grade_msg(r->suite_reason, sizeof r->suite_reason, "the suite exited with status %d", status);
     if (r->suite_reason[0]) {
         r->tests_run = r->tests_failed = 0;
         r->failures[0] = '\0';
@@ -143,16 +143,16 @@ static void run_suite(const grade_env *env, const char *tree, const grade_part_s
 {
     char dir[4096], pattern[4200], xml_env[4300], log[4096], bin[4096];
     bool contained = env->submission != NULL;
-    snprintf(dir, sizeof dir, "%s/part%d-suite", env->sandbox_dir, p->part);
+    grade_path(dir, sizeof dir, "%s/part%d-suite", env->sandbox_dir, p->part);
     /* The suite's own folder: it may write its results there, and nothing else beside them. */
     if (!grade_guard_child_dir(dir, &env->sandbox, contained)) {
-        snprintf(r->suite_reason, sizeof r->suite_reason, "cannot create %s", dir);
+        grade_msg(r->suite_reason, sizeof r->suite_reason, "cannot create %s", dir);
         return;
     }
-    snprintf(pattern, sizeof pattern, "%s/%%g.xml", dir);
-    snprintf(xml_env, sizeof xml_env, "CMOCKA_XML_FILE=%s", pattern);
-    snprintf(log, sizeof log, "%s/part%d/suite.log", env->work, p->part);
-    snprintf(bin, sizeof bin, "%s/bin/test-part%d", tree, p->part);
+    grade_path(pattern, sizeof pattern, "%s/%%g.xml", dir);
+    grade_path(xml_env, sizeof xml_env, "CMOCKA_XML_FILE=%s", pattern);
+    grade_path(log, sizeof log, "%s/part%d/suite.log", env->work, p->part);
+    grade_path(bin, sizeof bin, "%s/bin/test-part%d", tree, p->part);
     char *envv[] = {"CMOCKA_MESSAGE_OUTPUT=xml", xml_env, NULL};
     char *argv[] = {bin, NULL};
     grade_run_opts o = {.wall_seconds = SUITE_SECONDS, .cwd = tree, .log_path = log, .log_max = LOG_MAX, .env = envv,
@@ -173,7 +173,7 @@ bool grade_part_dirs(const grade_env *env, int part)
 {
     /* The part's folder is the grader's alone (its logs and films); the children get the sandbox's. */
     char dir[4096];
-    snprintf(dir, sizeof dir, "%s/part%d", env->work, part);
+    grade_path(dir, sizeof dir, "%s/part%d", env->work, part);
     return grade_guard_child_dir(dir, &env->sandbox, false) && chmod(dir, 0700) == 0;
 }
 
@@ -186,14 +186,14 @@ static void sweep_hook(const grade_env *env, const char *tree, int part)
     if (!spec || !needles) return;
     char copy[4096], log[4200], needle_env[65536], tail[512], *argv[32];
     int n = 0;
-    snprintf(copy, sizeof copy, "%s", spec);
+    grade_path(copy, sizeof copy, "%s", spec);
     for (char *save = NULL, *t = strtok_r(copy, " ", &save); t && n < 30; t = strtok_r(NULL, " ", &save)) {
         argv[n++] = t;
         if (n == 1) argv[n++] = "sweep";
     }
     argv[n] = NULL;
-    snprintf(log, sizeof log, "%s/part%d/sweep.log", env->work, part);
-    snprintf(needle_env, sizeof needle_env, "PL_SWEEP_NEEDLES=%s", needles);
+    grade_path(log, sizeof log, "%s/part%d/sweep.log", env->work, part);
+    grade_path(needle_env, sizeof needle_env, "PL_SWEEP_NEEDLES=%s", needles);
     char *envv[] = {needle_env, NULL};
     grade_run_opts o = {.wall_seconds = GRADE_SUITE_SECONDS, .cwd = tree, .log_path = log, .log_max = GRADE_LOG_MAX,
                         .env = envv, .untrusted = env->submission != NULL};
@@ -224,14 +224,14 @@ static void list_cases(const grade_env *env, const grade_part_spec *p, grade_par
 static bool ready(const grade_env *env, char *tree, int part, grade_part_result *r)
 {
     char dir[4096], folder[256], why[sizeof r->suite_reason];
-    snprintf(dir, sizeof dir, "%s/part%d", env->work, part);
-    if (!grade_part_dirs(env, part)) snprintf(r->suite_reason, sizeof r->suite_reason, "cannot create %s", dir);
+    grade_path(dir, sizeof dir, "%s/part%d", env->work, part);
+    if (!grade_part_dirs(env, part)) grade_msg(r->suite_reason, sizeof r->suite_reason, "cannot create %s", dir);
     r->built = !r->suite_reason[0] && (!env->submission || grade_tree_make(env, part, tree, 4096, r)) &&
                build(env, tree, part, r);
-    if (!r->built && !r->suite_reason[0]) snprintf(r->suite_reason, sizeof r->suite_reason, "the part does not build");
+    if (!r->built && !r->suite_reason[0]) grade_msg(r->suite_reason, sizeof r->suite_reason, "the part does not build");
     if (r->built && env->submission && grade_part_folder(env->root, part, folder, sizeof folder) &&
         !grade_inspect_part(tree, folder, dir, true, why, sizeof why))
-        snprintf(r->suite_reason, sizeof r->suite_reason, "%s", why);
+        grade_msg(r->suite_reason, sizeof r->suite_reason, "%s", why);
     for (int i = 0; r->suite_reason[0] && i < r->num_cases; i++)
         snprintf(r->cases[i].reason, sizeof r->cases[i].reason, "%s", r->suite_reason);
     return !r->suite_reason[0];
@@ -241,7 +241,7 @@ void grade_part(const grade_env *env, const grade_spec *spec, const grade_part_s
 {
     list_cases(env, p, r);
     char tree[4096], suite[4200];
-    snprintf(tree, sizeof tree, "%s", env->root);  /* a student's own tree; grade_tree_make sets a submission's */
+    grade_path(tree, sizeof tree, "%s", env->root);  /* a student's own tree; grade_tree_make sets a submission's */
     if (ready(env, tree, p->part, r)) {
         sweep_hook(env, tree, p->part);
         /* A submission's verdicts come from the course's judge (grade_judge.c), never from a process
@@ -251,7 +251,7 @@ void grade_part(const grade_env *env, const grade_spec *spec, const grade_part_s
         for (int i = 0; i < r->num_cases; i++) grade_image_case(env, spec, tree, p->part, &r->cases[i]);
     }
     /* Nothing of this part stays in reach of the next: its tree and its suite's folder go. */
-    snprintf(suite, sizeof suite, "%s/part%d-suite", env->sandbox_dir, p->part);
+    grade_path(suite, sizeof suite, "%s/part%d-suite", env->sandbox_dir, p->part);
     grade_tree_remove(suite);
     if (env->submission) grade_tree_remove(tree);
     r->score = r->unit_score;

@@ -22,7 +22,7 @@
 
 void grade_refs_path(const char *root, const grade_case *k, int part, char *out, size_t size)
 {
-    snprintf(out, size, "%s/reference_images/%spart%d/%s.exr", root, k->hidden ? "hidden/" : "", part, k->name);
+    grade_path(out, size, "%s/reference_images/%spart%d/%s.exr", root, k->hidden ? "hidden/" : "", part, k->name);
 }
 
 /* An adaptive case: the candidate's flags hold -a. */
@@ -78,7 +78,7 @@ static pl_status check_film(const char *path, const grade_case *k, exr_info *inf
     exr_info want;
     if (expected_info(k, info, &want, diag) != PL_OK) {
         char why[256];
-        snprintf(why, sizeof why, "%s", diag->error);
+        grade_msg(why, sizeof why, "%s", diag->error);
         return pl_fail(diag, PL_ERR_INVALID, "%s: the case's reference command does not parse: %s", path, why);
     }
     if (strcmp(want.command, info->command))
@@ -102,7 +102,7 @@ static bool positive(json_t *obj, const char *name, bool needed, double *out)
 /* The reference's JSON beside ref_exr: strict (no duplicate key), loaded whole. */
 static json_t *load_json(const char *ref_exr, char *path, size_t size, pl_diag *diag)
 {
-    snprintf(path, size, "%.*s.json", (int)strlen(ref_exr) - 4, ref_exr);
+    grade_path(path, size, "%.*s.json", (int)strlen(ref_exr) - 4, ref_exr);
     json_error_t err;
     json_t *j = json_load_file(path, JSON_REJECT_DUPLICATES, &err);
     if (!j) pl_fail(diag, PL_ERR_PARSE, "%s:%d: %s", path, err.line, err.text);
@@ -162,7 +162,7 @@ pl_status grade_refs_check(const char *root, const grade_spec *spec, const char 
             if (s == PL_OK) s = check_json(path, k, p + 1, &info, diag);
             if (s != PL_OK) {
                 char why[sizeof diag->error];
-                snprintf(why, sizeof why, "%s", diag->error);
+                grade_msg(why, sizeof why, "%s", diag->error);
                 return pl_fail(diag, s, "the course's reference for part %d case %s is not usable, so nobody is graded: "
                                "%s\n  the course must run: make references FORCE=1 CASES=%s", p + 1, k->name, why, k->name);
             }

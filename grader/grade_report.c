@@ -239,7 +239,7 @@ static void html_trace(FILE *f, const grade_case_result *c)
 pl_status grade_write_html(const grade_result *r, const char *folder, pl_diag *diag)
 {
     char path[4096];
-    snprintf(path, sizeof path, "%s/index.html", folder);
+    grade_path(path, sizeof path, "%s/index.html", folder);
     FILE *f = fopen(path, "w");
     if (!f) return pl_fail(diag, PL_ERR_IO, "%s: cannot write", path);
     fprintf(f, "<!doctype html>\n<html><head><meta charset=\"utf-8\"><title>pathlab grade</title>\n<style>\n"

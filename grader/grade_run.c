@@ -35,7 +35,7 @@ static long processes_of(uid_t uid)
         char path[300];
         struct stat st;
         if (e->d_name[0] < '1' || e->d_name[0] > '9') continue;
-        snprintf(path, sizeof path, "/proc/%s", e->d_name);
+        grade_path(path, sizeof path, "/proc/%s", e->d_name);
         n += stat(path, &st) == 0 && st.st_uid == uid;
     }
     if (d) closedir(d);

@@ -86,23 +86,23 @@ static bool read_suite(xmlDocPtr doc, const char *group, grade_part_result *r, c
     xmlNodePtr root = xmlDocGetRootElement(doc), suite = NULL;
     /* cmocka writes no DTD: one here could only declare entities to expand (amplification). */
     if (!root || doc->intSubset || !is_element(root, "testsuites"))
-        return snprintf(why, size, "expected <testsuites> and no DTD"), false;
+        return grade_msg(why, size, "expected <testsuites> and no DTD"), false;
     for (xmlNodePtr c = root->children; c; c = c->next)
         if (c->type == XML_ELEMENT_NODE) {
-            if (suite || !is_element(c, "testsuite")) return snprintf(why, size, "expected one <testsuite>"), false;
+            if (suite || !is_element(c, "testsuite")) return grade_msg(why, size, "expected one <testsuite>"), false;
             suite = c;
         }
     xmlChar *name = suite ? xmlGetProp(suite, (const xmlChar *)"name") : NULL;
     bool named = name && (!group || !strcmp((const char *)name, group));
     xmlFree(name);
-    if (!named) return snprintf(why, size, "expected one <testsuite name=\"<the file's group>\">"), false;
+    if (!named) return grade_msg(why, size, "expected one <testsuite name=\"<the file's group>\">"), false;
     int run = 0, failed = 0;
     count_tests(suite, r, &run, &failed);
     long tests = count_attribute(suite, "tests"), f = count_attribute(suite, "failures"),
          e = count_attribute(suite, "errors"), s = count_attribute(suite, "skipped");
     if (tests != run || f < 0 || e < 0 || (s < 0 && xmlHasProp(suite, (const xmlChar *)"skipped")) ||
         f + e + (s > 0 ? s : 0) != failed)
-        return snprintf(why, size, "tests=%ld failures=%ld errors=%ld skipped=%ld, but it holds %d tests of which %d did "
+        return grade_msg(why, size, "tests=%ld failures=%ld errors=%ld skipped=%ld, but it holds %d tests of which %d did "
                         "not pass", tests, f, e, s, run, failed), false;
     r->tests_run += run;
     r->tests_failed += failed;
@@ -113,7 +113,7 @@ static bool read_suite(xmlDocPtr doc, const char *group, grade_part_result *r, c
 static bool read_file(const char *dir, const char *file, grade_part_result *r, char *why, size_t size)
 {
     char path[4400], group[256];
-    snprintf(path, sizeof path, "%s/%s", dir, file);
+    grade_path(path, sizeof path, "%s/%s", dir, file);
     snprintf(group, sizeof group, "%.*s", (int)(strlen(file) - 4), file);
     return grade_suite_read_file(path, group, r, why, size);
 }
@@ -125,7 +125,7 @@ bool grade_suite_read_file(const char *path, const char *group, grade_part_resul
                                                            XML_PARSE_NOWARNING) : NULL;
     if (fd >= 0) close(fd);
     bool ok = doc && read_suite(doc, group, r, why, size);
-    if (!doc) snprintf(why, size, "not a regular file under %ld MiB of XML", GRADE_SUITE_XML_MAX >> 20);
+    if (!doc) grade_msg(why, size, "not a regular file under %ld MiB of XML", GRADE_SUITE_XML_MAX >> 20);
     xmlFreeDoc(doc);
     return ok;
 }
@@ -136,7 +136,7 @@ bool grade_suite_read(const char *dir, grade_part_result *r, char *why, size_t s
     snprintf(prefix, sizeof prefix, "part%d: ", r->part);
     DIR *d = opendir(dir);
     bool ok = d != NULL;
-    if (!d) snprintf(reason, sizeof reason, "cannot read the folder");
+    if (!d) grade_msg(reason, sizeof reason, "cannot read the folder");
     for (struct dirent *e; ok && (e = readdir(d));) {
         const char *n = e->d_name;
         size_t len = strlen(n);
@@ -144,13 +144,13 @@ bool grade_suite_read(const char *dir, grade_part_result *r, char *why, size_t s
         /* What cmocka names a group's file: "part<N>: <group>.xml", no path, no other file. */
         if (len < strlen(prefix) + 5 || len > 200 || strncmp(n, prefix, strlen(prefix)) || strcmp(n + len - 4, ".xml") ||
             strchr(n, '/')) {
-            snprintf(reason, sizeof reason, "the suite writes 'part%d: <group>.xml' files only, not this one", r->part);
+            grade_msg(reason, sizeof reason, "the suite writes 'part%d: <group>.xml' files only, not this one", r->part);
             ok = false;
         }
         else ok = read_file(dir, n, r, reason, sizeof reason);
-        if (!ok) snprintf(why, size, "%.200s: %s", n, reason);
+        if (!ok) grade_msg(why, size, "%.200s: %s", n, reason);
     }
     if (d) closedir(d);
-    if (!d) snprintf(why, size, "%s: %s", dir, reason);
+    if (!d) grade_msg(why, size, "%s: %s", dir, reason);
     return ok;
 }

@@ -30,7 +30,7 @@ static bool run_quiet(char *const argv[], const char *log)
 bool grade_part_folder(const char *root, int n, char *out, size_t size)
 {
     char parts[4096], prefix[16];
-    snprintf(parts, sizeof parts, "%s/parts", root);
+    grade_path(parts, sizeof parts, "%s/parts", root);
     snprintf(prefix, sizeof prefix, "part%d_", n);
     DIR *d = opendir(parts);
     if (!d) return false;
@@ -45,29 +45,29 @@ bool grade_part_folder(const char *root, int n, char *out, size_t size)
 bool grade_tree_course_build(const grade_env *env, const char *parts, char *why, size_t size)
 {
     char course[4200], log[4200];
-    snprintf(course, sizeof course, "%s/course", env->work);
-    snprintf(log, sizeof log, "%s/course-build.log", env->work);
+    grade_path(course, sizeof course, "%s/course", env->work);
+    grade_path(log, sizeof log, "%s/course-build.log", env->work);
     char *rm[] = {"rm", "-rf", course, NULL}, *mk[] = {"mkdir", "-p", course, NULL};
     if (!run_quiet(rm, NULL) || !run_quiet(mk, NULL))
-        return snprintf(why, size, "cannot create %s", course), false;
+        return grade_msg(why, size, "cannot create %s", course), false;
     static const char *const copied[] = {"Makefile", "framework", "parts", "tests", "tools", "third_party", "scenes",
                                          "VERSION"};
     for (size_t k = 0; k < sizeof copied / sizeof copied[0]; k++) {
         char from[4200];
         struct stat st;
-        snprintf(from, sizeof from, "%s/%s", env->root, copied[k]);
+        grade_path(from, sizeof from, "%s/%s", env->root, copied[k]);
         char *cp[] = {"cp", "-a", from, course, NULL};
-        if (stat(from, &st) == 0 && !run_quiet(cp, log)) return snprintf(why, size, "cannot copy %s", from), false;
+        if (stat(from, &st) == 0 && !run_quiet(cp, log)) return grade_msg(why, size, "cannot copy %s", from), false;
     }
     /* Objects `bin/grade --prebuild` made when the image was set up (setup.sh): copied with their
      * times, make finds them newer than the sources and only links (a source edited since is rebuilt). */
     char prebuilt[4200], self[4200];
     struct stat st;
-    snprintf(prebuilt, sizeof prebuilt, "%s/" GRADE_PREBUILD "/course/build", env->root);
-    snprintf(self, sizeof self, "%s/" GRADE_PREBUILD, env->root);
+    grade_path(prebuilt, sizeof prebuilt, "%s/" GRADE_PREBUILD "/course/build", env->root);
+    grade_path(self, sizeof self, "%s/" GRADE_PREBUILD, env->root);
     char *seed[] = {"cp", "-a", prebuilt, course, NULL};
     if (strcmp(self, env->work) && stat(prebuilt, &st) == 0 && S_ISDIR(st.st_mode) && !run_quiet(seed, log))
-        return snprintf(why, size, "cannot copy %s", prebuilt), false;
+        return grade_msg(why, size, "cannot copy %s", prebuilt), false;
     /* The renderer, and the suites of the parts to grade only (the other suites' objects are unused). */
     char suites[GRADE_NUM_PARTS][32];
     char *make[12 + GRADE_NUM_PARTS] = {"make", "-C", course, GRADE_MAKE_ARGS, "bin/pathtracer"};
@@ -78,7 +78,7 @@ bool grade_tree_course_build(const grade_env *env, const char *parts, char *why,
     grade_run_opts o = {.wall_seconds = GRADE_COURSE_BUILD_SECONDS, .log_path = log, .log_max = GRADE_LOG_MAX};
     grade_run_result rr = grade_run(make, &o);
     if (!rr.exited || rr.status != 0)
-        return snprintf(why, size, "the course's own tree does not build with the grader's flags (see %s)", log), false;
+        return grade_msg(why, size, "the course's own tree does not build with the grader's flags (see %s)", log), false;
     return true;
 }
 
@@ -92,20 +92,23 @@ static bool copy_submitted_part(const char *from, const char *to, const char *fo
 {
     DIR *d = opendir(from);
     if (!d) {
-        snprintf(r->suite_reason, sizeof r->suite_reason, "cannot read the submission's parts/%s", folder);
+        grade_msg(r->suite_reason, sizeof r->suite_reason, "cannot read the submission's parts/%s", folder);
         return false;
     }
     bool ok = mkdir(to, 0755) == 0;
-    if (!ok) snprintf(r->suite_reason, sizeof r->suite_reason, "cannot create %s", to);
+    if (!ok) grade_msg(r->suite_reason, sizeof r->suite_reason, "cannot create %s", to);
     for (struct dirent *e; ok && (e = readdir(d));) {
         if (e->d_name[0] == '.' && (!e->d_name[1] || (e->d_name[1] == '.' && !e->d_name[2]))) continue;
         char src[4400], dst[4400];
         struct stat st;
-        snprintf(src, sizeof src, "%s/%s", from, e->d_name);
-        snprintf(dst, sizeof dst, "%s/%s", to, e->d_name);
+        if (!grade_path(src, sizeof src, "%s/%s", from, e->d_name) || !grade_path(dst, sizeof dst, "%s/%s", to, e->d_name)) {
+            grade_msg(r->suite_reason, sizeof r->suite_reason, "parts/%s/%.100s...: the path is too long", folder, e->d_name);
+            ok = false;
+            break;
+        }
         if (lstat(src, &st) != 0 || S_ISDIR(st.st_mode)) continue;
         if (!S_ISREG(st.st_mode)) {
-            snprintf(r->suite_reason, sizeof r->suite_reason,
+            grade_msg(r->suite_reason, sizeof r->suite_reason,
                      "parts/%s/%.100s is %s, not a file: submit the file itself", folder, e->d_name,
                      S_ISLNK(st.st_mode) ? "a symbolic link" : "a special file");
             ok = false;
@@ -116,7 +119,7 @@ static bool copy_submitted_part(const char *from, const char *to, const char *fo
         pl_diag diag = pl_diag_default();
         ok = file_read_all(src, "submitted file", SUBMITTED_FILE_MAX, &data, &len, &diag) == PL_OK &&
              file_write_atomic(dst, data, len, &diag) == PL_OK;
-        if (!ok) snprintf(r->suite_reason, sizeof r->suite_reason, "%.250s", diag.error);
+        if (!ok) grade_msg(r->suite_reason, sizeof r->suite_reason, "%.250s", diag.error);
         free(data);
     }
     closedir(d);
@@ -128,7 +131,7 @@ static bool copy_submitted_part(const char *from, const char *to, const char *fo
 static bool list_sources(const char *base, const char *folder, char *list, size_t size)
 {
     char dir[4200];
-    snprintf(dir, sizeof dir, "%s/parts/%s", base, folder);
+    grade_path(dir, sizeof dir, "%s/parts/%s", base, folder);
     DIR *d = opendir(dir);
     bool ok = d != NULL;
     for (struct dirent *e; ok && (e = readdir(d));) {
@@ -143,7 +146,7 @@ static bool list_sources(const char *base, const char *folder, char *list, size_
 bool grade_tree_sources(const grade_env *env, const char *tree, int n, char *list, size_t size)
 {
     char course[4200];
-    snprintf(course, sizeof course, "%s/course", env->work);
+    grade_path(course, sizeof course, "%s/course", env->work);
     snprintf(list, size, "PARTS_SRC=");
     for (int k = 1; k <= GRADE_NUM_PARTS; k++) {
         char folder[256];
@@ -169,7 +172,7 @@ static bool add_course_pieces(const grade_env *env, const char *tree, const char
         "done\n"
         "rm -rf \"$tree/build/release/parts/$own\" && rm -f \"$tree\"/build/release/parts/*/*.d\n";
     char course[4200];
-    snprintf(course, sizeof course, "%s/course", env->work);
+    grade_path(course, sizeof course, "%s/course", env->work);
     char *argv[] = {"sh", "-c", (char *)script, "sh", course, (char *)tree, (char *)folder, NULL};
     return run_quiet(argv, log);
 }
@@ -177,11 +180,11 @@ static bool add_course_pieces(const grade_env *env, const char *tree, const char
 bool grade_tree_make(const grade_env *env, int n, char *tree, size_t size, grade_part_result *r)
 {
     char folder[256], from[4200], to[4300], log[4200], course[4200];
-    snprintf(tree, size, "%s/part%d", env->sandbox_dir, n);
-    snprintf(log, sizeof log, "%s/part%d/tree.log", env->work, n);
-    snprintf(course, sizeof course, "%s/course", env->work);
+    grade_path(tree, size, "%s/part%d", env->sandbox_dir, n);
+    grade_path(log, sizeof log, "%s/part%d/tree.log", env->work, n);
+    grade_path(course, sizeof course, "%s/course", env->work);
     if (!grade_part_folder(course, n, folder, sizeof folder))
-        return snprintf(r->suite_reason, sizeof r->suite_reason, "no folder for part %d under parts/", n), false;
+        return grade_msg(r->suite_reason, sizeof r->suite_reason, "no folder for part %d under parts/", n), false;
     grade_tree_remove(tree);
     char *mk[] = {"mkdir", "-p", tree, NULL};
     if (!run_quiet(mk, NULL)) return false;
@@ -189,17 +192,17 @@ bool grade_tree_make(const grade_env *env, int n, char *tree, size_t size, grade
                                          "build"};
     for (size_t k = 0; k < sizeof copied / sizeof copied[0]; k++) {
         struct stat st;
-        snprintf(from, sizeof from, "%s/%s", course, copied[k]);
+        grade_path(from, sizeof from, "%s/%s", course, copied[k]);
         char *cp[] = {"cp", "-a", from, tree, NULL};
         if (stat(from, &st) == 0 && !run_quiet(cp, log)) return false;
     }
-    snprintf(from, sizeof from, "%s/parts/%s", env->submission, folder);
-    snprintf(to, sizeof to, "%s/parts", tree);
+    grade_path(from, sizeof from, "%s/parts/%s", env->submission, folder);
+    grade_path(to, sizeof to, "%s/parts", tree);
     struct stat st;
     if (stat(from, &st) != 0 || !S_ISDIR(st.st_mode))
-        return snprintf(r->suite_reason, sizeof r->suite_reason, "the submission has no parts/%s folder", folder), false;
+        return grade_msg(r->suite_reason, sizeof r->suite_reason, "the submission has no parts/%s folder", folder), false;
     if (mkdir(to, 0755) != 0) return false;
-    snprintf(to, sizeof to, "%s/parts/%s", tree, folder);
+    grade_path(to, sizeof to, "%s/parts/%s", tree, folder);
     if (!copy_submitted_part(from, to, folder, r) || !add_course_pieces(env, tree, folder, log)) return false;
     /* Student code runs as `nobody` when the grader is root: give it the tree, only. */
     if (env->sandbox.as_other_user) {
@@ -215,8 +218,8 @@ bool grade_tree_seal(const grade_env *env, const char *tree)
 {
     if (!env->sandbox.as_other_user) return true;
     char bin[4200], objs[4200];
-    snprintf(bin, sizeof bin, "%s/bin", tree);
-    snprintf(objs, sizeof objs, "%s/build", tree);
+    grade_path(bin, sizeof bin, "%s/bin", tree);
+    grade_path(objs, sizeof objs, "%s/build", tree);
     char *chown[] = {"chown", "-R", "0:0", bin, objs, NULL};
     return run_quiet(chown, NULL);
 }

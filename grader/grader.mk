@@ -33,10 +33,8 @@ $(BIN)/grade-probe: $(BUILD)/grader/probe_main.o
 $(BIN)/test-grader: $(GRADER_OBJ) | $(BIN)/grade-probe
 $(BIN)/test-grader: LDLIBS += $(GRADER_LIBS)
 test-grader: $(BIN)/grade
-# The grader's paths and messages live in fixed buffers on purpose: a long path is cut in a message
-# (or makes a file not found, which fails safe), never overflows. GCC's truncation analysis, which
-# sees more at -O1 (SAN=1) than at -O2, would make every such snprintf an error under WERROR=1.
-$(BUILD)/grader/%.o: CFLAGS += $(NO_FORMAT_TRUNCATION)
+# The grader builds with GCC's -Wformat-truncation on: paths go through grade_path (refused, never
+# cut) and messages through grade_msg (cut on purpose, marked), both in grader/grade_fmt.c.
 
 .PHONY: grade test-report test-grader-process
 grade: $(BIN)/grade  ## grade your parts on the public cases (PARTS=3: one part; SEED=N: repeat a run); report in out/grade/

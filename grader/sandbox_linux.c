@@ -17,6 +17,7 @@
  * clone, whose flags the filter can read). Allowed: memory, threads (clone with CLONE_THREAD),
  * futexes, reading (open without write, create or truncate flags; stat, getdents, readlink),
  * writing to descriptors already open, the clock, signals to itself, exit. */
+#include "grade.h"
 #include "sandbox.h"
 #include <dirent.h>
 #include <errno.h>
@@ -117,7 +118,7 @@ static int open_program(const char *name)
     for (const char *p = path; *p;) {
         size_t len = strcspn(p, ":");
         char full[4096];
-        snprintf(full, sizeof full, "%.*s/%s", (int)len, p, name);
+        grade_path(full, sizeof full, "%.*s/%s", (int)len, p, name);
         int fd = access(full, X_OK) == 0 ? open(full, O_PATH | O_CLOEXEC) : -1;
         if (fd >= 0) return fd;
         p += len + (p[len] == ':');
@@ -142,7 +143,7 @@ bool sandbox_filter_supported(char *why, size_t size)
     int status = 1;
     if (pid > 0) waitpid(pid, &status, 0);
     bool ok = pid > 0 && WIFEXITED(status) && WEXITSTATUS(status) == 0;
-    if (!ok) snprintf(why, size, "the kernel refused the seccomp filter (is seccomp enabled? a container "
+    if (!ok) grade_msg(why, size, "the kernel refused the seccomp filter (is seccomp enabled? a container "
                                  "profile that forbids seccomp(2)?)");
     return ok;
 }
@@ -166,7 +167,7 @@ static int kill_children_once(void)
     for (struct dirent *e; d && (e = readdir(d));) {
         char path[300], stat[512];
         if (e->d_name[0] < '1' || e->d_name[0] > '9') continue;
-        snprintf(path, sizeof path, "/proc/%s/stat", e->d_name);
+        grade_path(path, sizeof path, "/proc/%s/stat", e->d_name);
         FILE *f = fopen(path, "r");
         size_t n = f ? fread(stat, 1, sizeof stat - 1, f) : 0;
         if (f) fclose(f);

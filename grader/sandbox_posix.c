@@ -4,6 +4,7 @@
  * the autograder (bin/grade --submission as root) refuses to grade without it and says what to
  * install (grade_main.c). Orphans cannot be adopted here: a child's process group is killed, and as
  * root every process of the sandbox's user (grade_run.c). */
+#include "grade.h"
 #include "sandbox.h"
 #include <stdio.h>
 #include <sys/wait.h>
@@ -11,7 +12,7 @@
 
 bool sandbox_filter_supported(char *why, size_t size)
 {
-    snprintf(why, size, "this grader was built without libseccomp (install libseccomp-dev: tools/setup, then "
+    grade_msg(why, size, "this grader was built without libseccomp (install libseccomp-dev: tools/setup, then "
                         "rebuild bin/grade)");
     return false;
 }

@@ -9,6 +9,7 @@
 #include "../../grader/grade_suite.h"
 #include "../../framework/file.h"
 #include "../../framework/exr.h"
+#include "../../framework/utf8.h"
 #include <jansson.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -252,6 +253,32 @@ static void test_suite__a_long_message_is_cut_between_characters(void **state)
     assert_null(strstr(r.failures, "\xe2"));
 }
 
+/* ---- the grader's two ways to format into a fixed buffer (grade_fmt.c) ----------------------- */
+
+/* A path that does not fit is refused, never cut (a cut path names another file); a message is
+ * cut with "..." on a character boundary, however the cut falls in a multi-byte character. */
+static void test_fmt__a_long_path_is_refused_a_long_message_cut_between_characters(void **state)
+{
+    (void)state;
+    char path[16];
+    assert_true(grade_path(path, sizeof path, "%s/%s", "work", "part1"));
+    assert_string_equal(path, "work/part1");
+    assert_false(grade_path(path, sizeof path, "%s/%s", "work", "part1/tree/bin"));
+    assert_string_equal(path, "");
+    for (int shift = 0; shift < 4; shift++) {
+        char msg[12], text[64];
+        /* shift ASCII bytes, then 4-byte characters (U+1F600): the cut lands at each byte of one. */
+        snprintf(text, sizeof text, "%.*s%s", shift, "abc", "\xf0\x9f\x98\x80\xf0\x9f\x98\x80\xf0\x9f\x98\x80");
+        grade_msg(msg, sizeof msg, "%s", text);
+        size_t len = strlen(msg);
+        assert_true(len >= 3 && !strcmp(msg + len - 3, "..."));
+        assert_int_equal(utf8_valid_prefix(msg, len), len);
+    }
+    char whole[12];
+    grade_msg(whole, sizeof whole, "%s", "fits");
+    assert_string_equal(whole, "fits");
+}
+
 /* ---- results.json -------------------------------------------------------------------------- */
 
 /* Every part's entries are present, whatever bytes the messages hold. Before, one invalid byte in a
@@ -339,6 +366,7 @@ int readers_tests(void)
         cmocka_unit_test(test_suite__every_testcase_counted_and_skipped_is_not_passed),
         cmocka_unit_test(test_suite__only_the_files_the_suite_writes),
         cmocka_unit_test(test_suite__a_long_message_is_cut_between_characters),
+        cmocka_unit_test(test_fmt__a_long_path_is_refused_a_long_message_cut_between_characters),
         cmocka_unit_test(test_report__every_entry_present_for_hostile_messages),
         cmocka_unit_test(test_grade__a_run_ends_cleanly_with_leak_detection),
     };
