@@ -110,6 +110,50 @@ static pl_status write_outputs(output_set *out, const options *o, const sidecar_
     return output_write(out, OUTPUT_IMAGE, OUTPUT_SIDECAR, diag);
 }
 
+/* A render's pixels: the image, and the film (every pixel's accumulators) when they are kept. */
+typedef struct {
+    bool exr;           /* the film is kept: an EXR output, or the grader's --film-fd */
+    int w, h;           /* the window (--crop), else the image */
+    image img;
+    film fm;
+    int *samples;       /* camera samples per pixel: the rate map */
+    render_stats stats;
+} frame;
+
+static void frame_free(frame *fr)
+{
+    free(fr->samples);
+    image_free(&fr->img);
+    film_free(&fr->fm);
+}
+
+/* Renders every pixel of the window into fr (freed by the caller, whatever happens); 0 or the exit
+ * code. The film is kept only for an EXR, which stores it: other renders resolve each pixel into
+ * the image as it finishes (render_image): the same pixels, 144 bytes a pixel less. */
+static int render_frame(render_ctx *ctx, const options *o, const char *prog, frame *fr, pl_diag *diag)
+{
+    fr->exr = (o->output && file_has_extension(o->output, ".exr")) || o->film_fd >= 0;
+    fr->w = ctx->x1 - ctx->x0;
+    fr->h = ctx->y1 - ctx->y0;
+    fr->samples = calloc((size_t)fr->w * (size_t)fr->h, sizeof *fr->samples);
+    if (!fr->samples || image_alloc(&fr->img, fr->w, fr->h) != PL_OK || (fr->exr && film_alloc(&fr->fm, fr->w, fr->h) != PL_OK)) {
+        fprintf(stderr, "%s: out of memory for a %dx%d image\n", prog, fr->w, fr->h);
+        return 1;
+    }
+    pl_status rendered = fr->exr ? render_film(ctx, &fr->fm, &fr->stats, diag)
+                                 : render_image(ctx, &fr->img, fr->samples, &fr->stats, diag);
+    if (rendered != PL_OK || (fr->exr && film_to_image(&fr->fm, &fr->img, fr->samples, diag) != PL_OK))
+        return fail(prog, diag, 1);
+    /* --film-fd: the film to the grader's pipe, and no file at all. */
+    const render_stats *st = &fr->stats;
+    output_film_counts counts = {st->rays, st->node_visits, st->prim_tests, st->samples};
+    if (o->film_fd >= 0 && output_film_send(o->film_fd, &fr->fm, &counts, diag) != PL_OK) return fail(prog, diag, 1);
+    if (st->bad_pixels)
+        fprintf(stderr, "%s: warning: %d pixels have NaN, infinite or negative radiance (first at x=%d y=%d, "
+                        "counted from the bottom-left)\n", prog, st->bad_pixels, st->first_bad_x, st->first_bad_y);
+    return 0;
+}
+
 /* Everything after the options are parsed; owns no memory the caller must free. The story of a
  * render: plan the outputs, load, build, render (or trace one pixel), write them as one unit. */
 static int run(const options *o, const char *prog)
@@ -124,9 +168,7 @@ static int run(const options *o, const char *prog)
         return code;
     }
     double load_seconds = clock_seconds() - t0;
-    image img = {0};
-    film fm = {0};
-    int *samples = NULL;
+    frame fr = {0};
     heatmap heat = {0};
     accel a;
     memset(&a, 0, sizeof a);
@@ -139,38 +181,18 @@ static int run(const options *o, const char *prog)
     /* The heat map is drawn now (it reads the BVH's visit counter) but written with the other files. */
     if (o->heatmap && heatmap_render(&ctx, out.path[OUTPUT_HEATMAP], &heat, &diag) != PL_OK) { code = fail(prog, &diag, 1); goto done; }
 
-    /* Every pixel's accumulators are kept only for an EXR, which stores them; other renders resolve
-     * each pixel into the image as it finishes (render_image): same pixels, 144 bytes a pixel less. */
-    bool exr = (o->output && file_has_extension(o->output, ".exr")) || o->film_fd >= 0;
-    int w = ctx.x1 - ctx.x0, h = ctx.y1 - ctx.y0;  /* the window (--crop), else the image */
-    samples = calloc((size_t)w * (size_t)h, sizeof *samples);
-    if (!samples || image_alloc(&img, w, h) != PL_OK || (exr && film_alloc(&fm, w, h) != PL_OK)) {
-        fprintf(stderr, "%s: out of memory for a %dx%d image\n", prog, w, h);
-        code = 1;
-        goto done;
-    }
-    render_stats stats;
-    pl_status rendered = exr ? render_film(&ctx, &fm, &stats, &diag) : render_image(&ctx, &img, samples, &stats, &diag);
-    if (rendered != PL_OK || (exr && film_to_image(&fm, &img, samples, &diag) != PL_OK)) { code = fail(prog, &diag, 1); goto done; }
-    /* --film-fd: the film to the grader's pipe, and no file at all. */
-    output_film_counts counts = {stats.rays, stats.node_visits, stats.prim_tests, stats.samples};
-    if (o->film_fd >= 0 && output_film_send(o->film_fd, &fm, &counts, &diag) != PL_OK) { code = fail(prog, &diag, 1); goto done; }
-    if (stats.bad_pixels)
-        fprintf(stderr, "%s: warning: %d pixels have NaN, infinite or negative radiance (first at x=%d y=%d, "
-                        "counted from the bottom-left)\n", prog, stats.bad_pixels, stats.first_bad_x, stats.first_bad_y);
+    if ((code = render_frame(&ctx, o, prog, &fr, &diag)) != 0) goto done;
     double t1 = clock_seconds();
-    rate_map rates = {samples, w, h, o->spp};
-    sidecar_info info = {&ctx, load_seconds, a.build_seconds, &stats, o->adaptive ? samples : NULL};
+    rate_map rates = {fr.samples, fr.w, fr.h, o->spp};
+    sidecar_info info = {&ctx, load_seconds, a.build_seconds, &fr.stats, o->adaptive ? fr.samples : NULL};
     exr_info provenance;
-    exr_image exr_out = {&fm, &provenance};
-    if (exr && range_info(o, &provenance, &diag) != PL_OK) { code = fail(prog, &diag, 1); goto done; }
-    if (write_outputs(&out, o, &info, &rates, &exr_out, &img, &heat, &diag) != PL_OK) { code = fail(prog, &diag, 1); goto done; }
-    if (!o->quiet) print_summary(o, &s, &a, &stats, &out, load_seconds, clock_seconds() - t1);
+    exr_image exr_out = {&fr.fm, &provenance};
+    if (fr.exr && range_info(o, &provenance, &diag) != PL_OK) { code = fail(prog, &diag, 1); goto done; }
+    if (write_outputs(&out, o, &info, &rates, &exr_out, &fr.img, &heat, &diag) != PL_OK) { code = fail(prog, &diag, 1); goto done; }
+    if (!o->quiet) print_summary(o, &s, &a, &fr.stats, &out, load_seconds, clock_seconds() - t1);
 done:
-    free(samples);
+    frame_free(&fr);
     heatmap_free(&heat);
-    image_free(&img);
-    film_free(&fm);
     accel_free(&a);
     scene_free(&s);
     output_free(&out);

@@ -227,21 +227,24 @@ static void html_escape(FILE *f, const char *text)
     free(valid);
 }
 
+/* Text between an opening and a closing tag: the one way any grader or student text enters the page. */
+static void html_wrapped(FILE *f, const char *open, const char *text, const char *close)
+{
+    fputs(open, f);
+    html_escape(f, text);
+    fputs(close, f);
+}
+
 static void html_trace(FILE *f, const grade_case_result *c)
 {
     if (!c->trace[0]) return;
-    fprintf(f, "<p>The pixels that differ most, and the command that shows every path of each as your render "
-               "computed it (handout: \"Debugging with a trace\"):</p><pre>");
-    html_escape(f, c->trace);
-    fprintf(f, "</pre>\n");
+    html_wrapped(f, "<p>The pixels that differ most, and the command that shows every path of each as your render "
+                    "computed it (handout: \"Debugging with a trace\"):</p><pre>", c->trace, "</pre>\n");
 }
 
-pl_status grade_write_html(const grade_result *r, const char *folder, pl_diag *diag)
+/* The page's head, its style sheet and the paragraph on how cases are judged. */
+static void html_head(FILE *f, const grade_result *r)
 {
-    char path[4096];
-    grade_path(path, sizeof path, "%s/index.html", folder);
-    FILE *f = fopen(path, "w");
-    if (!f) return pl_fail(diag, PL_ERR_IO, "%s: cannot write", path);
     fprintf(f, "<!doctype html>\n<html><head><meta charset=\"utf-8\"><title>pathlab grade</title>\n<style>\n"
                "body{font:15px/1.45 system-ui,sans-serif;margin:24px;color:#222;max-width:1200px}\n"
                "table.sum td,table.sum th{padding:4px 12px;border-bottom:1px solid #ddd;text-align:left}\n"
@@ -256,11 +259,12 @@ pl_status grade_write_html(const grade_result *r, const char *folder, pl_diag *d
                "reference, block by block; a case fails only when the difference is too large to be noise (a "
                "correct part fails a case less than once in a thousand gradings).</p>\n",
             (unsigned long long)r->seed, r->seconds);
-    if (r->unprotected[0]) {
-        fprintf(f, "<p class=\"fail\">Unavailable protections: ");
-        html_escape(f, r->unprotected);
-        fprintf(f, "</p>\n");
-    }
+    if (r->unprotected[0]) html_wrapped(f, "<p class=\"fail\">Unavailable protections: ", r->unprotected, "</p>\n");
+}
+
+/* The summary table: a row per part, linked to its section. */
+static void html_summary(FILE *f, const grade_result *r)
+{
     fprintf(f, "<table class=\"sum\"><tr><th>part</th><th>unit tests</th><th>image cases</th><th>score</th></tr>\n");
     for (int i = 0; i < r->num_parts; i++) {
         const grade_part_result *p = &r->parts[i];
@@ -271,54 +275,60 @@ pl_status grade_write_html(const grade_result *r, const char *folder, pl_diag *d
                 p->max_score);
     }
     fprintf(f, "</table>\n");
+}
+
+/* A part's unit tests: why they earned nothing (with the compiler's last words), or the failures. */
+static void html_unit_tests(FILE *f, const grade_part_result *p)
+{
+    if (p->suite_reason[0]) {
+        html_wrapped(f, "<p class=\"fail\">Unit tests: 0 points: ", p->suite_reason, "</p>\n");
+        if (p->build_output[0]) html_wrapped(f, "<p>The end of the compiler's output:</p><pre>", p->build_output, "</pre>\n");
+        return;
+    }
+    fprintf(f, "<p class=\"%s\">Unit tests: %d of %d passed</p>\n", p->tests_failed ? "fail" : "pass",
+            p->tests_run - p->tests_failed, p->tests_run);
+    if (p->failures[0]) html_wrapped(f, "<pre>", p->failures, "</pre>\n");
+}
+
+/* One image case: its verdict in words, the trace command, and the three pictures side by side. */
+static void html_case(FILE *f, const grade_case_result *c)
+{
+    static const char *const captions[3] = {
+        "your render", "the reference",
+        "difference per block: <span class=\"scale\"></span> darker &harr; brighter (t from -5 to +5)"};
+    static const char *const alts[3] = {"your render", "the reference", "difference per block"};
+    char text[2048];
+    case_text(c, text, sizeof text);
+    fprintf(f, "<div class=\"case\"><h3>%s%s: <span class=\"%s\">%s</span></h3>", c->spec->name,
+            c->spec->hidden ? " (hidden)" : "", c->pass ? "pass" : "fail", c->pass ? "passes" : "fails");
+    html_wrapped(f, "<p><i>", c->spec->shows, "</i></p>");
+    html_wrapped(f, "<p>", text, "</p>\n");
+    html_trace(f, c);
+    if (c->ran && c->images[0][0]) {
+        fprintf(f, "<div class=\"imgs\">");
+        for (int m = 0; m < 3; m++)
+            if (c->images[m][0])
+                fprintf(f, "<figure><img src=\"%s\" alt=\"%s\"><figcaption>%s</figcaption></figure>", c->images[m],
+                        alts[m], captions[m]);
+        fprintf(f, "</div>\n");
+    }
+    fprintf(f, "</div>\n");
+}
+
+pl_status grade_write_html(const grade_result *r, const char *folder, pl_diag *diag)
+{
+    char path[4096];
+    if (!grade_path(path, sizeof path, "%s/index.html", folder))
+        return pl_fail(diag, PL_ERR_IO, "%s: the report's path is too long", folder);
+    FILE *f = fopen(path, "w");
+    if (!f) return pl_fail(diag, PL_ERR_IO, "%s: cannot write", path);
+    html_head(f, r);
+    html_summary(f, r);
     for (int i = 0; i < r->num_parts; i++) {
         const grade_part_result *p = &r->parts[i];
         fprintf(f, "<h2 id=\"part%d\">Part %d: %.1f / %.1f</h2>\n", p->part, p->part, p->score, p->max_score);
-        if (p->suite_reason[0]) {
-            fprintf(f, "<p class=\"fail\">Unit tests: 0 points: ");
-            html_escape(f, p->suite_reason);
-            fprintf(f, "</p>\n");
-            if (p->build_output[0]) {
-                fprintf(f, "<p>The end of the compiler's output:</p><pre>");
-                html_escape(f, p->build_output);
-                fprintf(f, "</pre>\n");
-            }
-        }
-        else {
-            fprintf(f, "<p class=\"%s\">Unit tests: %d of %d passed</p>\n", p->tests_failed ? "fail" : "pass",
-                    p->tests_run - p->tests_failed, p->tests_run);
-            if (p->failures[0]) {
-                fprintf(f, "<pre>");
-                html_escape(f, p->failures);
-                fprintf(f, "</pre>\n");
-            }
-        }
-        for (int k = 0; k < p->num_cases; k++) {
-            const grade_case_result *c = &p->cases[k];
-            char text[2048];
-            case_text(c, text, sizeof text);
-            fprintf(f, "<div class=\"case\"><h3>%s%s: <span class=\"%s\">%s</span></h3><p><i>", c->spec->name,
-                    c->spec->hidden ? " (hidden)" : "", c->pass ? "pass" : "fail",
-                    c->pass ? "passes" : "fails");
-            html_escape(f, c->spec->shows);
-            fprintf(f, "</i></p><p>");
-            html_escape(f, text);
-            fprintf(f, "</p>\n");
-            html_trace(f, c);
-            if (c->ran && c->images[0][0]) {
-                static const char *const captions[3] = {
-                    "your render", "the reference",
-                    "difference per block: <span class=\"scale\"></span> darker &harr; brighter (t from -5 to +5)"};
-                fprintf(f, "<div class=\"imgs\">");
-                static const char *const alts[3] = {"your render", "the reference", "difference per block"};
-                for (int m = 0; m < 3; m++)
-                    if (c->images[m][0])
-                        fprintf(f, "<figure><img src=\"%s\" alt=\"%s\"><figcaption>%s</figcaption></figure>", c->images[m],
-                                alts[m], captions[m]);
-                fprintf(f, "</div>\n");
-            }
-            fprintf(f, "</div>\n");
-        }
+        html_unit_tests(f, p);
+        for (int k = 0; k < p->num_cases; k++) html_case(f, &p->cases[k]);
     }
     fprintf(f, "</body></html>\n");
     if (fclose(f) != 0) return pl_fail(diag, PL_ERR_IO, "%s: cannot write", path);
