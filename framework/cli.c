@@ -121,11 +121,60 @@ static char *join_args(int argc, char **argv)
     return s;
 }
 
+/* ---- flags: each parser takes the flag at argv[i] and the values after it ---------------------- */
+
+/* VALUE(k): the k-th value after the flag at argv[i], or NULL when the command line ends first (the
+ * parsers then say "expected ..." instead of reading past argv). */
+#define VALUE(k) (i + (k) < argc ? argv[i + (k)] : NULL)
+
+/* CS184's flags (-s, -l, -t, -m, -o, -e, -b, -d, -f, -c, -r, -a, -H, -v, -q): the number of values
+ * the flag argv[i] takes, or -1 when it is none of them; *s says whether they parsed. */
+static int parse_cs184_flag(int argc, char **argv, int i, options *o, pl_status *s, pl_diag *d)
+{
+    const char *a = argv[i];
+    int taken = 0;
+    if (!strcmp(a, "-s")) *s = parse_int(a, VALUE(1), 1, 1 << 24, &o->spp, d), taken = 1;
+    else if (!strcmp(a, "-l")) *s = parse_int(a, VALUE(1), 1, 1 << 20, &o->light_samples, d), taken = 1;
+    else if (!strcmp(a, "-t") || !strcmp(a, "--threads")) *s = parse_int(a, VALUE(1), 1, 1024, &o->threads, d), taken = 1;
+    else if (!strcmp(a, "-m")) *s = parse_int(a, VALUE(1), 0, 100000, &o->max_depth, d), taken = 1;
+    else if (!strcmp(a, "-o")) {
+        int v = 0;
+        *s = parse_int(a, VALUE(1), 0, 1, &v, d), taken = 1;
+        o->accumulate = v == 1;
+    }
+    else if (!strcmp(a, "-e")) { if (!VALUE(1)) *s = pl_fail(d, PL_ERR_INVALID, "-e: expected a file name"); o->envmap = VALUE(1); taken = 1; }
+    else if (!strcmp(a, "-b")) {  /* only a given lens replaces the camera's (camera.h) */
+        *s = parse_float(a, VALUE(1), 0.0f, &o->lens_radius, d), taken = 1;
+        o->lens_radius_given = true;
+    }
+    else if (!strcmp(a, "-d")) {
+        *s = parse_float(a, VALUE(1), 0.0f, &o->focal_distance, d), taken = 1;
+        o->focal_distance_given = true;
+    }
+    else if (!strcmp(a, "-f")) { if (!VALUE(1)) *s = pl_fail(d, PL_ERR_INVALID, "-f: expected an output file name"); o->output = VALUE(1); taken = 1; }
+    else if (!strcmp(a, "-c")) { if (!VALUE(1)) *s = pl_fail(d, PL_ERR_INVALID, "-c: expected a camera settings file"); o->camera_file = VALUE(1); taken = 1; }
+    else if (!strcmp(a, "-r")) {
+        *s = parse_int("-r W", VALUE(1), 1, 1 << 15, &o->width, d);
+        if (*s == PL_OK) *s = parse_int("-r H", VALUE(2), 1, 1 << 15, &o->height, d);
+        taken = 2;
+    }
+    else if (!strcmp(a, "-a")) {
+        *s = parse_int("-a B", VALUE(1), 2, 1 << 24, &o->adaptive_batch, d);
+        if (*s == PL_OK) *s = parse_float("-a T", VALUE(2), 0.0f, &o->adaptive_tol, d);
+        o->adaptive = true;
+        taken = 2;
+    }
+    else if (!strcmp(a, "-H")) o->hemisphere = true;
+    else if (!strcmp(a, "-v")) o->verbose = true;
+    else if (!strcmp(a, "-q")) o->quiet = true;
+    else taken = -1;
+    return taken;
+}
+
 /* pathlab's long options (all but --threads, --trace-* and --crop): the number of values the flag
  * argv[i] takes, or -1 when it is none of them; *s says whether they parsed. */
 static int parse_long_flag(int argc, char **argv, int i, options *o, pl_status *s, pl_diag *d)
 {
-#define VALUE(k) (i + (k) < argc ? argv[i + (k)] : NULL)
     const char *a = argv[i];
     int taken = 0;
     if (!strcmp(a, "--seed")) *s = parse_u64(a, VALUE(1), &o->seed, d), taken = 1;
@@ -154,7 +203,6 @@ static int parse_long_flag(int argc, char **argv, int i, options *o, pl_status *
     else if (!strcmp(a, "--heatmap")) { if (!VALUE(1)) *s = pl_fail(d, PL_ERR_INVALID, "--heatmap: expected a .png file name"); o->heatmap = VALUE(1); taken = 1; }
     else if (!strcmp(a, "--film-fd")) *s = parse_int(a, VALUE(1), 3, 1023, &o->film_fd, d), taken = 1;
     else taken = -1;
-#undef VALUE
     return taken;
 }
 
@@ -235,8 +283,6 @@ pl_status cli_parse(int argc, char **argv, options *out, cli_action *action, pl_
     options o = options_default();
     *action = CLI_RUN;
     pl_status s = PL_OK;
-    /* next(k): the k-th value after the flag at i, or NULL when the command line ends first. */
-#define VALUE(k) (i + (k) < argc ? argv[i + (k)] : NULL)
     int i, taken;
     for (i = 1; i < argc && s == PL_OK; i++) {
         const char *a = argv[i];
@@ -246,45 +292,11 @@ pl_status cli_parse(int argc, char **argv, options *out, cli_action *action, pl_
             continue;
         }
         if (!strcmp(a, "-h") || !strcmp(a, "--help")) { *action = CLI_HELP; *out = o; return PL_OK; }
-        else if (!strcmp(a, "-s")) s = parse_int(a, VALUE(1), 1, 1 << 24, &o.spp, d), i++;
-        else if (!strcmp(a, "-l")) s = parse_int(a, VALUE(1), 1, 1 << 20, &o.light_samples, d), i++;
-        else if (!strcmp(a, "-t") || !strcmp(a, "--threads")) s = parse_int(a, VALUE(1), 1, 1024, &o.threads, d), i++;
-        else if (!strcmp(a, "-m")) s = parse_int(a, VALUE(1), 0, 100000, &o.max_depth, d), i++;
-        else if (!strcmp(a, "-o")) {
-            int v = 0;
-            s = parse_int(a, VALUE(1), 0, 1, &v, d), i++;
-            o.accumulate = v == 1;
-        }
-        else if (!strcmp(a, "-e")) { if (!VALUE(1)) s = pl_fail(d, PL_ERR_INVALID, "-e: expected a file name"); o.envmap = VALUE(1); i++; }
-        else if (!strcmp(a, "-b")) {  /* only a given lens replaces the camera's (camera.h) */
-            s = parse_float(a, VALUE(1), 0.0f, &o.lens_radius, d), i++;
-            o.lens_radius_given = true;
-        }
-        else if (!strcmp(a, "-d")) {
-            s = parse_float(a, VALUE(1), 0.0f, &o.focal_distance, d), i++;
-            o.focal_distance_given = true;
-        }
-        else if (!strcmp(a, "-f")) { if (!VALUE(1)) s = pl_fail(d, PL_ERR_INVALID, "-f: expected an output file name"); o.output = VALUE(1); i++; }
-        else if (!strcmp(a, "-c")) { if (!VALUE(1)) s = pl_fail(d, PL_ERR_INVALID, "-c: expected a camera settings file"); o.camera_file = VALUE(1); i++; }
-        else if (!strcmp(a, "-r")) {
-            s = parse_int("-r W", VALUE(1), 1, 1 << 15, &o.width, d);
-            if (s == PL_OK) s = parse_int("-r H", VALUE(2), 1, 1 << 15, &o.height, d);
-            i += 2;
-        }
-        else if (!strcmp(a, "-a")) {
-            s = parse_int("-a B", VALUE(1), 2, 1 << 24, &o.adaptive_batch, d);
-            if (s == PL_OK) s = parse_float("-a T", VALUE(2), 0.0f, &o.adaptive_tol, d);
-            o.adaptive = true;
-            i += 2;
-        }
-        else if (!strcmp(a, "-H")) o.hemisphere = true;
-        else if (!strcmp(a, "-v")) o.verbose = true;
-        else if (!strcmp(a, "-q")) o.quiet = true;
+        else if ((taken = parse_cs184_flag(argc, argv, i, &o, &s, d)) >= 0) i += taken;
         else if ((taken = parse_long_flag(argc, argv, i, &o, &s, d)) >= 0) i += taken;
         else if ((taken = parse_trace_flag(argc, argv, i, &o, &s, d)) >= 0) i += taken;
         else return pl_fail(d, PL_ERR_INVALID, "unknown option '%s'", a);
     }
-#undef VALUE
     if (s != PL_OK) return s;
     if (!o.scene_path) return pl_fail(d, PL_ERR_INVALID, "expected a scene file (.dae)");
     if (check_options(&o, d) != PL_OK) return PL_ERR_INVALID;
