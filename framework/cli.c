@@ -1,5 +1,10 @@
 /* The command line: CS184's short flags (some take two values) and pathlab's long options.
- * Parsed by hand because getopt cannot take the two-value flags -r W H and -a B T. */
+ * Parsed by hand because getopt cannot take the two-value flags -r W H and -a B T.
+ *
+ * The order of work: defaults (CS184's, so an instructor's command means what it meant there),
+ * then one pass over argv in which every flag's value is checked as it is read (type, range, and
+ * a message naming the flag), then the checks that need several flags at once (check_options).
+ * Nothing is loaded or opened here: file names are only remembered, and output.c checks them. */
 #include "cli.h"
 #include "dae.h"
 #include "camera.h"
@@ -9,6 +14,9 @@
 #include <string.h>
 #include <math.h>
 
+/* ---- defaults and the help text ----------------------------------------------------------- */
+
+/* CS184's defaults, then pathlab's (the seed 0, leaf size 4, the loader's guards). */
 options options_default(void)
 {
     options o;
@@ -20,13 +28,13 @@ options options_default(void)
     o.accumulate = true;
     o.lens_radius = CAMERA_DEFAULT_LENS_RADIUS;
     o.focal_distance = CAMERA_DEFAULT_FOCAL_DISTANCE;
-    o.film_fd = -1;
+    o.film_fd = -1;             /* no grader pipe */
     o.width = 800;
     o.height = 600;
     o.adaptive_batch = 32;
     o.adaptive_tol = 0.05f;
     o.max_leaf_size = 4;
-    o.trace_last = -1;
+    o.trace_last = -1;          /* --trace-sample not given: every sample of the pixel */
     o.max_primitives = DAE_DEFAULT_MAX_PRIMITIVES;  /* the constants, not dae_limits_default(): the grader */
     o.max_instances = DAE_DEFAULT_MAX_INSTANCES;    /* links this file without the scene loader */
     return o;
@@ -72,7 +80,10 @@ void cli_print_usage(FILE *f, const char *prog)
             prog);
 }
 
-/* Value parsers: each checks the whole string and the range, and names the flag when it fails. */
+/* ---- values ---------------------------------------------------------------------------------- */
+
+/* Value parsers: each checks the whole string and the range, and names the flag when it fails.
+ * strtol alone would take "12abc" as 12 and "" as 0: a typo would render something else silently. */
 static pl_status parse_int(const char *flag, const char *text, int lo, int hi, int *out, pl_diag *d)
 {
     char *end;
@@ -85,6 +96,8 @@ static pl_status parse_int(const char *flag, const char *text, int lo, int hi, i
     return PL_OK;
 }
 
+/* A float >= lo; NaN and infinity are refused (a NaN passes every comparison test written as
+ * "v < lo", hence the !(v >= lo) form). */
 static pl_status parse_float(const char *flag, const char *text, float lo, float *out, pl_diag *d)
 {
     char *end;
@@ -96,6 +109,7 @@ static pl_status parse_float(const char *flag, const char *text, float lo, float
     return PL_OK;
 }
 
+/* --seed: strtoull would take "-1" as 2^64 - 1, so a sign is refused before it parses. */
 static pl_status parse_u64(const char *flag, const char *text, uint64_t *out, pl_diag *d)
 {
     char *end;
@@ -107,6 +121,8 @@ static pl_status parse_u64(const char *flag, const char *text, uint64_t *out, pl
     return PL_OK;
 }
 
+/* The command line as one string, for the sidecar (sidecar.c) and the trace's header: a render can
+ * then be made again from its own output. */
 static char *join_args(int argc, char **argv)
 {
     size_t n = 1;
@@ -257,6 +273,9 @@ static pl_status check_trace_flags(const options *o, pl_diag *d)
 }
 
 /* The options against each other, once all are read. */
+/* ---- checks across flags ------------------------------------------------------------------- */
+
+/* What no single flag can check: combinations that would render something other than asked. */
 static pl_status check_options(const options *o, pl_diag *d)
 {
     if (o->sample_end && o->adaptive)
@@ -271,6 +290,7 @@ static pl_status check_options(const options *o, pl_diag *d)
     return PL_OK;
 }
 
+/* The one allocation parsing makes: the joined command line. */
 void cli_free(options *o)
 {
     if (!o) return;
@@ -278,6 +298,10 @@ void cli_free(options *o)
     o->command_line = NULL;
 }
 
+/* ---- the pass over argv ---------------------------------------------------------------------- */
+
+/* Non-flag arguments are the scene (exactly one); "-" alone counts as a name, not a flag. The
+ * first value that does not parse stops the pass with its message. */
 pl_status cli_parse(int argc, char **argv, options *out, cli_action *action, pl_diag *d)
 {
     options o = options_default();

@@ -1,4 +1,11 @@
-/* OpenEXR files of a film (exr.h), through OpenEXR's C API. */
+/* OpenEXR files of a film (exr.h), through OpenEXR's C API.
+ *
+ * A film is kept whole, not just its image: beside the means (R, G, B, readable by any EXR viewer)
+ * and their variances, every pixel's exact accumulators go in as 32-bit words (the 128-bit fixed-
+ * point sums and sums of squares, the sample and bad-sample counts). That is what lets --merge add
+ * sample ranges exactly (range.c) and the grader compute its statistics from the reference's own
+ * sums. The reader accepts only what the writer makes (one layout, these channels, these
+ * attributes), because references are read by the grader and may be damaged or forged. */
 #include "exr.h"
 #include "utf8.h"
 #include <openexr.h>
@@ -10,6 +17,7 @@
 
 /* ---- the channels ---------------------------------------------------------------------------- */
 
+/* What a channel holds: a float (the mean or the variance of the mean) or a word of an integer. */
 typedef enum { CH_MEAN, CH_VAR, CH_N, CH_BAD, CH_SUM, CH_SQ } channel_kind;
 
 typedef struct {
@@ -19,6 +27,7 @@ typedef struct {
     int word;  /* CH_SUM, CH_SQ: which 32-bit word of the 128-bit sum, 0 = least significant */
 } channel;
 
+/* R G B; var.R var.G var.B var.Y; n, bad; acc.sum and acc.sq of R G B Y, four words each. */
 #define NUM_CHANNELS (3 + 4 + 2 + 2 * 4 * 4)
 static const char channel_letter[4] = {'R', 'G', 'B', 'Y'};
 
@@ -41,6 +50,7 @@ static void channel_table(channel *t)
             }
 }
 
+/* The channel of that name, or NULL (a name the file has and the table does not). */
 static const channel *channel_find(const channel *t, const char *name)
 {
     for (int k = 0; k < NUM_CHANNELS; k++)
@@ -99,16 +109,20 @@ static int64_t write_at(exr_const_context_t ctxt, void *user, const void *buf, u
     return (int64_t)done;
 }
 
+/* OpenEXR prints its errors by default; pathlab reports them once, with the file's name. */
 static void quiet_errors(exr_const_context_t ctxt, exr_result_t code, const char *msg)
 {
     (void)ctxt, (void)code, (void)msg;  /* reported through the result codes instead */
 }
 
+/* An OpenEXR result code as pathlab's status and message. */
 static pl_status exr_fail(pl_diag *diag, const char *what, exr_result_t r)
 {
     return pl_fail(diag, PL_ERR_IO, "%s: OpenEXR: %s", what, exr_get_default_error_message(r));
 }
 
+/* The provenance as five string attributes (range.c says what each is for); numbers as decimal
+ * text, which the reader parses back strictly. */
 static exr_result_t set_attributes(exr_context_t x, const exr_info *info)
 {
     char seed[32], samples[64];
@@ -138,6 +152,7 @@ static exr_result_t write_chunk(exr_context_t x, const film *f, const channel *t
         for (int row = 0; row < cinfo.height; row++)
             for (int col = 0; col < f->width; col++)
                 dst[(size_t)row * f->width + col] = channel_bits(&f->pixels[(size_t)(y0 + row) * f->width + col], ch);
+        /* Every channel is 4 bytes a pixel, float or uint: one plane of rows for this chunk each. */
         enc.channels[i].encode_from_ptr = (const uint8_t *)dst;
         enc.channels[i].user_pixel_stride = 4;
         enc.channels[i].user_line_stride = 4 * f->width;
@@ -150,6 +165,8 @@ static exr_result_t write_chunk(exr_context_t x, const film *f, const channel *t
     return r;
 }
 
+/* The output set's encoder (output.h): writes the film through file's descriptor, one scanline
+ * chunk at a time (the buffer holds one chunk of every channel, not the whole image). */
 pl_status exr_encode(FILE *file, const void *user, pl_diag *diag)
 {
     const exr_image *img = user;
@@ -338,6 +355,7 @@ static pl_status open_checked(const char *path, exr_context_t *x, exr_info *info
     return s;
 }
 
+/* The provenance and size only, without decoding a pixel (--merge reads every header first). */
 pl_status exr_read_info(const char *path, exr_info *info, int *width, int *height, pl_diag *diag)
 {
     exr_context_t x = NULL;
@@ -385,6 +403,7 @@ static pl_status read_chunk(exr_context_t x, const char *path, film *f, const ch
                                                   exr_get_default_error_message(r));
 }
 
+/* An adaptive render takes a different number of samples per pixel: its samples cannot be split. */
 bool exr_info_adaptive(const exr_info *info) { return strstr(info->command, " -a ") != NULL; }
 
 /* Decodes every chunk of an open, checked file into out (allocated here). */

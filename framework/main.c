@@ -1,6 +1,13 @@
 /* bin/pathtracer: load a scene, build the accelerator, render, write the image and its sidecar.
  * Exit status: 0 success, 2 bad input (flags, scene, camera file, output names), 1 failure while
- * rendering or writing. */
+ * rendering or writing.
+ *
+ * Read this file top to bottom as the story of one run: main parses the command line (cli.c),
+ * run plans the outputs before anything slow happens (output.c: a wrong -f fails in milliseconds,
+ * not after an hour's render), loads the scene (dae.c), builds the accelerator (accel.c: the
+ * student's BVH once part 2 is done), renders every pixel (render.c, which calls the parts), and
+ * writes every file at once or none (output.c). Every step that can fail returns a pl_status with
+ * a message in a pl_diag (status.h); this file turns the first one into the exit status. */
 #include "cli.h"
 #include "clock.h"
 #include "dae.h"
@@ -20,6 +27,9 @@
 #include <strings.h>
 #include <unistd.h>
 
+/* ---- what the user sees while it runs ----------------------------------------------------------- */
+
+/* The progress bar on stderr (only on a terminal: a log file would fill with carriage returns). */
 static void print_progress(void *user, int done, int total)
 {
     (void)user;
@@ -30,11 +40,14 @@ static void print_progress(void *user, int done, int total)
     fflush(stderr);
 }
 
+/* Prints the step's message, prefixed by the program's name, and returns the exit status to use. */
 static int fail(const char *prog, pl_diag *d, int code)
 {
     fprintf(stderr, "%s: %s\n", prog, d->error);
     return code;
 }
+
+/* ---- the steps of a run ------------------------------------------------------------------------ */
 
 /* --trace-pixel: the pixel's paths on stdout instead of a render (framework/trace.h). */
 static int trace_run(const render_ctx *ctx, const options *o, const char *prog)
@@ -198,6 +211,8 @@ done:
     output_free(&out);
     return code;
 }
+
+/* ---- main ---------------------------------------------------------------------------------------- */
 
 int main(int argc, char **argv)
 {

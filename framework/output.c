@@ -1,4 +1,11 @@
-/* The outputs of one render: planned and checked before loading, written as one unit after. */
+/* The outputs of one render: planned and checked before loading, written as one unit after.
+ *
+ * A render can take minutes, so everything that could make its outputs fail is checked first: the
+ * extensions, the folders, the image's size against memory and the PNG encoder, and that no output
+ * overwrites an input or another output. Writing is all or nothing: every file goes to a temporary
+ * beside its final name and is renamed into place only when all of them are complete, so an
+ * interrupted or failed write never leaves a half image beside a sidecar that describes it.
+ * The last section is the film stream, the grader's pipe format (output.h says why it exists). */
 #include "output.h"
 #include "file.h"
 #include <errno.h>
@@ -10,8 +17,11 @@
 #include <sys/stat.h>
 #include <unistd.h>
 
+/* The flag that named each output, for messages ("-f (its rate map) out_rate.png: ..."). */
 static const char *const flag_of[OUTPUT_KINDS] = {"-f", "-f (its rate map)", "--heatmap", "-f (its sidecar)"};
 _Static_assert(FILE_MAX_TEMPS >= OUTPUT_KINDS, "a render's temporaries must all fit the cleanup table");
+
+/* ---- planning: names, folders and sizes, before the scene is loaded ------------------------- */
 
 /* "out.png" -> "out.json", "out.png" + "_rate" -> "out_rate.png": swaps or inserts before the extension. */
 static char *with_suffix(const char *path, const char *suffix, const char *extension)
@@ -85,6 +95,7 @@ static pl_status check_paths(const output_set *set, const char *input, const cha
     return PL_OK;
 }
 
+/* The image formats -f writes: tone-mapped PNG, linear Radiance HDR, and EXR with the film. */
 static bool image_extension_ok(const char *path)
 {
     return file_has_extension(path, ".png") || file_has_extension(path, ".hdr") || file_has_extension(path, ".exr");
@@ -93,6 +104,7 @@ static bool image_extension_ok(const char *path)
 pl_status output_plan(output_set *set, const options *o, pl_diag *diag)
 {
     memset(set, 0, sizeof *set);
+    /* Memory first: a size that would swap the machine is refused whatever the outputs are. */
     long long pixels = (long long)o->width * o->height;
     long long memory = (long long)sysconf(_SC_PHYS_PAGES) * sysconf(_SC_PAGE_SIZE);
     if (memory > 0 && pixels * BYTES_PER_PIXEL > memory / 2)
@@ -115,18 +127,21 @@ pl_status output_plan(output_set *set, const options *o, pl_diag *diag)
         return pl_fail(diag, PL_ERR_INVALID, "-r %d %d: too large for a PNG file (the encoder's limit is about "
                        "715 million pixels)%s", o->width, o->height, png ? "" : "; the rate map is a PNG");
 
+    /* Every output against every input: "-f scene.dae" would otherwise destroy the scene. */
     const char *inputs[2] = {o->scene_path, o->camera_file};
     const char *input_flag[2] = {"the scene", "the camera file (-c)"};
     for (int i = 0; i < 2; i++) {
         pl_status st = check_paths(set, inputs[i], input_flag[i], diag);
         if (st) return st;
     }
+    /* A NULL where a path was planned is a failed strdup or with_suffix, checked once here. */
     for (int k = 0; k < OUTPUT_KINDS; k++)
         if (set->path[k] == NULL && ((k != OUTPUT_HEATMAP && o->output) || (k == OUTPUT_HEATMAP && o->heatmap)))
             return pl_fail(diag, PL_ERR_NOMEM, "out of memory");
     return PL_OK;
 }
 
+/* --merge: one image from several EXR films; none of them may be the output. */
 pl_status output_plan_merge(output_set *set, const char *output, const char *const *inputs, int count, pl_diag *diag)
 {
     memset(set, 0, sizeof *set);
@@ -138,6 +153,9 @@ pl_status output_plan_merge(output_set *set, const char *output, const char *con
     return st;
 }
 
+/* ---- writing: each file encoded on its own thread, then all committed together ------------- */
+
+/* Binds an encoder and its data to a planned output (an unbound output is not written). */
 void output_bind(output_set *set, output_kind k, output_encode_fn encode, const void *user)
 {
     set->encode[k] = encode;
@@ -170,6 +188,8 @@ static void *encode_one(void *arg)
     return NULL;
 }
 
+/* Writes the bound outputs from first to last: encoded in parallel, each into its temporary; the
+ * first failure (in the kinds' order, so the message does not depend on thread timing) wins. */
 pl_status output_write(output_set *set, output_kind first, output_kind last, pl_diag *diag)
 {
     encode_job jobs[OUTPUT_KINDS];
@@ -179,7 +199,7 @@ pl_status output_write(output_set *set, output_kind first, output_kind last, pl_
         jobs[k] = (encode_job){set, (output_kind)k, {NULL, NULL, NULL, -1}, pl_diag_default(), PL_OK};
         if (!set->path[k] || !set->encode[k]) continue;
         threaded[k] = pthread_create(&threads[k], NULL, encode_one, &jobs[k]) == 0;
-        if (!threaded[k]) encode_one(&jobs[k]);
+        if (!threaded[k]) encode_one(&jobs[k]);  /* no thread to be had: encode it here, same result */
     }
     pl_status st = PL_OK;
     for (int k = first; k <= (int)last; k++) {
@@ -208,10 +228,19 @@ void output_free(output_set *set)
 
 /* ---- the film stream ------------------------------------------------------------------------- */
 
+/* The grader's pipe format (--film-fd): the render sends its film, the grader writes the EXR. All
+ * integers little-endian, whatever the machine:
+ *   "PLFILM1\n", width and height (4 bytes each), rays, node visits, primitive tests, samples (8
+ *   bytes each), then per pixel OUTPUT_FILM_PIXEL_BYTES: 4 sums and 4 sums of squares of 16 bytes
+ *   (the film's fixed-point 128-bit accumulators), the sample count and the bad-sample count (4
+ *   each), and "PLFILM.\n" to end. The end marker and the exact length let the receiver refuse a
+ *   stream cut short or padded, which a render killed mid-write would otherwise pass off as a film. */
+
 static const char film_magic[8] = {'P', 'L', 'F', 'I', 'L', 'M', '1', '\n'};
 static const char film_end[8] = {'P', 'L', 'F', 'I', 'L', 'M', '.', '\n'};
 #define FILM_HEADER_BYTES (8 + 2 * 4 + 4 * 8)
 
+/* Little-endian bytes of an unsigned value, lowest first, and back. */
 static void put_le(unsigned char *p, film_sum v, int bytes)
 {
     for (int i = 0; i < bytes; i++) p[i] = (unsigned char)(v >> (8 * i));
@@ -231,6 +260,7 @@ static void pixel_bytes(const film_pixel *px, unsigned char *p)
     put_le(p + 132, px->bad, 4);
 }
 
+/* write(2) until everything is sent: a pipe takes what fits in its buffer and returns short. */
 static bool write_all(int fd, const unsigned char *p, size_t len)
 {
     while (len > 0) {
@@ -262,6 +292,8 @@ pl_status output_film_send(int fd, const film *f, const output_film_counts *c, p
     return ok ? PL_OK : pl_fail(diag, PL_ERR_IO, "--film-fd %d: cannot send the film: %s", fd, strerror(errno));
 }
 
+/* The grader's side: every length and the end marker checked before a byte is believed; the
+ * counts come back as sent (they are the candidate's word: grading/README.md says what bounds them). */
 pl_status output_film_receive(const void *data, size_t len, int width, int height, film *out,
                               output_film_counts *c, pl_diag *diag)
 {

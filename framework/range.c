@@ -1,4 +1,12 @@
-/* Sample ranges: provenance and the exact merge (range.h). */
+/* Sample ranges: provenance and the exact merge (range.h).
+ *
+ * A long reference render is cut into ranges of samples (--samples A:B), rendered anywhere (the
+ * Slurm array of course/references), and merged into the film one render would have made. Exactly:
+ * the film's accumulators are fixed-point integers (film.h), so addition is associative and the
+ * merge of any tiling equals the single render bit for bit. The danger is merging pieces of two
+ * different renders, so each EXR carries its provenance (command, seed, version, size, a key hashing
+ * the scene and camera files' contents), and the merge refuses pieces that disagree on any of it
+ * or that do not tile 0..N exactly once. */
 #include "range.h"
 #include "file.h"
 #include "image.h"
@@ -9,7 +17,9 @@
 #include <string.h>
 #include <strings.h>
 
-#define MAX_INPUT_BYTES ((size_t)1 << 30)
+#define MAX_INPUT_BYTES ((size_t)1 << 30)  /* a scene or camera file hashed into the key */
+
+/* ---- provenance: what makes two ranges pieces of one render ---------------------------------- */
 
 /* 64-bit FNV-1a: a content hash for the render key (not for security: a key guards against
  * mistakes, not against forgery). */
@@ -20,6 +30,8 @@ static uint64_t fnv1a(uint64_t h, const void *data, size_t len)
     return h;
 }
 
+/* Folds a whole file into the key (the scene's contents, not its name: a renamed copy is the same
+ * render, an edited file is another). */
 static pl_status hash_file(uint64_t *h, const char *path, const char *what, pl_diag *diag)
 {
     char *data = NULL;
@@ -47,11 +59,14 @@ static void image_flags(const options *o, char *out, size_t size)
         snprintf(out + n, size - (size_t)n, " -a %d %g", o->adaptive_batch, o->adaptive_tol);
 }
 
+/* The provenance of this render, stamped with this build's version. */
 pl_status range_info(const options *o, exr_info *info, pl_diag *diag)
 {
     return range_info_as(o, PL_VERSION, info, diag);
 }
 
+/* The provenance as a given version would stamp it (the grader recomputes a reference's key this
+ * way, from the version the reference names). */
 pl_status range_info_as(const options *o, const char *version, exr_info *info, pl_diag *diag)
 {
     memset(info, 0, sizeof *info);
@@ -60,7 +75,7 @@ pl_status range_info_as(const options *o, const char *version, exr_info *info, p
     snprintf(info->command, sizeof info->command, "pathtracer %s%s%s %s", flags, o->camera_file ? " -c " : "",
              o->camera_file ? o->camera_file : "", o->scene_path);
     snprintf(info->version, sizeof info->version, "%s", version);
-    uint64_t h = 0xcbf29ce484222325ull;
+    uint64_t h = 0xcbf29ce484222325ull;  /* FNV-1a's offset basis */
     h = fnv1a(h, version, strlen(version) + 1);
     h = fnv1a(h, flags, strlen(flags) + 1);
     pl_status s = hash_file(&h, o->scene_path, "scene", diag);
@@ -76,12 +91,14 @@ pl_status range_info_as(const options *o, const char *version, exr_info *info, p
 
 /* ---- the merge ------------------------------------------------------------------------------- */
 
+/* One input of the merge: its file, its provenance, its size. */
 typedef struct {
     const char *path;
     exr_info info;
     int width, height;
 } range_input;
 
+/* qsort order: by first sample, so a tiling reads 0:a, a:b, ..., y:N. */
 static int by_begin(const void *a, const void *b)
 {
     const range_input *x = a, *y = b;
@@ -227,6 +244,9 @@ static pl_status read_headers(range_input *in, const char **paths, int count, pl
     return check_ranges(in, count, diag);
 }
 
+/* --merge: plan the output, read and check every header, then add the films one at a time and
+ * write; exit 0, 1 (out of memory, or the output could not be written) or 2 (the command, or an
+ * input that is missing, unreadable or not a piece of this render). */
 int range_merge_main(int argc, char **argv, const char *prog)
 {
     pl_diag diag = pl_diag_default();
