@@ -171,11 +171,13 @@ typedef struct {
 } grade_run_opts;
 
 /* What grade_run can do to contain untrusted code on this machine: limits always; a network
- * namespace and another user only as root; the filter where libseccomp and the kernel allow. The
+ * namespace, PID and mount namespaces and another user only as root (and not in a container whose
+ * profile refuses namespaces: then limits, the user and the filter remain); the filter where libseccomp and the kernel allow. The
  * report names what was unavailable, the staff log what was in force. */
 typedef struct {
     bool as_other_user;        /* runs as `nobody` (the grader is root) */
     bool no_network;           /* a new network namespace */
+    bool isolated;             /* new PID and mount namespaces with their own /proc (sandbox_isolate) */
     unsigned uid, gid;         /* nobody's */
     long process_limit;        /* RLIMIT_NPROC for untrusted children (counts the whole user's) */
     bool filter;               /* the seccomp filter is installed before student code runs */

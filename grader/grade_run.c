@@ -61,6 +61,7 @@ grade_sandbox grade_sandbox_probe(void)
     int status = 1;
     if (pid > 0) waitpid(pid, &status, 0);
     sandbox.no_network = pid > 0 && WIFEXITED(status) && WEXITSTATUS(status) == 0;
+    sandbox.isolated = geteuid() == 0 && sandbox_isolation_supported();
     sandbox.process_limit = sandbox.as_other_user ? GRADE_PROCESSES : processes_of(getuid()) + GRADE_PROCESSES;
     sandbox.filter = sandbox_filter_supported(sandbox.filter_why, sizeof sandbox.filter_why);
     sandbox_adopt_orphans();
@@ -81,10 +82,11 @@ void grade_sandbox_in_force(const grade_sandbox *s, char *out, size_t size)
 {
     char filter[64];
     sandbox_filter_name(filter, sizeof filter);
-    snprintf(out, size, "%s; %s; %s; limits: wall, CPU, address space (%ld MiB code, %ld MiB compiler), "
+    snprintf(out, size, "%s; %s; %s; %s; limits: wall, CPU, address space (%ld MiB code, %ld MiB compiler), "
                         "%ld processes, files of %ld MiB, output cut at %d KiB; orphans killed",
              s->as_other_user ? "student code as user nobody" : "student code as the grader's own user",
              s->no_network ? "network namespace" : "no network namespace",
+             s->isolated ? "PID and mount namespaces (own /proc)" : "no PID or mount namespace",
              s->filter ? filter : "no system-call filter", GRADE_CODE_MEMORY >> 20, GRADE_COMPILER_MEMORY >> 20,
              (long)GRADE_PROCESSES, GRADE_FILE_BYTES >> 20, GRADE_LOG_MAX / 1024);
 }
@@ -111,6 +113,8 @@ static void confine(const grade_run_opts *o)
 #ifdef __linux__
     if (sandbox.no_network && unshare(CLONE_NEWNET | CLONE_NEWIPC) != 0) _exit(126);
 #endif
+    /* Still root: from here on the process that continues is inside new PID and mount namespaces. */
+    if (sandbox.isolated) sandbox_isolate();
     if (sandbox.as_other_user) {
         /* Drop every privilege for good: groups, then gid, then uid (the order matters). */
         if (setgroups(0, NULL) != 0 || setgid(sandbox.gid) != 0 || setuid(sandbox.uid) != 0) _exit(126);

@@ -24,6 +24,18 @@ void sandbox_filter_name(char *out, size_t size);
  * lets it create and write files (the legacy XML suite; nothing else). Returns only on failure. */
 void sandbox_exec(char *const argv[], bool may_write_files);
 
+/* PID and mount namespaces (Linux, as root; Docker's default seccomp profile refuses them): whether
+ * this machine gives them, tried in a throwaway child. */
+bool sandbox_isolation_supported(void);
+/* In a forked child, still privileged, before the drop: new PID and mount namespaces and a fresh
+ * /proc that shows only them. The calling process stays behind as a relay and never returns: it
+ * ends as the confined process ends (same exit status, same signal). The process that returns is
+ * the only child of the namespace's init and goes on to drop privileges and exec; when it ends,
+ * init ends, and the kernel kills whatever is left in the namespace (a setsid grandchild, a
+ * double-forked daemon), none of which could see or signal a process outside it. _exit(126) when
+ * a step fails (the probe found them, so this is not expected). */
+void sandbox_isolate(void);
+
 /* The grader adopts every orphan of its children (Linux: a subreaper), so none can escape. */
 void sandbox_adopt_orphans(void);
 /* Kills and reaps every descendant the grader adopted, e.g. a grandchild that called setsid. */

@@ -32,7 +32,9 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <sched.h>
 #include <sys/ioctl.h>
+#include <sys/mount.h>
 #include <sys/prctl.h>
 #include <sys/resource.h>
 #include <sys/syscall.h>
@@ -152,6 +154,88 @@ void sandbox_filter_name(char *out, size_t size)
 {
     const struct scmp_version *v = seccomp_version();
     snprintf(out, size, "seccomp (libseccomp %u.%u.%u)", v->major, v->minor, v->micro);
+}
+
+/* ---- PID and mount namespaces ---------------------------------------------------------------- */
+
+/* The namespaces, and the mounts that make them useful: mounts private (nothing done here reaches
+ * the machine's own mount table) and a /proc of the new PID namespace, so the confined process
+ * lists only its own namespace. Run by a process already in the new PID namespace (/proc shows the
+ * PID namespace of whoever mounts it). */
+static bool mount_private_proc(void)
+{
+    return mount(NULL, "/", NULL, MS_REC | MS_PRIVATE, NULL) == 0 &&
+           mount("proc", "/proc", "proc", MS_NOSUID | MS_NODEV | MS_NOEXEC, NULL) == 0;
+}
+
+bool sandbox_isolation_supported(void)
+{
+    pid_t pid = fork();
+    if (pid == 0) {
+        if (unshare(CLONE_NEWPID | CLONE_NEWNS) != 0) _exit(1);
+        pid_t init = fork();  /* the first child after unshare is the new namespace's PID 1 */
+        if (init == 0) _exit(getpid() == 1 && mount_private_proc() ? 0 : 1);
+        int status = 1;
+        _exit(init > 0 && waitpid(init, &status, 0) == init && WIFEXITED(status) ? WEXITSTATUS(status) : 1);
+    }
+    int status = 1;
+    return pid > 0 && waitpid(pid, &status, 0) == pid && WIFEXITED(status) && WEXITSTATUS(status) == 0;
+}
+
+/* The relay, outside the namespace: ends the way the confined process ended, which init sent it as
+ * a wait status (a signal is raised again, so the grader still reads "killed by signal 31"). When
+ * init is killed before it sends anything (the grader's timeout kills the whole process group),
+ * the relay is killed with it. */
+static _Noreturn void relay(pid_t init, int from_init)
+{
+    int status = 0;
+    ssize_t got;
+    while ((got = read(from_init, &status, sizeof status)) < 0 && errno == EINTR) continue;
+    waitpid(init, NULL, 0);
+    if (got != (ssize_t)sizeof status) _exit(126);
+    if (WIFEXITED(status)) _exit(WEXITSTATUS(status));
+    int sig = WIFSIGNALED(status) ? WTERMSIG(status) : SIGKILL;
+    signal(sig, SIG_DFL);
+    sigset_t one;
+    sigemptyset(&one);
+    sigaddset(&one, sig);
+    sigprocmask(SIG_UNBLOCK, &one, NULL);
+    raise(sig);
+    _exit(128 + sig);  /* a signal whose default is to be ignored: say which, as a shell would */
+}
+
+/* The namespace's init: reaps every orphan the namespace makes until the confined process ends,
+ * sends its wait status to the relay and ends, which ends the namespace. A PID 1 gets no signal
+ * from inside its namespace that it has no handler for, so student code cannot kill it. */
+static _Noreturn void init_process(pid_t worker, int to_relay)
+{
+    for (;;) {
+        int status;
+        pid_t w = wait(&status);
+        if (w == worker) {
+            ssize_t put = write(to_relay, &status, sizeof status);
+            _exit(put == (ssize_t)sizeof status ? 0 : 126);
+        }
+        if (w < 0 && errno != EINTR) _exit(126);
+    }
+}
+
+void sandbox_isolate(void)
+{
+    int link[2];
+    if (unshare(CLONE_NEWPID | CLONE_NEWNS) != 0 || pipe(link) != 0) _exit(126);
+    pid_t init = fork();
+    if (init < 0) _exit(126);
+    if (init > 0) {
+        close(link[1]);
+        relay(init, link[0]);
+    }
+    close(link[0]);
+    if (!mount_private_proc()) _exit(126);
+    pid_t worker = fork();
+    if (worker < 0) _exit(126);
+    if (worker > 0) init_process(worker, link[1]);
+    close(link[1]);
 }
 
 void sandbox_adopt_orphans(void)

@@ -28,6 +28,10 @@ void sandbox_exec(char *const argv[], bool may_write_files)
     execvp(argv[0], argv);
 }
 
+bool sandbox_isolation_supported(void) { return false; }
+
+void sandbox_isolate(void) {}
+
 void sandbox_adopt_orphans(void) {}
 
 void sandbox_kill_orphans(void)

@@ -176,7 +176,8 @@ elif [ "$(id -u)" = 0 ]; then
     grep -q 'exit 0: swept [0-9]* files' "$out/sweep-result" ||
         fail "student code can read a secret: $(cat "$out/sweep-result") (see $out/swept/work/part3/sweep.log)"
     echo "  as student code, a sweep of $(sed 's/.*swept \([0-9]*\) files.*/\1/' "$out/sweep-result") files finds none of $count secrets"
-    grep -q 'protections in force: student code as user nobody; network namespace; seccomp' "$out/swept.log" ||
+    # The PID and mount namespaces where the machine gives them (a container may refuse): named either way.
+    grep -Eq 'protections in force: student code as user nobody; network namespace; (PID and mount namespaces \(own /proc\)|no PID or mount namespace); seccomp' "$out/swept.log" ||
         fail "the staff log does not name the protections in force ($out/swept.log)"
     echo "  the staff log names the protections in force"
 fi

@@ -15,6 +15,7 @@
 #include "../../framework/output.h"
 #include <fcntl.h>
 #include <math.h>
+#include <dirent.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -242,6 +243,56 @@ static void test_run__student_code_is_filtered_from_its_first_instruction(void *
     assert_true(r.exited && r.status != 0);
 }
 
+/* ---- namespaces: a stage sees only itself, and nothing of it outlives it ------------------- */
+
+/* Processes on the machine whose command line holds marker (a sleeper a test left behind). */
+static int processes_with(const char *marker)
+{
+    DIR *d = opendir("/proc");
+    int n = 0;
+    for (struct dirent *e; d && (e = readdir(d));) {
+        char path[300], cmd[256] = "";
+        if (e->d_name[0] < '1' || e->d_name[0] > '9') continue;
+        snprintf(path, sizeof path, "/proc/%s/cmdline", e->d_name);
+        FILE *f = fopen(path, "r");
+        size_t len = f ? fread(cmd, 1, sizeof cmd - 1, f) : 0;
+        if (f) fclose(f);
+        for (size_t i = 0; i < len; i++)
+            if (!cmd[i]) cmd[i] = ' ';  /* arguments are NUL-separated */
+        cmd[len] = '\0';
+        n += strstr(cmd, marker) != NULL;
+    }
+    if (d) closedir(d);
+    return n;
+}
+
+/* Attack: a child (here the compiler's stage, which may fork) starts a daemon with setsid, which
+ * leaves the process group the timeout kills, and looks for the grader's processes in /proc. In a
+ * PID namespace of its own it finds only its own few, and the daemon dies with the stage. */
+static void test_run__a_stage_is_a_namespace_of_its_own(void **state)
+{
+    (void)state;
+    grade_sandbox s = grade_sandbox_probe();
+    if (!s.isolated) {
+        printf("  (skipped: no PID namespace here: needs root, outside a container that refuses them)\n");
+        return;
+    }
+    char log[256], script[512], text[64] = "";
+    snprintf(log, sizeof log, "%s/namespace.log", scratch);
+    snprintf(script, sizeof script,
+             "setsid sh -c 'exec sleep 97.25' </dev/null >/dev/null 2>&1 & "
+             "if [ -e /proc/%d ]; then echo grader-visible; else ls /proc | grep -c '^[0-9]'; fi", (int)getpid());
+    assert_int_equal(run_untrusted(script, log), 0);
+    FILE *f = fopen(log, "r");
+    assert_non_null(f);
+    assert_non_null(fgets(text, sizeof text, f));
+    fclose(f);
+    if (!strncmp(text, "grader-visible", 14)) fail_msg("the child saw the grader (pid %d) in its /proc", (int)getpid());
+    long seen = atol(text);
+    if (seen < 1 || seen > 8) fail_msg("the child's /proc lists %ld processes; its own namespace has a few", seen);
+    if (processes_with("sleep 97.25")) fail_msg("a setsid daemon outlived the stage that started it");
+}
+
 /* ---- limits and what the report says ------------------------------------------------------- */
 
 static void test_run__untrusted_children_have_a_process_limit(void **state)
@@ -415,6 +466,7 @@ int sandbox_tests(void)
         cmocka_unit_test(test_run__log_is_a_fresh_file_never_a_planted_link),
         cmocka_unit_test(test_run__a_flood_is_cut_while_the_child_runs),
         cmocka_unit_test(test_run__untrusted_children_have_a_process_limit),
+        cmocka_unit_test(test_run__a_stage_is_a_namespace_of_its_own),
         cmocka_unit_test(test_run__student_code_is_filtered_from_its_first_instruction),
         cmocka_unit_test(test_sandbox__report_names_what_is_missing),
         cmocka_unit_test(test_guard__nobody_cannot_open_a_reference),
