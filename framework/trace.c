@@ -1,5 +1,13 @@
 /* --trace-pixel: the seam hooks, the replay of what the parts compute between them, and the
- * printed tree (text or JSON). framework/trace.h explains the approach. */
+ * printed tree (text or JSON). framework/trace.h explains the approach.
+ *
+ * How to read this file: render.c calls trace_enter and trace_leave around every part function it
+ * calls, and the framework functions the parts call (intersection, shadow rays, light samples, the
+ * random generator) report to trace_intersect, trace_occluded, trace_light and trace_rng. From
+ * those reports this file prints one line per event, nested by the calls, and recomputes what a
+ * correct part would have returned from the same numbers (the light samples' sum, the path's
+ * throughput, the roulette's verdict): a line marked !! is a place where the two disagree. The
+ * trace runs the very render code on one pixel, so it shows what the render computed, not a model. */
 #include "trace.h"
 #include "accel.h"
 #include "frame.h"
@@ -14,11 +22,12 @@
 
 _Thread_local struct trace_log *pl_trace;
 
-#define MAX_NEST 16
+#define MAX_NEST 16  /* part calls nested at once (a recursive part 4 nests one per bounce); deeper ones go unframed */
 
 /* Set while the trace itself calls a part function: its draws are no part of the render's. */
 static _Thread_local bool replaying;
 
+/* The seam's names and tasks, from its one list (framework/seam.h), for the lines "name (task 3.5):". */
 static const char *const seam_names[] = {
 #define PL_SEAM_NAME(name, extra) #name,
     PL_SEAM_PART_FUNCTIONS(PL_SEAM_NAME)
@@ -61,6 +70,8 @@ typedef struct {
     rgb hidden;             /* sum of those that hit something nearer than the light */
 } trace_direct;
 
+/* Everything one trace keeps: the request, the output (text, or the JSON document being built), the
+ * stack of part calls under way, and the replays of the path and the direct light in progress. */
 typedef struct trace_log {
     const render_ctx *ctx;
     trace_request req;
@@ -83,6 +94,7 @@ static json_t *jnum(float v)
 {
     return isfinite(v) ? json_real((double)v) : json_string(isnan(v) ? "nan" : v > 0 ? "inf" : "-inf");
 }
+/* Vectors and colours as three-element arrays. */
 static json_t *jv3(float a, float b, float c) { return json_pack("[ooo]", jnum(a), jnum(b), jnum(c)); }
 static json_t *jvec(vec3 v) { return jv3(v.x, v.y, v.z); }
 static json_t *jrgb(rgb c) { return jv3(c.r, c.g, c.b); }
@@ -112,6 +124,7 @@ static void emit(trace_log *t, const char *kind, json_t *fields, const char *fmt
     json_array_append_new(t->events ? t->events : t->checks, e);
 }
 
+/* Text form of a vector or colour: five significant digits, enough to compare by eye. */
 #define V3 "(%.5g, %.5g, %.5g)"
 #define XYZ(v) (double)(v).x, (double)(v).y, (double)(v).z
 #define RGB(c) (double)(c).r, (double)(c).g, (double)(c).b
@@ -128,6 +141,7 @@ static void mark(trace_log *t, const char *fmt, ...)
     emit(t, "mark", NULL, "!! %s", line);
 }
 
+/* Radiance is never negative, NaN or infinite: such a value is marked where it first appears. */
 static bool rgb_bad(rgb c) { return !rgb_is_finite(c) || c.r < 0.0f || c.g < 0.0f || c.b < 0.0f; }
 
 static void check_radiance(trace_log *t, const char *what, rgb c)
@@ -142,11 +156,13 @@ static bool rgb_close(rgb a, rgb b)
     return d <= 1e-5f + 1e-3f * fmaxf(rgb_max(a), rgb_max(b));
 }
 
+/* The innermost part call under way, and whether it is fn. */
 static trace_frame *top(trace_log *t) { return t->depth ? &t->stack[t->depth - 1] : NULL; }
 static bool in(trace_log *t, pl_seam_id fn) { return t->depth && top(t)->fn == fn; }
 
 /* ---- the pixel loop and the wrapped part functions (render.c calls these) ------------------- */
 
+/* A camera sample starts: printed when it is in --trace-sample's range (all of them by default). */
 void trace_sample_begin(int sample, vec2 u)
 {
     trace_log *t = pl_trace;
@@ -176,6 +192,8 @@ void trace_sample_end(rgb L)
     t->recording = false;
 }
 
+/* The framework is about to call part function fn: a line naming it and its task, a frame on the
+ * stack, and the replays it starts (a path for part 4, a sum of light samples for task 3.5). */
 void trace_enter(pl_seam_id fn, const render_ctx *ctx, const ray *r, const hit *h)
 {
     trace_log *t = pl_trace;
@@ -207,6 +225,8 @@ static void stub_mark(trace_log *t, const trace_frame *f)
     if (now > t->stubs_marked) t->stubs_marked = now;
 }
 
+/* What direct_importance returned against the sum of its light samples the trace saw: a shadowed
+ * sample still counted is named as such, any other difference as the two sums. */
 static void direct_check(trace_log *t, rgb L)
 {
     trace_direct *d = &t->direct;
@@ -219,6 +239,8 @@ static void direct_check(trace_log *t, rgb L)
 
 static void path_end(trace_log *t, rgb L);
 
+/* Part function fn returned L: the checks of its replay, its line, and (for one bounce of a path)
+ * what the bounce adds to the path's expected sum. */
 rgb trace_leave(pl_seam_id fn, rgb L)
 {
     trace_log *t = pl_trace;
@@ -283,6 +305,7 @@ bool trace_converged(int n, double s1, double s2, float tol, bool verdict)
 
 /* ---- framework functions the parts call ----------------------------------------------------- */
 
+/* A ray's hit or miss, in words: which primitive and material, the distance, point and normal. */
 static void describe_hit(trace_log *t, const char *role, const ray *r, bool found, const hit *h)
 {
     const scene *s = t->ctx->scene;
@@ -311,6 +334,8 @@ static void describe_hit(trace_log *t, const char *role, const ray *r, bool foun
 
 static void bounce_ray(trace_log *t, const ray *r);
 
+/* A ray a part traces (render_intersect), named by the call it comes from: a camera ray, a bounce
+ * ray of part 4's path, a hemisphere ray of task 3.4. */
 bool trace_intersect(const render_ctx *ctx, ray *r, hit *h)
 {
     trace_log *t = pl_trace;
@@ -343,18 +368,28 @@ bool trace_intersect(const render_ctx *ctx, ray *r, hit *h)
     return found;
 }
 
+/* A shadow ray a part traces (render_occluded), with its verdict. */
 bool trace_occluded(const render_ctx *ctx, const ray *r)
 {
     trace_log *t = pl_trace;
     bool blocked = accel_occluded(ctx->accel, r);
-    emit(t, "shadow_ray", json_pack("{s:o, s:o, s:o, s:o, s:b}", "origin", jvec(r->o), "direction", jvec(r->d), "min_t",
-                                    jnum(r->min_t), "max_t", jnum(r->max_t), "occluded", blocked),
-         "shadow ray along " V3 " for t in [%.5g, %.6g]: %s", XYZ(r->d), (double)r->min_t, (double)r->max_t,
-         blocked ? "occluded" : "clear");
+    json_t *j = json_pack("{s:o, s:o, s:o, s:o, s:b}", "origin", jvec(r->o), "direction", jvec(r->d), "min_t",
+                          jnum(r->min_t), "max_t", jnum(r->max_t), "occluded", blocked);
+    /* A shadow ray towards a point is a segment (spawn_ray_to_light: t in (0, 1], an unnormalised
+     * direction): shown by its two ends and its length, which is what a student can check. */
+    if (isfinite(r->max_t)) {
+        vec3 end = vec3_add(r->o, vec3_scale(r->d, r->max_t));
+        emit(t, "shadow_ray", j, "shadow ray from " V3 " to " V3 " (length %.6g): %s", XYZ(r->o), XYZ(end),
+             (double)(vec3_length(r->d) * r->max_t), blocked ? "occluded" : "clear");
+    }
+    else
+        emit(t, "shadow_ray", j, "shadow ray from " V3 " along " V3 " (no far end): %s", XYZ(r->o),
+             XYZ(vec3_normalize(r->d)), blocked ? "occluded" : "clear");
     return blocked;
 }
 
-/* One light sample, with what it adds by the framework's own visibility test (to dist - EPS_F). */
+/* One light sample, with what it adds by the framework's own visibility test: the shadow ray the
+ * framework would spawn (spawn_ray_to_light), so the trace and a correct part agree on every sample. */
 void trace_light(const light *l, vec3 p, vec2 u, bool ok, const light_sample *ls)
 {
     trace_log *t = pl_trace;
@@ -375,7 +410,7 @@ void trace_light(const light *l, vec3 p, vec2 u, bool ok, const light_sample *ls
         vec3 wo = frame_to_local(&sf, vec3_neg(f->r.d)), wi = frame_to_local(&sf, ls->wi);
         cosine = wi.z;
         int n = light_is_delta(l) ? 1 : (f->ctx->opts->light_samples > 0 ? f->ctx->opts->light_samples : 1);
-        ray probe = ray_make(p, ls->wi, EPS_F, ls->dist - EPS_F);
+        ray probe = spawn_ray_to_light(&f->r, &f->h, l, ls);
         visible = !accel_occluded(t->ctx->accel, &probe);
         if (ls->pdf > 0.0f && cosine > 0.0f && f->h.material >= 0 && f->h.material < s->num_materials) {
             rgb fr = bsdf_f(&s->materials[f->h.material], wo, wi);
@@ -391,12 +426,15 @@ void trace_light(const light *l, vec3 p, vec2 u, bool ok, const light_sample *ls
                    jnum(cosine), "occluded", !visible, "contribution", jrgb(visible ? c : rgb_gray(0))),
          "light %ld: direction " V3 ", distance %.6g, pdf %.6g, radiance " V3 ", cos %.5g, %s, adds " V3, index,
          XYZ(ls->wi), (double)ls->dist, (double)ls->pdf, RGB(ls->L), (double)cosine,
-         visible ? "visible" : "occluded", RGB(visible ? c : rgb_gray(0)));
+         cosine <= 0.0f ? "light behind the surface (cos <= 0)" : visible ? "visible" : "occluded",
+         RGB(visible ? c : rgb_gray(0)));
     if (!rgb_is_black(bright))
         mark(t, "bsdf_f is " V3 " here: a diffuse f is at most 1/pi = 0.3183, or the surface reflects more light "
              "than it receives", RGB(bright));
 }
 
+/* A draw from the generator during part 4's path: the first four of each vertex are kept with the
+ * state before each, so the trace can replay bsdf_sample_f and russian_roulette on the same numbers. */
 void trace_rng(rng before, float value)
 {
     trace_path *p = &pl_trace->path;
@@ -462,6 +500,7 @@ static rgb roulette(trace_log *t, rgb beta, bool went_on)
     return after;
 }
 
+/* A bounce ray left the vertex: the BSDF step that chose it and the roulette that let it go on. */
 static void bounce_ray(trace_log *t, const ray *r)
 {
     trace_path *p = &t->path;
@@ -471,6 +510,7 @@ static void bounce_ray(trace_log *t, const ray *r)
     p->bounced = true;
 }
 
+/* The path ended: its last, unused direction replayed, then its sum against what the part returned. */
 static void path_end(trace_log *t, rgb L)
 {
     trace_path *p = &t->path;
@@ -493,6 +533,7 @@ static void path_end(trace_log *t, rgb L)
 
 /* ---- the driver ----------------------------------------------------------------------------- */
 
+/* The pixel's value as the image holds it, from the same film accumulators a render uses. */
 static void summary(trace_log *t, const film_pixel *px)
 {
     rgb mean = film_pixel_rgb(px);
@@ -512,6 +553,9 @@ static void summary(trace_log *t, const film_pixel *px)
     fprintf(t->out, "%d line%s marked !! above\n", t->marks, t->marks == 1 ? "" : "s");
 }
 
+/* Traces one pixel: renders it once through render_pixel (the render's own per-pixel loop) with the
+ * hooks on, so every sample uses the generator stream it uses in a render: the trace shows the same
+ * value the image has at that pixel. */
 pl_status trace_pixel(const render_ctx *ctx, const trace_request *req, FILE *out, trace_result *result, pl_diag *diag)
 {
     if (req->x < 0 || req->y < 0 || req->x >= ctx->width || req->y >= ctx->height)
