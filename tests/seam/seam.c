@@ -5,25 +5,11 @@
 #include "../../framework/render.h"
 #include <string.h>
 
+/* Names and tasks from the seam's one list (framework/seam.h), in seam_fn's order. */
 static const struct { const char *name, *task; } functions[SEAM_NUM_FUNCTIONS] = {
-    [SEAM_CAMERA_GENERATE_RAY] = {"camera_generate_ray", "1.1"},
-    [SEAM_TRIANGLE_INTERSECT] = {"triangle_intersect", "1.2"},
-    [SEAM_SPHERE_INTERSECT] = {"sphere_intersect", "1.3"},
-    [SEAM_PIXEL_SAMPLE_RAY] = {"pixel_sample_ray", "1.4"},
-    [SEAM_NORMAL_SHADE] = {"normal_shade", "1.5"},
-    [SEAM_AABB_INTERSECT] = {"aabb_intersect", "2.1"},
-    [SEAM_BVH_BUILD] = {"bvh_build", "2.2"},
-    [SEAM_BVH_INTERSECT] = {"bvh_intersect", "2.3"},
-    [SEAM_BVH_OCCLUDED] = {"bvh_occluded", "2.4"},
-    [SEAM_BSDF_F] = {"bsdf_f", "3.1"},
-    [SEAM_BSDF_PDF] = {"bsdf_pdf", "3.2"},
-    [SEAM_BSDF_SAMPLE_F] = {"bsdf_sample_f", "3.2"},
-    [SEAM_ZERO_BOUNCE_RADIANCE] = {"zero_bounce_radiance", "3.3"},
-    [SEAM_DIRECT_HEMISPHERE] = {"direct_hemisphere", "3.4"},
-    [SEAM_DIRECT_IMPORTANCE] = {"direct_importance", "3.5"},
-    [SEAM_AT_LEAST_ONE_BOUNCE_RADIANCE] = {"at_least_one_bounce_radiance", "4.1"},
-    [SEAM_RUSSIAN_ROULETTE] = {"russian_roulette", "4.2"},
-    [SEAM_ADAPTIVE_CONVERGED] = {"adaptive_converged", "5.1"},
+#define SEAM_FN_ROW(name, task) {#name, task},
+    PL_SEAM_PART_FUNCTIONS(SEAM_FN_ROW)
+#undef SEAM_FN_ROW
 };
 
 const char *seam_fn_name(int fn) { return fn >= 0 && fn < SEAM_NUM_FUNCTIONS ? functions[fn].name : "?"; }

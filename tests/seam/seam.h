@@ -21,13 +21,14 @@
  * to a counters trace the test was recording, then the function's outputs (seam_partN.c). The work
  * counts, the trace and the outputs are the subject's word; the judge checks them only as the test
  * does (the oracles, the work checks of part 2). */
-#ifndef PL_SEAM_H
-#define PL_SEAM_H
+#ifndef PL_SEAM_SPLIT_H
+#define PL_SEAM_SPLIT_H
 
 #include <stdbool.h>
 #include <stddef.h>
 #include <stdint.h>
 #include "../../framework/counters.h"
+#include "../../framework/seam.h"
 #include "../../framework/bvh.h"
 #include "../../framework/ray.h"
 #include "../../framework/rng.h"
@@ -39,12 +40,13 @@ struct render_ctx;
 #define SEAM_MAX_PAYLOAD (1u << 30)  /* a BVH over 2M primitives is about 40 MB */
 #define SEAM_MAX_TRACE (1u << 24)    /* trace entries of one call */
 
-/* Part functions, by number: the record names the function it answers. */
+/* Part functions, by number: the record names the function it answers. The numbers and names are
+ * the seam's one list (framework/seam.h): SEAM_bsdf_f, SEAM_bvh_build, ... */
 typedef enum {
-    SEAM_CAMERA_GENERATE_RAY, SEAM_TRIANGLE_INTERSECT, SEAM_SPHERE_INTERSECT, SEAM_PIXEL_SAMPLE_RAY,
-    SEAM_NORMAL_SHADE, SEAM_AABB_INTERSECT, SEAM_BVH_BUILD, SEAM_BVH_INTERSECT, SEAM_BVH_OCCLUDED, SEAM_BSDF_F,
-    SEAM_BSDF_PDF, SEAM_BSDF_SAMPLE_F, SEAM_ZERO_BOUNCE_RADIANCE, SEAM_DIRECT_HEMISPHERE, SEAM_DIRECT_IMPORTANCE,
-    SEAM_AT_LEAST_ONE_BOUNCE_RADIANCE, SEAM_RUSSIAN_ROULETTE, SEAM_ADAPTIVE_CONVERGED, SEAM_NUM_FUNCTIONS
+#define SEAM_FN_ID(name, task) SEAM_##name,
+    PL_SEAM_PART_FUNCTIONS(SEAM_FN_ID)
+#undef SEAM_FN_ID
+    SEAM_NUM_FUNCTIONS
 } seam_fn;
 
 /* The name and handout task of each function (the task a stub reports, framework/todo.h). */
@@ -125,5 +127,60 @@ void seam_trace_bounds(int nodes, int prims);
  * thread; on another (a render's worker) it prints "seam: <message>" and ends the judge with status
  * 3, which the grader reads as that test's failure. Does not return. */
 _Noreturn void seam_fail(seam_fn fn, const char *format, ...) __attribute__((format(printf, 2, 3)));
+
+/* ---- one description per part function: its wrapper and its replay ------------------------- */
+
+/* Most part functions answer with their return value alone, or with a hit. For those, one line in
+ * seam_partN.c describes the function and these macros write both halves from it: compiled with
+ * PL_SEAM_SUBJECT, __wrap_name (ld --wrap sends the tests' calls there), which calls the real
+ * function and records what it returned; with PL_SEAM_JUDGE, name itself, which replays the record.
+ *
+ * SEAM_FIXED(ret, wire, name, params, args, inputs, g): the answer is the return value, sent as
+ *   type `wire` (a bool travels as a byte, so any value the judge reads is a valid one). inputs is
+ *   an expression over the parameters hashing everything the call depends on; g is the generator
+ *   the call takes (its state after the call travels with the answer), or NULL.
+ * SEAM_HIT(name, params, args, inputs): an intersection whose parameters are named r (the ray, its
+ *   max_t shrunk on a hit) and h (the hit it fills): the answer, the ray and the hit are sent.
+ * Functions with other outputs (pointers they fill, a tree) are written out in their files. */
+#if defined(PL_SEAM_SUBJECT)
+#define SEAM_FIXED(ret, wire, name, params, args, inputs, g)                        \
+    ret __real_##name params;                                                       \
+    ret __wrap_##name params;                                                       \
+    ret __wrap_##name params                                                        \
+    {                                                                               \
+        seam_call call;                                                             \
+        uint64_t in = (inputs);                                                     \
+        if (!seam_begin(&call)) return __real_##name args;                          \
+        wire out = __real_##name args;                                              \
+        seam_end(&call, SEAM_##name, in, (g), &out, sizeof out, NULL, NULL, 0);     \
+        return out;                                                                 \
+    }
+#define SEAM_HIT(name, params, args, inputs)                                        \
+    bool __real_##name params;                                                      \
+    bool __wrap_##name params;                                                      \
+    bool __wrap_##name params                                                       \
+    {                                                                               \
+        seam_call call;                                                             \
+        uint64_t in = (inputs);                                                     \
+        if (!seam_begin(&call)) return __real_##name args;                          \
+        bool found = __real_##name args;                                            \
+        seam_end_hit(&call, SEAM_##name, in, found, r, h);                          \
+        return found;                                                               \
+    }
+#elif defined(PL_SEAM_JUDGE)
+#define SEAM_FIXED(ret, wire, name, params, args, inputs, g)                        \
+    ret name params                                                                 \
+    {                                                                               \
+        wire out;                                                                   \
+        seam_replay_fixed(SEAM_##name, (inputs), (g), &out, sizeof out);            \
+        ret value = out;                                                            \
+        return value;                                                               \
+    }
+#define SEAM_HIT(name, params, args, inputs) \
+    bool name params { return seam_replay_hit(SEAM_##name, (inputs), r, h); }
+#else
+#define SEAM_FIXED(ret, wire, name, params, args, inputs, g)
+#define SEAM_HIT(name, params, args, inputs)
+#endif
 
 #endif

@@ -51,7 +51,7 @@ bool __wrap_aabb_intersect(const aabb *b, const ray *r, float *t_enter, float *t
     out.found = __real_aabb_intersect(b, r, t_enter, t_exit);
     if (t_enter) out.t_enter = *t_enter;
     if (t_exit) out.t_exit = *t_exit;
-    seam_end(&call, SEAM_AABB_INTERSECT, in, NULL, &out, sizeof out, NULL, NULL, 0);
+    seam_end(&call, SEAM_aabb_intersect, in, NULL, &out, sizeof out, NULL, NULL, 0);
     return out.found;
 }
 
@@ -66,7 +66,7 @@ pl_status __wrap_bvh_build(bvh *out, const scene *s, int max_leaf_size)
     build_out head = {st, built ? out->num_nodes : 0, built ? out->num_prims : 0};
     const void *arrays[] = {built ? out->nodes : NULL, built ? out->prim_index : NULL};
     size_t sizes[] = {(size_t)head.num_nodes * sizeof(bvh_node), (size_t)head.num_prims * sizeof(int)};
-    seam_end(&call, SEAM_BVH_BUILD, in, NULL, &head, sizeof head, arrays, sizes, 2);
+    seam_end(&call, SEAM_bvh_build, in, NULL, &head, sizeof head, arrays, sizes, 2);
     return st;
 }
 
@@ -76,7 +76,7 @@ bool __wrap_bvh_intersect(const bvh *b, const scene *s, ray *r, hit *h)
     uint64_t in = traverse_inputs(b, s, r, h);
     if (!seam_begin(&call)) return __real_bvh_intersect(b, s, r, h);
     bool found = __real_bvh_intersect(b, s, r, h);
-    seam_end_hit(&call, SEAM_BVH_INTERSECT, in, found, r, h);
+    seam_end_hit(&call, SEAM_bvh_intersect, in, found, r, h);
     return found;
 }
 
@@ -86,7 +86,7 @@ bool __wrap_bvh_occluded(const bvh *b, const scene *s, const ray *r)
     uint64_t in = traverse_inputs(b, s, r, NULL);
     if (!seam_begin(&call)) return __real_bvh_occluded(b, s, r);
     bool found = __real_bvh_occluded(b, s, r);
-    seam_end_hit(&call, SEAM_BVH_OCCLUDED, in, found, NULL, NULL);
+    seam_end_hit(&call, SEAM_bvh_occluded, in, found, NULL, NULL);
     return found;
 }
 #endif
@@ -95,7 +95,7 @@ bool __wrap_bvh_occluded(const bvh *b, const scene *s, const ray *r)
 bool aabb_intersect(const aabb *b, const ray *r, float *t_enter, float *t_exit)
 {
     slab_out out;
-    seam_replay_fixed(SEAM_AABB_INTERSECT, slab_inputs(b, r, t_enter, t_exit), NULL, &out, sizeof out);
+    seam_replay_fixed(SEAM_aabb_intersect, slab_inputs(b, r, t_enter, t_exit), NULL, &out, sizeof out);
     if (t_enter) *t_enter = out.t_enter;
     if (t_exit) *t_exit = out.t_exit;
     return out.found != 0;
@@ -106,14 +106,14 @@ bool aabb_intersect(const aabb *b, const ray *r, float *t_enter, float *t_exit)
 pl_status bvh_build(bvh *out, const scene *s, int max_leaf_size)
 {
     size_t size;
-    const unsigned char *p = seam_replay(SEAM_BVH_BUILD, build_inputs(out, s, max_leaf_size), NULL, &size);
+    const unsigned char *p = seam_replay(SEAM_bvh_build, build_inputs(out, s, max_leaf_size), NULL, &size);
     build_out head;
-    if (size < sizeof head) seam_fail(SEAM_BVH_BUILD, "its answer is %zu bytes long", size);
+    if (size < sizeof head) seam_fail(SEAM_bvh_build, "its answer is %zu bytes long", size);
     memcpy(&head, p, sizeof head);
     int64_t bound = 4 * (int64_t)(s ? scene_prim_count(s) : 0) + 16;
     if (head.num_nodes < 0 || head.num_prims < 0 || head.num_nodes > bound || head.num_prims > bound ||
         size != sizeof head + (size_t)head.num_nodes * sizeof(bvh_node) + (size_t)head.num_prims * sizeof(int))
-        seam_fail(SEAM_BVH_BUILD, "it sent a tree of %d nodes and %d primitive slots in %zu bytes", head.num_nodes,
+        seam_fail(SEAM_bvh_build, "it sent a tree of %d nodes and %d primitive slots in %zu bytes", head.num_nodes,
                   head.num_prims, size);
     pl_status st = head.status >= PL_OK && head.status <= PL_ERR_NOMEM ? (pl_status)head.status : PL_ERR_INVALID;
     if (!out) return st;
@@ -150,11 +150,11 @@ static bool replay_traversal(seam_fn fn, const bvh *b, const scene *s, const ray
 
 bool bvh_intersect(const bvh *b, const scene *s, ray *r, hit *h)
 {
-    return replay_traversal(SEAM_BVH_INTERSECT, b, s, r, r, h);
+    return replay_traversal(SEAM_bvh_intersect, b, s, r, r, h);
 }
 
 bool bvh_occluded(const bvh *b, const scene *s, const ray *r)
 {
-    return replay_traversal(SEAM_BVH_OCCLUDED, b, s, r, NULL, NULL);
+    return replay_traversal(SEAM_bvh_occluded, b, s, r, NULL, NULL);
 }
 #endif

@@ -23,39 +23,21 @@ static uint64_t estimator_inputs(const struct render_ctx *ctx, const ray *r, con
     return seam_hash_rng(seam_hash_hit(seam_hash_ray(seam_hash_ctx(SEAM_HASH_START, ctx), r), h), g);
 }
 
+/* The BSDF's value and density, and the three estimators (their generator's state travels with the
+ * answer): one line each, see SEAM_FIXED in seam.h. */
+SEAM_FIXED(rgb, rgb, bsdf_f, (const material *m, vec3 wo, vec3 wi), (m, wo, wi), bsdf_inputs(m, wo, wi), NULL)
+SEAM_FIXED(float, float, bsdf_pdf, (const material *m, vec3 wo, vec3 wi), (m, wo, wi), bsdf_inputs(m, wo, wi), NULL)
+SEAM_FIXED(rgb, rgb, zero_bounce_radiance, (const struct render_ctx *ctx, const ray *r, const hit *h), (ctx, r, h),
+           estimator_inputs(ctx, r, h, NULL), NULL)
+SEAM_FIXED(rgb, rgb, direct_hemisphere, (const struct render_ctx *ctx, const ray *r, const hit *h, rng *g),
+           (ctx, r, h, g), estimator_inputs(ctx, r, h, g), g)
+SEAM_FIXED(rgb, rgb, direct_importance, (const struct render_ctx *ctx, const ray *r, const hit *h, rng *g),
+           (ctx, r, h, g), estimator_inputs(ctx, r, h, g), g)
+
+/* bsdf_sample_f also fills *wi and *pdf: its answer is the three together (sample_out). */
 #ifdef PL_SEAM_SUBJECT
-rgb __real_bsdf_f(const material *m, vec3 wo, vec3 wi);
-float __real_bsdf_pdf(const material *m, vec3 wo, vec3 wi);
 rgb __real_bsdf_sample_f(const material *m, vec3 wo, vec2 u, vec3 *wi, float *pdf);
-rgb __real_zero_bounce_radiance(const struct render_ctx *ctx, const ray *r, const hit *h);
-rgb __real_direct_hemisphere(const struct render_ctx *ctx, const ray *r, const hit *h, rng *g);
-rgb __real_direct_importance(const struct render_ctx *ctx, const ray *r, const hit *h, rng *g);
-rgb __wrap_bsdf_f(const material *m, vec3 wo, vec3 wi);
-float __wrap_bsdf_pdf(const material *m, vec3 wo, vec3 wi);
 rgb __wrap_bsdf_sample_f(const material *m, vec3 wo, vec2 u, vec3 *wi, float *pdf);
-rgb __wrap_zero_bounce_radiance(const struct render_ctx *ctx, const ray *r, const hit *h);
-rgb __wrap_direct_hemisphere(const struct render_ctx *ctx, const ray *r, const hit *h, rng *g);
-rgb __wrap_direct_importance(const struct render_ctx *ctx, const ray *r, const hit *h, rng *g);
-
-rgb __wrap_bsdf_f(const material *m, vec3 wo, vec3 wi)
-{
-    seam_call call;
-    uint64_t in = bsdf_inputs(m, wo, wi);
-    if (!seam_begin(&call)) return __real_bsdf_f(m, wo, wi);
-    rgb out = __real_bsdf_f(m, wo, wi);
-    seam_end(&call, SEAM_BSDF_F, in, NULL, &out, sizeof out, NULL, NULL, 0);
-    return out;
-}
-
-float __wrap_bsdf_pdf(const material *m, vec3 wo, vec3 wi)
-{
-    seam_call call;
-    uint64_t in = bsdf_inputs(m, wo, wi);
-    if (!seam_begin(&call)) return __real_bsdf_pdf(m, wo, wi);
-    float out = __real_bsdf_pdf(m, wo, wi);
-    seam_end(&call, SEAM_BSDF_PDF, in, NULL, &out, sizeof out, NULL, NULL, 0);
-    return out;
-}
 
 rgb __wrap_bsdf_sample_f(const material *m, vec3 wo, vec2 u, vec3 *wi, float *pdf)
 {
@@ -67,83 +49,18 @@ rgb __wrap_bsdf_sample_f(const material *m, vec3 wo, vec2 u, vec3 *wi, float *pd
     out.f = __real_bsdf_sample_f(m, wo, u, wi, pdf);
     if (wi) out.wi = *wi;
     if (pdf) out.pdf = *pdf;
-    seam_end(&call, SEAM_BSDF_SAMPLE_F, in, NULL, &out, sizeof out, NULL, NULL, 0);
+    seam_end(&call, SEAM_bsdf_sample_f, in, NULL, &out, sizeof out, NULL, NULL, 0);
     return out.f;
-}
-
-rgb __wrap_zero_bounce_radiance(const struct render_ctx *ctx, const ray *r, const hit *h)
-{
-    seam_call call;
-    uint64_t in = estimator_inputs(ctx, r, h, NULL);
-    if (!seam_begin(&call)) return __real_zero_bounce_radiance(ctx, r, h);
-    rgb out = __real_zero_bounce_radiance(ctx, r, h);
-    seam_end(&call, SEAM_ZERO_BOUNCE_RADIANCE, in, NULL, &out, sizeof out, NULL, NULL, 0);
-    return out;
-}
-
-rgb __wrap_direct_hemisphere(const struct render_ctx *ctx, const ray *r, const hit *h, rng *g)
-{
-    seam_call call;
-    uint64_t in = estimator_inputs(ctx, r, h, g);
-    if (!seam_begin(&call)) return __real_direct_hemisphere(ctx, r, h, g);
-    rgb out = __real_direct_hemisphere(ctx, r, h, g);
-    seam_end(&call, SEAM_DIRECT_HEMISPHERE, in, g, &out, sizeof out, NULL, NULL, 0);
-    return out;
-}
-
-rgb __wrap_direct_importance(const struct render_ctx *ctx, const ray *r, const hit *h, rng *g)
-{
-    seam_call call;
-    uint64_t in = estimator_inputs(ctx, r, h, g);
-    if (!seam_begin(&call)) return __real_direct_importance(ctx, r, h, g);
-    rgb out = __real_direct_importance(ctx, r, h, g);
-    seam_end(&call, SEAM_DIRECT_IMPORTANCE, in, g, &out, sizeof out, NULL, NULL, 0);
-    return out;
 }
 #endif
 
 #ifdef PL_SEAM_JUDGE
-rgb bsdf_f(const material *m, vec3 wo, vec3 wi)
-{
-    rgb out;
-    seam_replay_fixed(SEAM_BSDF_F, bsdf_inputs(m, wo, wi), NULL, &out, sizeof out);
-    return out;
-}
-
-float bsdf_pdf(const material *m, vec3 wo, vec3 wi)
-{
-    float out;
-    seam_replay_fixed(SEAM_BSDF_PDF, bsdf_inputs(m, wo, wi), NULL, &out, sizeof out);
-    return out;
-}
-
 rgb bsdf_sample_f(const material *m, vec3 wo, vec2 u, vec3 *wi, float *pdf)
 {
     sample_out out;
-    seam_replay_fixed(SEAM_BSDF_SAMPLE_F, sample_inputs(m, wo, u, wi, pdf), NULL, &out, sizeof out);
+    seam_replay_fixed(SEAM_bsdf_sample_f, sample_inputs(m, wo, u, wi, pdf), NULL, &out, sizeof out);
     if (wi) *wi = out.wi;
     if (pdf) *pdf = out.pdf;
     return out.f;
-}
-
-rgb zero_bounce_radiance(const struct render_ctx *ctx, const ray *r, const hit *h)
-{
-    rgb out;
-    seam_replay_fixed(SEAM_ZERO_BOUNCE_RADIANCE, estimator_inputs(ctx, r, h, NULL), NULL, &out, sizeof out);
-    return out;
-}
-
-rgb direct_hemisphere(const struct render_ctx *ctx, const ray *r, const hit *h, rng *g)
-{
-    rgb out;
-    seam_replay_fixed(SEAM_DIRECT_HEMISPHERE, estimator_inputs(ctx, r, h, g), g, &out, sizeof out);
-    return out;
-}
-
-rgb direct_importance(const struct render_ctx *ctx, const ray *r, const hit *h, rng *g)
-{
-    rgb out;
-    seam_replay_fixed(SEAM_DIRECT_IMPORTANCE, estimator_inputs(ctx, r, h, g), g, &out, sizeof out);
-    return out;
 }
 #endif

@@ -17,21 +17,14 @@ static uint64_t roulette_inputs(const rgb *beta, int next_depth, const rng *g)
     return seam_hash_rng(seam_hash_int(h, next_depth), g);
 }
 
-#ifdef PL_SEAM_SUBJECT
-rgb __real_at_least_one_bounce_radiance(const struct render_ctx *ctx, const ray *r, const hit *h, rng *g);
-bool __real_russian_roulette(rgb *beta, int next_depth, rng *g);
-rgb __wrap_at_least_one_bounce_radiance(const struct render_ctx *ctx, const ray *r, const hit *h, rng *g);
-bool __wrap_russian_roulette(rgb *beta, int next_depth, rng *g);
+/* The path's radiance: one line, see SEAM_FIXED in seam.h. */
+SEAM_FIXED(rgb, rgb, at_least_one_bounce_radiance, (const struct render_ctx *ctx, const ray *r, const hit *h, rng *g),
+           (ctx, r, h, g), bounce_inputs(ctx, r, h, g), g)
 
-rgb __wrap_at_least_one_bounce_radiance(const struct render_ctx *ctx, const ray *r, const hit *h, rng *g)
-{
-    seam_call call;
-    uint64_t in = bounce_inputs(ctx, r, h, g);
-    if (!seam_begin(&call)) return __real_at_least_one_bounce_radiance(ctx, r, h, g);
-    rgb out = __real_at_least_one_bounce_radiance(ctx, r, h, g);
-    seam_end(&call, SEAM_AT_LEAST_ONE_BOUNCE_RADIANCE, in, g, &out, sizeof out, NULL, NULL, 0);
-    return out;
-}
+/* russian_roulette also rescales *beta: its answer is the verdict and the throughput (roulette_out). */
+#ifdef PL_SEAM_SUBJECT
+bool __real_russian_roulette(rgb *beta, int next_depth, rng *g);
+bool __wrap_russian_roulette(rgb *beta, int next_depth, rng *g);
 
 bool __wrap_russian_roulette(rgb *beta, int next_depth, rng *g)
 {
@@ -42,23 +35,16 @@ bool __wrap_russian_roulette(rgb *beta, int next_depth, rng *g)
     memset(&out, 0, sizeof out);
     out.go_on = __real_russian_roulette(beta, next_depth, g);
     if (beta) out.beta = *beta;
-    seam_end(&call, SEAM_RUSSIAN_ROULETTE, in, g, &out, sizeof out, NULL, NULL, 0);
+    seam_end(&call, SEAM_russian_roulette, in, g, &out, sizeof out, NULL, NULL, 0);
     return out.go_on;
 }
 #endif
 
 #ifdef PL_SEAM_JUDGE
-rgb at_least_one_bounce_radiance(const struct render_ctx *ctx, const ray *r, const hit *h, rng *g)
-{
-    rgb out;
-    seam_replay_fixed(SEAM_AT_LEAST_ONE_BOUNCE_RADIANCE, bounce_inputs(ctx, r, h, g), g, &out, sizeof out);
-    return out;
-}
-
 bool russian_roulette(rgb *beta, int next_depth, rng *g)
 {
     roulette_out out;
-    seam_replay_fixed(SEAM_RUSSIAN_ROULETTE, roulette_inputs(beta, next_depth, g), g, &out, sizeof out);
+    seam_replay_fixed(SEAM_russian_roulette, roulette_inputs(beta, next_depth, g), g, &out, sizeof out);
     if (beta) *beta = out.beta;
     return out.go_on != 0;
 }

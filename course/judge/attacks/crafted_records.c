@@ -18,14 +18,14 @@ bool adaptive_converged(int n, double s1, double s2, float tol)
     const char *test = getenv("PL_TEST_FILTER");
     uint32_t pick = 0;
     for (const char *c = test ? test : ""; *c; c++) pick = pick * 2 + (unsigned char)*c;
-    seam_header h = {SEAM_MAGIC, SEAM_ADAPTIVE_CONVERGED, 0, {0, 0, 0}, 0, -1, {0, 0}, 0, 0, 0, 1};
+    seam_header h = {SEAM_MAGIC, SEAM_adaptive_converged, 0, {0, 0, 0}, 0, -1, {0, 0}, 0, 0, 0, 1};
     double d[] = {s1, s2};
     h.inputs = SEAM_HASH(SEAM_HASH(seam_hash_int(SEAM_HASH_START, n), d), tol);  /* the judge's own hash */
     switch (pick % 5) {
     case 0: h.payload = SEAM_MAX_PAYLOAD + 1; break;
     case 1: h.trace_nodes = 1u << 31; break;
     case 2: h.todo_calls = 0xffffffffu; h.todo_fn = 1 << 30; break;
-    case 3: h.fn = SEAM_BVH_BUILD; break;
+    case 3: h.fn = SEAM_bvh_build; break;
     default: h.payload = 1 << 20; break;  /* promised, never sent */
     }
     struct { seam_header h; unsigned char answer; } r = {h, 1};  /* "converged", the one byte promised */
