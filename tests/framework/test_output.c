@@ -3,6 +3,7 @@
  * temporaries exclusive and cleaned up, all files renamed together or none, valid JSON. Most tests
  * run bin/pathtracer in a scratch folder, as a user would. */
 #include "../common/test.h"
+#include "../common/scratch.h"
 #include "../../framework/output.h"
 #include "../../framework/file.h"
 #include <dirent.h>
@@ -39,16 +40,13 @@ int mkstemp(char *template)
 static int make_dir(void **state)
 {
     (void)state;
-    snprintf(dir, sizeof dir, "/tmp/pathlab-output-XXXXXX");
-    return mkdtemp(dir) ? 0 : -1;
+    return scratch_make(dir, sizeof dir, "output");
 }
 
 static int remove_dir(void **state)
 {
     (void)state;
-    char cmd[128];
-    snprintf(cmd, sizeof cmd, "rm -rf '%s'", dir);
-    return system(cmd) == 0 ? 0 : -1;
+    return scratch_remove(dir);
 }
 
 /* Runs bin/pathtracer with args (a format with %s for the scratch folder); returns its exit code. */
@@ -141,14 +139,11 @@ static void test_output__symlinked_name_is_replaced_not_followed(void **state)
     char victim[128], link[128];
     snprintf(victim, sizeof victim, "%s/victim.txt", dir);
     snprintf(link, sizeof link, "%s/x.png", dir);
-    FILE *f = fopen(victim, "w");
-    assert_non_null(f);
-    fputs("precious", f);
-    fclose(f);
+    scratch_write(victim, "precious");
     assert_int_equal(0, symlink(victim, link));
     assert_int_equal(0, render("--normals -r 16 12 -f %s/x.png " SCENE));
     char buf[16] = "";
-    f = fopen(victim, "r");
+    FILE *f = fopen(victim, "r");
     assert_non_null(f);
     assert_non_null(fgets(buf, sizeof buf, f));
     fclose(f);
@@ -195,10 +190,7 @@ static void test_output__one_failure_writes_none(void **state)
     char img[128], old[128];
     snprintf(img, sizeof img, "%s/x.png", dir);
     snprintf(old, sizeof old, "%s/x.json", dir);
-    FILE *f = fopen(old, "w");
-    assert_non_null(f);
-    fputs("old sidecar", f);
-    fclose(f);
+    scratch_write(old, "old sidecar");
     options o = options_default();
     o.output = img;
     o.scene_path = SCENE;

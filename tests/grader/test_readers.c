@@ -4,6 +4,7 @@
  * shows (grader/grade_report.c: no entry ever lost to bytes that are not UTF-8). Each hostile file
  * is written here, from the course's real ones. */
 #include "../common/test.h"
+#include "../common/scratch.h"
 #include "../../grader/grade.h"
 #include "../../grader/grade_refs.h"
 #include "../../grader/grade_suite.h"
@@ -23,22 +24,13 @@ static char scratch[64];
 static int make_scratch(void **state)
 {
     (void)state;
-    snprintf(scratch, sizeof scratch, "/tmp/pl-readers-test-XXXXXX");
-    return mkdtemp(scratch) ? 0 : -1;
+    return scratch_make(scratch, sizeof scratch, "readers-test");
 }
 
 static int remove_scratch(void **state)
 {
     (void)state;
-    char cmd[128];
-    snprintf(cmd, sizeof cmd, "rm -rf '%s'", scratch);
-    return system(cmd) == 0 ? 0 : -1;
-}
-
-static void write_text(const char *path, const char *text)
-{
-    pl_diag d = pl_diag_default();
-    assert_int_equal(PL_OK, file_write_atomic(path, text, strlen(text), &d));
+    return scratch_remove(scratch);
 }
 
 static void sh(const char *fmt, const char *a, const char *b)
@@ -98,9 +90,9 @@ static void test_refs__the_json_a_check_needs_is_required(void **state)
     snprintf(adaptive, sizeof adaptive, "%s/reference_images/part5/spheres_adaptive.json", root);
     assert_int_equal(0, unlink(json));
     expect_refused(root, "bunny_normals.json", "bunny_normals");
-    write_text(json, "");
+    scratch_write(json, "");
     expect_refused(root, "bunny_normals.json", "bunny_normals");
-    write_text(json, "{\"case\": \"bunny_normals\", \"part\": 2, \"samples\": 1, \"seed\": 1,");
+    scratch_write(json, "{\"case\": \"bunny_normals\", \"part\": 2, \"samples\": 1, \"seed\": 1,");
     expect_refused(root, "bunny_normals.json", "bunny_normals");
     fresh_root(root, sizeof root);
     sh("sed -i 's/\"work_per_ray\": \\([0-9.]*\\)/\"work_per_ray\": \\1, \"work_per_ray\": 0/' '%s'%s", json, "");
@@ -183,7 +175,7 @@ static void suite_file(const char *dir, const char *name, const char *body)
 {
     char path[512];
     snprintf(path, sizeof path, "%s/%s", dir, name);
-    write_text(path, body);
+    scratch_write(path, body);
 }
 
 static bool read_dir(const char *name, const char *file, const char *body, grade_part_result *r, char *why)

@@ -8,6 +8,7 @@
  * - as root, a child running as nobody cannot open a reference, a hidden case or the results;
  * - a failed build's message is its last lines. */
 #include "../common/test.h"
+#include "../common/scratch.h"
 #include "../../grader/grade.h"
 #include "../../grader/grade_guard.h"
 #include "../../grader/grade_inspect.h"
@@ -29,8 +30,7 @@ static char scratch[64];
 static int make_scratch(void **state)
 {
     (void)state;
-    snprintf(scratch, sizeof scratch, "/tmp/pl-grade-test-XXXXXX");
-    if (!mkdtemp(scratch) || chmod(scratch, 0755) != 0) return -1;
+    if (scratch_make(scratch, sizeof scratch, "grade-test") != 0) return -1;
     grade_sandbox_probe();
     return 0;
 }
@@ -38,17 +38,7 @@ static int make_scratch(void **state)
 static int remove_scratch(void **state)
 {
     (void)state;
-    char cmd[128];
-    snprintf(cmd, sizeof cmd, "rm -rf '%s'", scratch);
-    return system(cmd) == 0 ? 0 : -1;
-}
-
-static void write_text(const char *path, const char *text)
-{
-    FILE *f = fopen(path, "w");
-    assert_non_null(f);
-    fputs(text, f);
-    assert_int_equal(fclose(f), 0);
+    return scratch_remove(scratch);
 }
 
 static long file_size(const char *path)
@@ -65,6 +55,16 @@ static int run_untrusted(const char *script, const char *log)
     grade_run_opts o = {.wall_seconds = 30, .log_path = log, .log_max = 4096, .untrusted = true, .compiler = true};
     grade_run_result r = grade_run(argv, &o);
     return r.exited ? r.status : -1;
+}
+
+/* The first line a child printed into its log (the test fails when there is none). */
+static void first_line(const char *log, char *text, int size)
+{
+    FILE *f = fopen(log, "r");
+    assert_non_null(f);
+    bool got = fgets(text, size, f) != NULL;
+    fclose(f);
+    if (!got) fail_msg("%s is empty: the child printed nothing", log);
 }
 
 /* ---- the allow-list ------------------------------------------------------------------------ */
@@ -152,7 +152,7 @@ static void test_suite_score__only_a_suite_run_to_its_end(void **state)
     write_suite_xml(dir, "a", 20, 0);
     char path[300];
     snprintf(path, sizeof path, "%s/part1: b.xml", dir);
-    write_text(path, "<testsuites><testsuite><testcase name=");
+    scratch_write(path, "<testsuites><testsuite><testcase name=");
     score_dir("bad", &r);
     assert_non_null(strstr(r.suite_reason, "the suite's results are not what it writes: part1: b.xml"));
     assert_int_equal(unlink(path), 0);
@@ -172,7 +172,7 @@ static void test_run__log_is_a_fresh_file_never_a_planted_link(void **state)
     char victim[256], log[256], text[64] = "";
     snprintf(victim, sizeof victim, "%s/victim", scratch);
     snprintf(log, sizeof log, "%s/planted.log", scratch);
-    write_text(victim, "precious\n");
+    scratch_write(victim, "precious\n");
     assert_int_equal(symlink(victim, log), 0);
     assert_int_equal(run_untrusted("echo from the child", log), 0);
     FILE *f = fopen(victim, "r");
@@ -283,10 +283,7 @@ static void test_run__a_stage_is_a_namespace_of_its_own(void **state)
              "setsid sh -c 'exec sleep 97.25' </dev/null >/dev/null 2>&1 & "
              "if [ -e /proc/%d ]; then echo grader-visible; else ls /proc | grep -c '^[0-9]'; fi", (int)getpid());
     assert_int_equal(run_untrusted(script, log), 0);
-    FILE *f = fopen(log, "r");
-    assert_non_null(f);
-    assert_non_null(fgets(text, sizeof text, f));
-    fclose(f);
+    first_line(log, text, sizeof text);
     if (!strncmp(text, "grader-visible", 14)) fail_msg("the child saw the grader (pid %d) in its /proc", (int)getpid());
     long seen = atol(text);
     if (seen < 1 || seen > 8) fail_msg("the child's /proc lists %ld processes; its own namespace has a few", seen);
@@ -301,10 +298,7 @@ static void test_run__untrusted_children_have_a_process_limit(void **state)
     char log[256], text[64] = "";
     snprintf(log, sizeof log, "%s/nproc.log", scratch);
     assert_int_equal(run_untrusted("awk '/Max processes/ {print $3}' /proc/self/limits", log), 0);
-    FILE *f = fopen(log, "r");
-    assert_non_null(f);
-    assert_non_null(fgets(text, sizeof text, f));
-    fclose(f);
+    first_line(log, text, sizeof text);
     if (!strncmp(text, "unlimited", 9)) fail_msg("an untrusted child has no process limit (uid %u)", getuid());
     long limit = atol(text);
     assert_true(limit > 0 && limit < 100000);
@@ -347,7 +341,7 @@ static void test_guard__nobody_cannot_open_a_reference(void **state)
                                         "out/results.json", NULL};
     for (const char *const *f = files; *f; f++) {
         snprintf(path, sizeof path, "%s/%s", scratch, *f);
-        write_text(path, "secret\n");
+        scratch_write(path, "secret\n");
         chmod(path, 0644);
     }
     snprintf(log, sizeof log, "%s/guard.log", scratch);
@@ -406,7 +400,7 @@ static void test_diagnostics__only_the_parts_own_files(void **state)
     (void)state;
     char path[256], text[4096];
     snprintf(path, sizeof path, "%s/diag.log", scratch);
-    write_text(path, "  CC     parts/part3_direct/direct.c\n"
+    scratch_write(path, "  CC     parts/part3_direct/direct.c\n"
                      "In file included from parts/part3_direct/direct.c:2:\n"
                      "grading/hidden/secret.dae:1:1: error: expected identifier before '<' token\n"
                      "    1 | <COLLADA secret scene line>\n"

@@ -143,7 +143,9 @@ _Noreturn void seam_fail(seam_fn fn, const char *format, ...) __attribute__((for
  *   max_t shrunk on a hit) and h (the hit it fills): the answer, the ray and the hit are sent.
  * Functions with other outputs (pointers they fill, a tree) are written out in their files. */
 #if defined(PL_SEAM_SUBJECT)
-#define SEAM_FIXED(ret, wire, name, params, args, inputs, g)                        \
+/* The wrapper both share: hash the inputs, call the real function, record (a nested call is not
+ * recorded: seam_begin), return what it returned. */
+#define SEAM_WRAPPER(ret, wire, name, params, args, inputs, record)                 \
     ret __real_##name params;                                                       \
     ret __wrap_##name params;                                                       \
     ret __wrap_##name params                                                        \
@@ -152,21 +154,13 @@ _Noreturn void seam_fail(seam_fn fn, const char *format, ...) __attribute__((for
         uint64_t in = (inputs);                                                     \
         if (!seam_begin(&call)) return __real_##name args;                          \
         wire out = __real_##name args;                                              \
-        seam_end(&call, SEAM_##name, in, (g), &out, sizeof out, NULL, NULL, 0);     \
+        record;                                                                     \
         return out;                                                                 \
     }
-#define SEAM_HIT(name, params, args, inputs)                                        \
-    bool __real_##name params;                                                      \
-    bool __wrap_##name params;                                                      \
-    bool __wrap_##name params                                                       \
-    {                                                                               \
-        seam_call call;                                                             \
-        uint64_t in = (inputs);                                                     \
-        if (!seam_begin(&call)) return __real_##name args;                          \
-        bool found = __real_##name args;                                            \
-        seam_end_hit(&call, SEAM_##name, in, found, r, h);                          \
-        return found;                                                               \
-    }
+#define SEAM_FIXED(ret, wire, name, params, args, inputs, g) \
+    SEAM_WRAPPER(ret, wire, name, params, args, inputs, seam_end(&call, SEAM_##name, in, (g), &out, sizeof out, NULL, NULL, 0))
+#define SEAM_HIT(name, params, args, inputs) \
+    SEAM_WRAPPER(bool, bool, name, params, args, inputs, seam_end_hit(&call, SEAM_##name, in, out, r, h))
 #elif defined(PL_SEAM_JUDGE)
 #define SEAM_FIXED(ret, wire, name, params, args, inputs, g)                        \
     ret name params                                                                 \
