@@ -16,6 +16,7 @@
 #include "../../framework/sampler.h"
 #include <math.h>
 #include <stdio.h>
+#include <stdlib.h>
 #include <string.h>
 
 #define COMPLEXITY_RAYS 2000
@@ -323,11 +324,230 @@ static void test_bvh_occluded__counts_its_work_through_the_framework(void **stat
     if (!any_consistent(SMALL, bvh_occluded, COMPLEXITY_RAYS, why, sizeof why)) fail_msg("%s", why);
 }
 
+/* ---- Order: the nearer child first, nothing behind the nearest hit, nothing after an any hit ---- */
+
+/* Trees the tests build by hand, so that the student's bvh_build plays no part: what is judged is
+ * the traversal alone, on a tree whose shape makes order matter. The scenes are built so that no
+ * two boxes are entered at the same t, and every count below is exact for a correct traversal. */
+typedef struct { scene s; bvh b; work_check check; } order_tree;
+
+static void order_tree_free(order_tree *t)
+{
+    work_check_free(&t->check);
+    bvh_free(&t->b);
+    scene_free(&t->s);
+}
+
+static void add_big_triangle(scene *s, float z)
+{
+    /* Covers (x, y) in [-1.5, 1.5]^2 and more, in the plane z. */
+    scene_add_triangle(s, triangle_make(vec3_make(-4, -4, z), vec3_make(4, -4, z), vec3_make(0, 4, z), 0));
+}
+
+/* The node array's children of the root, nodes[1] and nodes[2], hold a and b's trees; a is a leaf
+ * of a_count primitives starting at prim slot 0; b is the tree `sub` (of the primitives after a's),
+ * whose nodes follow. wall_second puts a at nodes[2]. */
+static void order_tree_finish(order_tree *t, int a_count, const bvh *sub, bool a_second)
+{
+    int n = 3 + (sub->num_nodes - 1), prims = a_count + sub->num_prims;
+    t->b.nodes = malloc((size_t)n * sizeof *t->b.nodes);
+    t->b.prim_index = malloc((size_t)prims * sizeof *t->b.prim_index);
+    if (!t->b.nodes || !t->b.prim_index) PL_FAIL("test machinery: out of memory");
+    t->b.num_nodes = n;
+    t->b.num_prims = prims;
+    aabb a_box = aabb_empty();
+    for (int i = 0; i < a_count; i++) {
+        t->b.prim_index[i] = i;
+        a_box = aabb_union(a_box, scene_prim_bounds(&t->s, i));
+    }
+    for (int i = 0; i < sub->num_prims; i++) t->b.prim_index[a_count + i] = sub->prim_index[i] + a_count;
+    int a_at = a_second ? 2 : 1, sub_at = a_second ? 1 : 2;
+    t->b.nodes[a_at] = (bvh_node){a_box, 0, a_count};
+    /* sub's node i > 0 moves to i + 2; its interior nodes' children and its leaves' slots move too. */
+    for (int i = 0; i < sub->num_nodes; i++) {
+        bvh_node node = sub->nodes[i];
+        node.first += node.count > 0 ? a_count : 2;
+        t->b.nodes[i == 0 ? sub_at : i + 2] = node;
+    }
+    t->b.nodes[0] = (bvh_node){aabb_union(a_box, sub->nodes[0].box), 1, 0};
+    pl_diag why = pl_diag_default();
+    if (bvh_validate(&t->b, &t->s, 64, true, NULL, &why) != PL_OK) PL_FAIL("test machinery: a bad tree: %s", why.error);
+    work_check_init(&t->check, &t->b, &t->s);
+}
+
+/* A wall (2 triangles at z = 0) in front of a mesh (8 layers of 32 small triangles, z = -1 to
+ * -2.75), the wall one child of the root and the mesh's own median tree the other. */
+static void wall_tree(order_tree *t, bool wall_second)
+{
+    memset(t, 0, sizeof *t);
+    scene mesh = {0};
+    for (scene *s = &t->s; s; s = s == &t->s ? &mesh : NULL) scene_add_material(s, material_make(rgb_gray(0.5f), rgb_gray(0)));
+    scene_add_triangle(&t->s, triangle_make(vec3_make(-1, -1, 0), vec3_make(1, -1, 0), vec3_make(1, 1, 0), 0));
+    scene_add_triangle(&t->s, triangle_make(vec3_make(-1, -1, 0), vec3_make(1, 1, 0), vec3_make(-1, 1, 0), 0));
+    for (int layer = 0; layer < 8; layer++)
+        for (int i = 0; i < 4; i++)
+            for (int j = 0; j < 4; j++) {
+                float z = -1.0f - 0.25f * (float)layer, x = -1.0f + 0.5f * (float)i, y = -1.0f + 0.5f * (float)j;
+                triangle q[2] = {triangle_make(vec3_make(x, y, z), vec3_make(x + 0.5f, y, z), vec3_make(x + 0.5f, y + 0.5f, z), 0),
+                                 triangle_make(vec3_make(x, y, z), vec3_make(x + 0.5f, y + 0.5f, z), vec3_make(x, y + 0.5f, z), 0)};
+                for (int k = 0; k < 2; k++) scene_add_triangle(&t->s, q[k]), scene_add_triangle(&mesh, q[k]);
+            }
+    bvh sub;
+    fixture_build_median(&sub, &mesh, 4);
+    order_tree_finish(t, 2, &sub, wall_second);
+    bvh_free(&sub);
+    scene_free(&mesh);
+}
+
+/* Ray k of 49, straight down -z from z = 5 through the wall, at points off the wall's edges. */
+static ray wall_ray(int k) { return ray_make(vec3_make(-0.87f + 0.29f * (float)(k % 7), -0.87f + 0.29f * (float)(k / 7), 5), vec3_make(0, 0, -1), 0.0f, INFINITY); }
+
+/* The closest hit on the wall tree, both ways round: true when every ray hit the wall testing no
+ * primitive of the mesh behind it; otherwise false with what the query did in why. */
+static bool nothing_behind_the_wall(closest_fn query, char *why, size_t why_len)
+{
+    for (int order = 0; order < 2; order++) {
+        order_tree t;
+        wall_tree(&t, order == 1);
+        for (int k = 0; k < 49; k++) {
+            ray r = wall_ray(k);
+            hit h;
+            work_check_begin(&t.check);
+            bool found = query(&t.b, &t.s, &r, &h);
+            work_check_end(&t.check);
+            int behind = 0;
+            for (int i = 0; i < t.check.trace.num_prims; i++) behind += t.check.trace.prims[i] >= 2;
+            if (!found || h.prim > 1)
+                snprintf(why, why_len, "ray %d from (%.2f, %.2f, 5) straight at a wall: %s", k, (double)r.o.x,
+                         (double)r.o.y, found ? "it reported a hit behind the wall" : "it reported no hit");
+            else if (behind > 0)
+                snprintf(why, why_len, "ray %d hit a wall at t = %.3g, then tested %d triangles of the mesh behind it "
+                         "(the wall was child %d of the root): visit the nearer child first, and skip a popped node "
+                         "whose t_enter > r->max_t (task 2.3)", k, (double)h.t, behind, order + 1);
+            if (!found || h.prim > 1 || behind > 0) {
+                order_tree_free(&t);
+                return false;
+            }
+        }
+        order_tree_free(&t);
+    }
+    return true;
+}
+
+/* The test's own nearest-first traversal with the early exit, as the handout describes it. */
+static bool nearest_first(const bvh *b, const scene *s, ray *r, hit *h)
+{
+    int stack[2 * BVH_MAX_DEPTH + 2], top = 0;
+    stack[top++] = 0;
+    bool found = false;
+    while (top > 0) {
+        const bvh_node *n = bvh_visit(b, stack[--top]);
+        if (!box_overlaps(n, r)) continue;  /* with the current max_t: what lies behind a hit is skipped */
+        if (n->count > 0) {
+            for (int i = 0; i < n->count; i++) found |= scene_prim_intersect(s, b->prim_index[n->first + i], r, h);
+            continue;
+        }
+        /* The child whose box centre is nearer along the ray goes on top (read directly: the test's
+         * own traversal, whose visit counts nobody judges). */
+        const bvh_node *c0 = &b->nodes[n->first], *c1 = &b->nodes[n->first + 1];
+        vec3 m0 = vec3_scale(vec3_add(c0->box.min, c0->box.max), 0.5f), m1 = vec3_scale(vec3_add(c1->box.min, c1->box.max), 0.5f);
+        bool first_nearer = vec3_dot(vec3_sub(m0, r->o), r->d) <= vec3_dot(vec3_sub(m1, r->o), r->d);
+        stack[top++] = first_nearer ? n->first + 1 : n->first;
+        stack[top++] = first_nearer ? n->first : n->first + 1;
+    }
+    return found;
+}
+
+static void test_bvh_intersect__nearer_child_first_nothing_behind_the_nearest_hit(void **state)
+{
+    (void)state;
+    char why[512];
+    /* The machinery: the handout's traversal passes, a plain left-first one is caught. */
+    if (!nothing_behind_the_wall(nearest_first, why, sizeof why))
+        fail_msg("test machinery: a correct nearest-first traversal failed: %s", why);
+    expect_caught(nothing_behind_the_wall(dfs_closest, why, sizeof why), "a left-first traversal", why, "child 2 of the root");
+    if (!nothing_behind_the_wall(bvh_intersect, why, sizeof why)) fail_msg("%s", why);
+    assert_implemented();
+}
+
+/* Two leaves under the root: A holds a small triangle off to the side (it stretches A's box
+ * forward, so the ray enters A first, at t = 6) and two big ones at z = -7 and -8; B holds big
+ * ones at z = -2 and -3 (entered at t = 7). A closest-hit search tests B after A's hit at t = 12;
+ * an any-hit query has its answer at its first hit. */
+static void stack_tree(order_tree *t)
+{
+    memset(t, 0, sizeof *t);
+    scene_add_material(&t->s, material_make(rgb_gray(0.5f), rgb_gray(0)));
+    scene_add_triangle(&t->s, triangle_make(vec3_make(3, 0, -1), vec3_make(3.5f, 0, -1), vec3_make(3, 0.5f, -1), 0));
+    add_big_triangle(&t->s, -7);
+    add_big_triangle(&t->s, -8);
+    add_big_triangle(&t->s, -2);
+    add_big_triangle(&t->s, -3);
+    bvh leaf_b = {.nodes = malloc(sizeof(bvh_node)), .num_nodes = 1, .prim_index = malloc(2 * sizeof(int)), .num_prims = 2};
+    if (!leaf_b.nodes || !leaf_b.prim_index) PL_FAIL("test machinery: out of memory");
+    leaf_b.prim_index[0] = 0, leaf_b.prim_index[1] = 1;  /* prims 3 and 4, numbered after A's */
+    leaf_b.nodes[0] = (bvh_node){aabb_union(scene_prim_bounds(&t->s, 3), scene_prim_bounds(&t->s, 4)), 0, 2};
+    order_tree_finish(t, 3, &leaf_b, false);
+    bvh_free(&leaf_b);
+}
+
+/* Any hit on the stack tree: true when no ray tested a primitive of another leaf after the first
+ * primitive it tested that hits (the rest of that leaf may still be tested); else false, why. */
+static bool stops_at_the_first_hit(any_fn query, char *why, size_t why_len)
+{
+    order_tree t;
+    stack_tree(&t);
+    bool ok = true;
+    for (int k = 0; k < 9 && ok; k++) {
+        ray r = ray_make(vec3_make(-0.3f + 0.3f * (float)(k % 3), -0.3f + 0.3f * (float)(k / 3), 5), vec3_make(0, 0, -1), 0.0f, 20.0f);
+        work_check_begin(&t.check);
+        bool occluded = query(&t.b, &t.s, &r);
+        work_check_end(&t.check);
+        const counters_trace *tr = &t.check.trace;
+        int first = -1, after = 0;
+        for (int i = 0; i < tr->num_prims; i++) {
+            ray probe = r;
+            hit scratch;
+            if (first < 0 && scene_prim_intersect(&t.s, tr->prims[i], &probe, &scratch)) first = i;
+            else if (first >= 0) after += t.check.leaf_of_prim[tr->prims[i]] != t.check.leaf_of_prim[tr->prims[first]];
+        }
+        if (!occluded) snprintf(why, why_len, "ray %d passes through four triangles and bvh_occluded says nothing is hit", k);
+        else if (after > 0)
+            snprintf(why, why_len, "ray %d: bvh_occluded tested primitive %d, which hits, then %d primitives of another leaf: "
+                     "an any-hit query returns at the first hit it finds, it does not look for the nearest (task 2.4)",
+                     k, tr->prims[first], after);
+        ok = occluded && after == 0;
+    }
+    order_tree_free(&t);
+    return ok;
+}
+
+/* The search for the closest hit, answering as an any-hit query: the bug the test is for. */
+static bool any_by_closest(const bvh *b, const scene *s, const ray *r)
+{
+    ray probe = *r;
+    hit scratch;
+    return nearest_first(b, s, &probe, &scratch);
+}
+
+static void test_bvh_occluded__stops_at_the_first_hit(void **state)
+{
+    (void)state;
+    char why[512];
+    if (!stops_at_the_first_hit(dfs_any, why, sizeof why))
+        fail_msg("test machinery: a correct any-hit traversal failed: %s", why);
+    expect_caught(stops_at_the_first_hit(any_by_closest, why, sizeof why), "a closest-hit search", why, "first hit");
+    if (!stops_at_the_first_hit(bvh_occluded, why, sizeof why)) fail_msg("%s", why);
+    assert_implemented();
+}
+
 int complexity_tests(void)
 {
     const struct CMUnitTest tests[] = {
         cmocka_unit_test_setup(test_bvh_intersect__work_grows_like_log_n, test_setup),
         cmocka_unit_test_setup(test_bvh_occluded__counts_its_work_through_the_framework, test_setup),
+        cmocka_unit_test_setup(test_bvh_intersect__nearer_child_first_nothing_behind_the_nearest_hit, test_setup),
+        cmocka_unit_test_setup(test_bvh_occluded__stops_at_the_first_hit, test_setup),
     };
     return cmocka_run_group_tests_name("part2: work grows like log N", tests, NULL, free_trees);
 }
