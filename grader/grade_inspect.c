@@ -64,15 +64,21 @@ static char *defined_symbols(const char *tree, const char *log)
     return command_lines(cmd, log);
 }
 
-/* Every name the shared libraries of the part's test program define (libc, libm, cmocka, ...),
- * found from the program's NEEDED entries through the compiler's own library search path. */
+/* Every name the shared libraries of the part's test program define (libc, libm, cmocka, ...) and
+ * the libraries they load in turn (libxml2's liblzma and libz, libgcc_s), found from the NEEDED
+ * entries, breadth first, through the compiler's own library search path. Transitive ones count:
+ * a part that defines lzma_code would otherwise run its code inside the scene loader, unseen. */
 static char *library_symbols(const char *tree, int part, const char *log)
 {
     char cmd[8192];
     snprintf(cmd, sizeof cmd,
-             "for l in $(readelf -d '%s/bin/test-part%d' | sed -n 's/.*Shared library: \\[\\(.*\\)\\]/\\1/p'); do "
-             "nm -D --defined-only --format=just-symbols --without-symbol-versions \"$(gcc -print-file-name=$l)\"; "
-             "done", tree, part);
+             "needed() { readelf -d \"$1\" 2>/dev/null | sed -n 's/.*Shared library: \\[\\(.*\\)\\]/\\1/p'; }; "
+             "todo=$(needed '%s/bin/test-part%d'); seen=' '; "
+             "while [ -n \"$todo\" ]; do set -- $todo; l=$1; shift; todo=\"$*\"; "
+             "case \"$seen\" in *\" $l \"*) continue;; esac; seen=\"$seen$l \"; "
+             "p=$(gcc -print-file-name=$l); [ -f \"$p\" ] || continue; "
+             "nm -D --defined-only --format=just-symbols --without-symbol-versions \"$p\"; "
+             "todo=\"$todo $(needed \"$p\")\"; done", tree, part);
     return command_lines(cmd, log);
 }
 
