@@ -13,4 +13,11 @@ int scratch_remove(const char *dir);
 /* Writes text to path (created or replaced), failing the test when it cannot. */
 void scratch_write(const char *path, const char *text);
 
+/* A file's scratch folder and its cmocka fixtures: SCRATCH_FOLDER(dir, "output") declares
+ * char dir[64] and dir_setup / dir_teardown, which make and remove it. */
+#define SCRATCH_FOLDER(var, name)                                                               \
+    static char var[64];                                                                        \
+    static int var##_setup(void **state) { (void)state; return scratch_make(var, sizeof var, name); } \
+    static int var##_teardown(void **state) { (void)state; return scratch_remove(var); }
+
 #endif

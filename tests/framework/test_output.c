@@ -22,7 +22,7 @@
 
 #define SCENE "scenes/cornell_spheres.dae"
 
-static char dir[64];
+SCRATCH_FOLDER(dir, "output")
 
 /* file.c's mkstemp resolves to this one (defined in the executable): when a test sets
  * raise_after_mkstemp, SIGTERM arrives right after the temporary exists, before anything else runs. */
@@ -37,17 +37,6 @@ int mkstemp(char *template)
     return fd;
 }
 
-static int make_dir(void **state)
-{
-    (void)state;
-    return scratch_make(dir, sizeof dir, "output");
-}
-
-static int remove_dir(void **state)
-{
-    (void)state;
-    return scratch_remove(dir);
-}
 
 /* Runs bin/pathtracer with args (a format with %s for the scratch folder); returns its exit code. */
 static int render(const char *args_fmt)
@@ -209,26 +198,39 @@ static void test_output__one_failure_writes_none(void **state)
     output_free(&set);
 }
 
-/* SIGTERM while a temporary exists removes it (a forked child plays the killed render). */
-static void test_output__signal_removes_temporaries(void **state)
+/* A forked child plays a render killed by SIGTERM: it runs `child` on <dir>/x.png, which must end
+ * in the signal (an exit is a code saying what went wrong first); then nothing may be left. */
+static void expect_killed_leaving_nothing(void (*child)(const char *path))
 {
-    (void)state;
     pid_t pid = fork();
     assert_true(pid >= 0);
     if (pid == 0) {
         char path[128];
         snprintf(path, sizeof path, "%s/x.png", dir);
-        file_temp t;
-        if (file_temp_create(path, &t, NULL) != PL_OK) _exit(3);
-        fputs("half an image", t.f);
-        fflush(t.f);
-        raise(SIGTERM);
-        _exit(4);  /* not reached */
+        child(path);
+        _exit(4);  /* not reached: SIGTERM first */
     }
     int status;
     assert_int_equal(pid, waitpid(pid, &status, 0));
+    if (WIFEXITED(status)) fail_msg("the child exited %d instead of dying of SIGTERM", WEXITSTATUS(status));
     assert_true(WIFSIGNALED(status) && WTERMSIG(status) == SIGTERM);
     expect_files("");
+}
+
+static void half_written_then_killed(const char *path)
+{
+    file_temp t;
+    if (file_temp_create(path, &t, NULL) != PL_OK) _exit(3);
+    fputs("half an image", t.f);
+    fflush(t.f);
+    raise(SIGTERM);
+}
+
+/* SIGTERM while a temporary exists removes it. */
+static void test_output__signal_removes_temporaries(void **state)
+{
+    (void)state;
+    expect_killed_leaving_nothing(half_written_then_killed);
 }
 
 /* Mounts a 64 KB tmpfs at <dir>/small and fills it to the last byte, so any output fails however
@@ -437,23 +439,29 @@ static void test_output__merge_checks_its_output_first(void **state)
 
 /* A stop signal between creating a temporary and registering it for cleanup must not leave it:
  * mkstemp (above) raises SIGTERM the moment the file exists. */
+static void killed_inside_create(const char *path)
+{
+    raise_after_mkstemp = 1;
+    file_temp t;
+    file_temp_create(path, &t, NULL);  /* SIGTERM, at the latest when the signals are unblocked */
+}
+
 static void test_output__signal_right_after_create_leaves_nothing(void **state)
 {
     (void)state;
-    pid_t pid = fork();
-    assert_true(pid >= 0);
-    if (pid == 0) {
-        char path[128];
-        snprintf(path, sizeof path, "%s/x.png", dir);
-        raise_after_mkstemp = 1;
-        file_temp t;
-        file_temp_create(path, &t, NULL);
-        _exit(4);  /* not reached: SIGTERM, at the latest when the signals are unblocked */
-    }
-    int status;
-    assert_int_equal(pid, waitpid(pid, &status, 0));
-    assert_true(WIFSIGNALED(status) && WTERMSIG(status) == SIGTERM);
-    expect_files("");
+    expect_killed_leaving_nothing(killed_inside_create);
+}
+
+/* Fills the cleanup table, is refused one more (exit 5, or 6 for a message without the name), dies. */
+static void table_full_then_killed(const char *path)
+{
+    file_temp t[FILE_MAX_TEMPS + 1];
+    for (int i = 0; i < FILE_MAX_TEMPS; i++)
+        if (file_temp_create(path, &t[i], NULL) != PL_OK) _exit(3);
+    pl_diag d = pl_diag_default();
+    if (file_temp_create(path, &t[FILE_MAX_TEMPS], &d) == PL_OK) _exit(5);
+    if (!strstr(d.error, "x.png")) _exit(6);
+    raise(SIGTERM);
 }
 
 /* Every temporary is tracked: the table holds every file a render writes, and one more than it
@@ -462,43 +470,25 @@ static void test_output__every_temporary_is_tracked_or_refused(void **state)
 {
     (void)state;
     assert_true(FILE_MAX_TEMPS >= OUTPUT_KINDS);
-    pid_t pid = fork();
-    assert_true(pid >= 0);
-    if (pid == 0) {
-        char path[128];
-        snprintf(path, sizeof path, "%s/x.png", dir);
-        file_temp t[FILE_MAX_TEMPS + 1];
-        for (int i = 0; i < FILE_MAX_TEMPS; i++)
-            if (file_temp_create(path, &t[i], NULL) != PL_OK) _exit(3);
-        pl_diag d = pl_diag_default();
-        if (file_temp_create(path, &t[FILE_MAX_TEMPS], &d) == PL_OK) _exit(5);
-        if (!strstr(d.error, "x.png")) _exit(6);
-        raise(SIGTERM);
-        _exit(4);
-    }
-    int status;
-    assert_int_equal(pid, waitpid(pid, &status, 0));
-    if (WIFEXITED(status)) fail_msg("the child exited %d instead of dying of SIGTERM", WEXITSTATUS(status));
-    assert_true(WIFSIGNALED(status) && WTERMSIG(status) == SIGTERM);
-    expect_files("");
+    expect_killed_leaving_nothing(table_full_then_killed);
 }
 
 int output_tests(void)
 {
     const struct CMUnitTest tests[] = {
-        cmocka_unit_test_setup_teardown(test_output__bad_names_refused_before_loading, make_dir, remove_dir),
-        cmocka_unit_test_setup_teardown(test_output__derived_name_never_overwrites_an_input, make_dir, remove_dir),
-        cmocka_unit_test_setup_teardown(test_output__symlinked_name_is_replaced_not_followed, make_dir, remove_dir),
-        cmocka_unit_test_setup_teardown(test_output__temporaries_are_exclusive_and_hidden, make_dir, remove_dir),
-        cmocka_unit_test_setup_teardown(test_output__one_failure_writes_none, make_dir, remove_dir),
-        cmocka_unit_test_setup_teardown(test_output__signal_removes_temporaries, make_dir, remove_dir),
-        cmocka_unit_test_setup_teardown(test_output__full_disk_leaves_nothing, make_dir, remove_dir),
-        cmocka_unit_test_setup_teardown(test_output__non_utf8_path_gives_valid_json, make_dir, remove_dir),
-        cmocka_unit_test_setup_teardown(test_output__heatmap_commits_with_the_image, make_dir, remove_dir),
-        cmocka_unit_test_setup_teardown(test_output__merge_never_follows_a_planted_temp_name, make_dir, remove_dir),
-        cmocka_unit_test_setup_teardown(test_output__merge_checks_its_output_first, make_dir, remove_dir),
-        cmocka_unit_test_setup_teardown(test_output__signal_right_after_create_leaves_nothing, make_dir, remove_dir),
-        cmocka_unit_test_setup_teardown(test_output__every_temporary_is_tracked_or_refused, make_dir, remove_dir),
+        cmocka_unit_test_setup_teardown(test_output__bad_names_refused_before_loading, dir_setup, dir_teardown),
+        cmocka_unit_test_setup_teardown(test_output__derived_name_never_overwrites_an_input, dir_setup, dir_teardown),
+        cmocka_unit_test_setup_teardown(test_output__symlinked_name_is_replaced_not_followed, dir_setup, dir_teardown),
+        cmocka_unit_test_setup_teardown(test_output__temporaries_are_exclusive_and_hidden, dir_setup, dir_teardown),
+        cmocka_unit_test_setup_teardown(test_output__one_failure_writes_none, dir_setup, dir_teardown),
+        cmocka_unit_test_setup_teardown(test_output__signal_removes_temporaries, dir_setup, dir_teardown),
+        cmocka_unit_test_setup_teardown(test_output__full_disk_leaves_nothing, dir_setup, dir_teardown),
+        cmocka_unit_test_setup_teardown(test_output__non_utf8_path_gives_valid_json, dir_setup, dir_teardown),
+        cmocka_unit_test_setup_teardown(test_output__heatmap_commits_with_the_image, dir_setup, dir_teardown),
+        cmocka_unit_test_setup_teardown(test_output__merge_never_follows_a_planted_temp_name, dir_setup, dir_teardown),
+        cmocka_unit_test_setup_teardown(test_output__merge_checks_its_output_first, dir_setup, dir_teardown),
+        cmocka_unit_test_setup_teardown(test_output__signal_right_after_create_leaves_nothing, dir_setup, dir_teardown),
+        cmocka_unit_test_setup_teardown(test_output__every_temporary_is_tracked_or_refused, dir_setup, dir_teardown),
     };
     return cmocka_run_group_tests_name("outputs", tests, NULL, NULL);
 }

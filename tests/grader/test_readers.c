@@ -19,19 +19,7 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
-static char scratch[64];
-
-static int make_scratch(void **state)
-{
-    (void)state;
-    return scratch_make(scratch, sizeof scratch, "readers-test");
-}
-
-static int remove_scratch(void **state)
-{
-    (void)state;
-    return scratch_remove(scratch);
-}
+SCRATCH_FOLDER(scratch, "readers-test")
 
 static void sh(const char *fmt, const char *a, const char *b)
 {
@@ -164,7 +152,7 @@ static void test_cases__every_member_known_and_typed(void **state)
                            "case bunny_normals: unknown member \"work_per_rays\""));
     assert_non_null(strstr(load_edited("s/\"work_per_ray\": true/\"work_per_ray\": \"yes\"/"),
                            "case bunny_normals: \"work_per_ray\" has the wrong type"));
-    assert_non_null(strstr(load_edited("s/\"unit_tests\": 23/\"unit_tests\": 23, \"unit_test\": 1/"), "unknown member"));
+    assert_non_null(strstr(load_edited("s/\"unit_tests\": \\([0-9]*\\)/\"unit_tests\": \\1, \"unit_test\": 1/"), "unknown member"));
     assert_non_null(strstr(load_edited("0,/\"points\": 4,/s///"), "case spheres_normals: expected \"points\""));
     assert_non_null(strstr(load_edited("0,/160,/s//4096,/; 0,/120$/s//4096/"), "at most 2097152 pixels"));
 }
@@ -362,6 +350,6 @@ int readers_tests(void)
         cmocka_unit_test(test_report__every_entry_present_for_hostile_messages),
         cmocka_unit_test(test_grade__a_run_ends_cleanly_with_leak_detection),
     };
-    return cmocka_run_group_tests_name("grader readers: references, suite results, results.json", tests, make_scratch,
-                                       remove_scratch);
+    return cmocka_run_group_tests_name("grader readers: references, suite results, results.json", tests, scratch_setup,
+                                       scratch_teardown);
 }

@@ -57,6 +57,13 @@ static int run_untrusted(const char *script, const char *log)
     return r.exited ? r.status : -1;
 }
 
+/* A protection the test needs that this machine does not give: say so, and skip the test. */
+static bool skipped_unless(bool available, const char *what, const char *why)
+{
+    if (!available) printf("  (skipped: %s: %s)\n", what, why);
+    return !available;
+}
+
 /* The first line a child printed into its log (the test fails when there is none). */
 static void first_line(const char *log, char *text, int size)
 {
@@ -222,10 +229,7 @@ static void test_run__student_code_is_filtered_from_its_first_instruction(void *
 {
     (void)state;
     grade_sandbox s = grade_sandbox_probe();
-    if (!s.filter) {
-        printf("  (skipped: no filter on this machine: %s)\n", s.filter_why);
-        return;
-    }
+    if (skipped_unless(s.filter, "no filter on this machine", s.filter_why)) return;
     char log[256], tail[4096];
     snprintf(log, sizeof log, "%s/forbidden.log", scratch);
     int status = run_probe("forbidden", log, NULL);
@@ -272,11 +276,8 @@ static int processes_with(const char *marker)
 static void test_run__a_stage_is_a_namespace_of_its_own(void **state)
 {
     (void)state;
-    grade_sandbox s = grade_sandbox_probe();
-    if (!s.isolated) {
-        printf("  (skipped: no PID namespace here: needs root, outside a container that refuses them)\n");
-        return;
-    }
+    if (skipped_unless(grade_sandbox_probe().isolated, "no PID namespace here",
+                       "needs root, outside a container that refuses them")) return;
     char log[256], script[512], text[64] = "";
     snprintf(log, sizeof log, "%s/namespace.log", scratch);
     snprintf(script, sizeof script,
@@ -324,10 +325,7 @@ static void test_guard__nobody_cannot_open_a_reference(void **state)
 {
     (void)state;
     grade_sandbox s = grade_sandbox_probe();
-    if (!s.as_other_user) {
-        printf("  (skipped: needs root, to run a child as nobody)\n");
-        return;
-    }
+    if (skipped_unless(s.as_other_user, "needs root", "to run a child as nobody")) return;
     char path[512], script[2048], log[256];
     static const char *const dirs[] = {"course", "course/reference_images", "course/reference_images/part1",
                                        "course/grading", "course/grading/hidden", "course/scenes", "out",

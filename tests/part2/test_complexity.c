@@ -402,10 +402,14 @@ static void wall_tree(order_tree *t, bool wall_second)
 /* Ray k of 49, straight down -z from z = 5 through the wall, at points off the wall's edges. */
 static ray wall_ray(int k) { return ray_make(vec3_make(-0.87f + 0.29f * (float)(k % 7), -0.87f + 0.29f * (float)(k / 7), 5), vec3_make(0, 0, -1), 0.0f, INFINITY); }
 
+/* A query of either kind, for the order checks below (each reads the one it judges). */
+typedef struct { closest_fn closest; any_fn any; } query_fn;
+
 /* The closest hit on the wall tree, both ways round: true when every ray hit the wall testing no
  * primitive of the mesh behind it; otherwise false with what the query did in why. */
-static bool nothing_behind_the_wall(closest_fn query, char *why, size_t why_len)
+static bool nothing_behind_the_wall(query_fn q, char *why, size_t why_len)
 {
+    closest_fn query = q.closest;
     for (int order = 0; order < 2; order++) {
         order_tree t;
         wall_tree(&t, order == 1);
@@ -458,16 +462,23 @@ static bool nearest_first(const bvh *b, const scene *s, ray *r, hit *h)
     return found;
 }
 
+/* An order check run on the part's query, after the check itself: a correct query passes and a
+ * buggy one is caught with a message holding `expect` (else the check is the test's fault). */
+static void judge_order(bool (*check)(query_fn, char *, size_t), query_fn correct, query_fn bug, const char *bug_name,
+                        const char *expect, query_fn part)
+{
+    char why[512];
+    if (!check(correct, why, sizeof why)) fail_msg("test machinery: a correct traversal failed: %s", why);
+    expect_caught(check(bug, why, sizeof why), bug_name, why, expect);
+    if (!check(part, why, sizeof why)) fail_msg("%s", why);
+    assert_implemented();
+}
+
 static void test_bvh_intersect__nearer_child_first_nothing_behind_the_nearest_hit(void **state)
 {
     (void)state;
-    char why[512];
-    /* The machinery: the handout's traversal passes, a plain left-first one is caught. */
-    if (!nothing_behind_the_wall(nearest_first, why, sizeof why))
-        fail_msg("test machinery: a correct nearest-first traversal failed: %s", why);
-    expect_caught(nothing_behind_the_wall(dfs_closest, why, sizeof why), "a left-first traversal", why, "child 2 of the root");
-    if (!nothing_behind_the_wall(bvh_intersect, why, sizeof why)) fail_msg("%s", why);
-    assert_implemented();
+    judge_order(nothing_behind_the_wall, (query_fn){.closest = nearest_first}, (query_fn){.closest = dfs_closest},
+                "a left-first traversal", "child 2 of the root", (query_fn){.closest = bvh_intersect});
 }
 
 /* Two leaves under the root: A holds a small triangle off to the side (it stretches A's box
@@ -493,8 +504,9 @@ static void stack_tree(order_tree *t)
 
 /* Any hit on the stack tree: true when no ray tested a primitive of another leaf after the first
  * primitive it tested that hits (the rest of that leaf may still be tested); else false, why. */
-static bool stops_at_the_first_hit(any_fn query, char *why, size_t why_len)
+static bool stops_at_the_first_hit(query_fn q, char *why, size_t why_len)
 {
+    any_fn query = q.any;
     order_tree t;
     stack_tree(&t);
     bool ok = true;
@@ -533,12 +545,8 @@ static bool any_by_closest(const bvh *b, const scene *s, const ray *r)
 static void test_bvh_occluded__stops_at_the_first_hit(void **state)
 {
     (void)state;
-    char why[512];
-    if (!stops_at_the_first_hit(dfs_any, why, sizeof why))
-        fail_msg("test machinery: a correct any-hit traversal failed: %s", why);
-    expect_caught(stops_at_the_first_hit(any_by_closest, why, sizeof why), "a closest-hit search", why, "first hit");
-    if (!stops_at_the_first_hit(bvh_occluded, why, sizeof why)) fail_msg("%s", why);
-    assert_implemented();
+    judge_order(stops_at_the_first_hit, (query_fn){.any = dfs_any}, (query_fn){.any = any_by_closest},
+                "a closest-hit search", "first hit", (query_fn){.any = bvh_occluded});
 }
 
 int complexity_tests(void)
