@@ -1,10 +1,18 @@
-/* Grader machinery: not part of any assignment. Reads grading/cases.json (jansson). */
+/* Grader machinery: not part of any assignment. Reads grading/cases.json (jansson).
+ *
+ * The cases file decides every point a student can earn, and instructors edit it by hand, so it is
+ * read strictly: every object's members are checked against a list (a misspelt key is an error,
+ * not a check silently skipped), every value against its type and range, and every message names
+ * the file, the part or the case, and what was expected (grading/README.md is the file's manual).
+ * The hidden cases' file (grading/hidden/cases.json) has the same form and adds its cases to the
+ * public file's parts. */
 #include "grade.h"
 #include "../framework/exr.h"
 #include <jansson.h>
 #include <stdlib.h>
 #include <string.h>
 
+/* A case's "flags" or "reference_flags": an array of at most GRADE_MAX_FLAGS strings, copied. */
 static pl_status read_flags(const char *path, const char *name, json_t *array, char **out, int *count, pl_diag *diag)
 {
     if (!json_is_array(array) || json_array_size(array) > GRADE_MAX_FLAGS)
@@ -31,6 +39,7 @@ static const member case_members[] = {
 static const member part_members[] = {{"part", 'i'}, {"unit_points", 'n'}, {"unit_tests", 'i'}, {"cases", 'a'}, {NULL, 0}};
 static const member root_members[] = {{"about", 's'}, {"family_alpha", 'n'}, {"parts", 'a'}, {NULL, 0}};
 
+/* Whether v is of the member type letter (member above): JSON's integer is also a number. */
 static bool has_type(json_t *v, char type)
 {
     switch (type) {
@@ -86,11 +95,13 @@ static pl_status read_case(const char *path, int part, json_t *j, grade_case *c,
                        "and \"visibility\" public|hidden", path, c->name, GRADE_MAX_FLAGS);
     snprintf(c->scene, sizeof c->scene, "%s", scene);
     c->hidden = !strcmp(vis, "hidden");
+    /* The render: what the candidate renders, and at how many samples the reference was made. */
     c->width = (int)json_integer_value(json_array_get(res, 0));
     c->height = (int)json_integer_value(json_array_get(res, 1));
     c->samples = (int)json_integer_value(json_object_get(j, "samples"));
     c->reference_samples = (int)json_integer_value(json_object_get(j, "reference_samples"));
 
+    /* The verdict: points, block size, the optional checks and the statistic (grading/README.md). */
     c->points = json_number_value(json_object_get(j, "points"));
     c->block_side = (int)json_integer_value(json_object_get(j, "block_side"));
     c->work_per_ray = json_is_true(json_object_get(j, "work_per_ray"));

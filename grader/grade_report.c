@@ -1,5 +1,11 @@
 /* Grader machinery: not part of any assignment. The three outputs of one grading run: a terminal
- * table, results.json in Gradescope's format, and a static HTML report. */
+ * table, results.json in Gradescope's format, and a static HTML report.
+ *
+ * One text per verdict: case_text words a case's verdict once (Markdown), and results.json and the
+ * report both show it, so a student reads the same sentence wherever they look. Every string that
+ * reaches a student goes through report_text (valid UTF-8) and, in the HTML, html_escape: messages
+ * hold whatever bytes a test or a compiler printed, and neither jansson nor a browser may be handed
+ * them raw. */
 #include "grade.h"
 #include "../framework/file.h"
 #include "../framework/utf8.h"
@@ -9,6 +15,7 @@
 #include <stdlib.h>
 #include <string.h>
 
+/* Channels by index, in the verdict's messages. */
 static const char *const channel_names[3] = {"red", "green", "blue"};
 
 /* A deterministic case's verdict: how many pixels are beyond the rounding tolerance, against the
@@ -103,6 +110,9 @@ static void print_trace_pixels(const grade_result *r, FILE *out)
         }
 }
 
+/* ---- the terminal table (make grade) ------------------------------------------------------------- */
+
+/* A line per part (unit tests passed, cases matched, score), the total, and the pixels to trace. */
 void grade_print_table(const grade_result *r, FILE *out)
 {
     double total = 0, max = 0;
@@ -139,6 +149,8 @@ static char *report_text(const char *s)
 
 /* ---- results.json: Gradescope's format ------------------------------------------------------- */
 
+/* One "tests" entry. A hidden case's entry is "after_published": Gradescope shows it to the student
+ * only once the instructor publishes the grades, so hidden cases stay hidden while the work is open. */
 static json_t *test_entry(const char *name, double score, double max, bool passed, const char *output, bool hidden)
 {
     char *n = report_text(name), *o = report_text(output);
@@ -157,6 +169,9 @@ static bool append_entry(json_t *tests, json_t *entry)
     return entry && json_array_append_new(tests, entry) == 0;
 }
 
+/* results.json: every part's unit-test entry and every case's, each always present (an entry that
+ * cannot be made fails the whole file rather than vanishing), written atomically (file.h): a
+ * platform never reads half a file. */
 pl_status grade_write_results_json(const grade_result *r, const char *path, pl_diag *diag)
 {
     json_t *tests = json_array();
@@ -167,6 +182,8 @@ pl_status grade_write_results_json(const grade_result *r, const char *path, pl_d
         char name[128], text[sizeof p->build_output + 1024];
         total += p->score;
         snprintf(name, sizeof name, "Part %d: unit tests", p->part);
+        /* Unit tests: why nothing was earned (with the compiler's last lines, the student's own
+         * files only: grade_diag.c), or how many passed and the failures' messages. */
         if (p->suite_reason[0] && p->build_output[0])
             snprintf(text, sizeof text, "**0 points**: %s. The end of the compiler's output:\n\n```\n%s\n```\n",
                      p->suite_reason, p->build_output);
@@ -186,6 +203,7 @@ pl_status grade_write_results_json(const grade_result *r, const char *path, pl_d
                                                                   c->spec->hidden));
         }
     }
+    /* The run's line: its seed (to grade again the same way) and any protection it lacked. */
     char summary[512];
     snprintf(summary, sizeof summary, "pathlab grader, seed %llu.%s%s", (unsigned long long)r->seed,
              r->unprotected[0] ? " Unavailable protections: " : "", r->unprotected);
