@@ -48,10 +48,15 @@ void accel_free(accel *a)
 
 /* ---- the queries: every ray traced is counted here, once, whichever structure answers -------- */
 
-bool accel_intersect(const accel *a, ray *r, hit *h)
+bool accel_intersect_bare(const accel *a, ray *r, hit *h)
 {
     counters_add_ray();
-    bool found = a->use_bvh ? bvh_intersect(&a->bvh, a->scene, r, h) : linear_intersect(a->scene, r, h);
+    return a->use_bvh ? bvh_intersect(&a->bvh, a->scene, r, h) : linear_intersect(a->scene, r, h);
+}
+
+bool accel_intersect(const accel *a, ray *r, hit *h)
+{
+    bool found = accel_intersect_bare(a, r, h);
     if (found) scene_hit_finish(a->scene, r, h);  /* the point and its error bound, once (spawn.h) */
     return found;
 }

@@ -76,8 +76,11 @@ rgb radiance_estimate(const render_ctx *ctx, ray *r, rng *g)
     /* Zeroed: a hit is filled only on a hit, and with parts 2-4 stubbed link-time optimisation
      * cannot prove the shaders read it only then (it warned "used uninitialized"). */
     hit h = {0};
-    if (!render_intersect(ctx, r, &h)) return rgb_gray(0.0f);
     const options *o = ctx->opts;
+    /* Normal shading reads h->n only and spawns no ray: the hit's refinement is skipped (the trace
+     * keeps its own path, which describes the hit in full). */
+    bool found = o->normals && !pl_trace ? accel_intersect_bare(ctx->accel, r, &h) : render_intersect(ctx, r, &h);
+    if (!found) return rgb_gray(0.0f);
     if (o->normals) return SEAM_RGB(normal_shade, ctx, r, &h, normal_shade(&h));
 
     /* Emission seen directly counts when bounces accumulate, or when it is the only bounce asked for. */
