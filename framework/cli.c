@@ -1,7 +1,7 @@
 /* The command line: CS184's short flags (some take two values) and pathlab's long options.
  * Parsed by hand because getopt cannot take the two-value flags -r W H and -a B T.
  *
- * The order of work: defaults (CS184's, so an instructor's command means what it meant there),
+ * The order of work: defaults (CS184's, so a CS184 command line means what it meant there),
  * then one pass over argv in which every flag's value is checked as it is read (type, range, and
  * a message naming the flag), then the checks that need several flags at once (check_options).
  * Nothing is loaded or opened here: file names are only remembered, and output.c checks them. */

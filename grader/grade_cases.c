@@ -1,6 +1,6 @@
 /* Grader machinery: not part of any assignment. Reads grading/cases.json (jansson).
  *
- * The cases file decides every point a student can earn, and instructors edit it by hand, so it is
+ * The cases file decides every point a student can earn, and it is edited by hand, so it is
  * read strictly: every object's members are checked against a list (a misspelt key is an error,
  * not a check silently skipped), every value against its type and range, and every message names
  * the file, the part or the case, and what was expected (grading/README.md is the file's manual).

@@ -150,7 +150,7 @@ static char *report_text(const char *s)
 /* ---- results.json: Gradescope's format ------------------------------------------------------- */
 
 /* One "tests" entry. A hidden case's entry is "after_published": Gradescope shows it to the student
- * only once the instructor publishes the grades, so hidden cases stay hidden while the work is open. */
+ * only once the grades are published, so hidden cases stay hidden while the work is open. */
 static json_t *test_entry(const char *name, double score, double max, bool passed, const char *output, bool hidden)
 {
     char *n = report_text(name), *o = report_text(output);
