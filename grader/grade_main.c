@@ -84,6 +84,11 @@ static int calibrate(const grade_env *base, const grade_spec *spec, const char *
                     return 1;
                 }
                 failures += !c.pass;
+                /* A failure of the solution is a false failure: its seed makes it again. */
+                if (!c.pass)
+                    fprintf(stderr, "grade: part %d, case %s fails at seed %llu (p = %.3g): bin/grade --parts %d --seed %llu "
+                                    "shows it\n", p->part, c.spec->name, (unsigned long long)env.seed, c.v.p_value, p->part,
+                            (unsigned long long)env.seed);
                 noise_max = c.noise > noise_max ? c.noise : noise_max;
                 noise_min = c.noise < noise_min ? c.noise : noise_min;
                 decile[c.v.p_value >= 1.0 ? 9 : (int)(c.v.p_value * 10)]++;
