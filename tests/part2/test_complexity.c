@@ -344,6 +344,14 @@ static void add_big_triangle(scene *s, float z)
     scene_add_triangle(s, triangle_make(vec3_make(-4, -4, z), vec3_make(4, -4, z), vec3_make(0, 4, z), 0));
 }
 
+/* The hand-built tree must be one the tests of task 2.2 would accept, tight boxes and all. */
+static void order_tree_check(order_tree *t)
+{
+    pl_diag why = pl_diag_default();
+    if (bvh_validate(&t->b, &t->s, 64, true, NULL, &why) != PL_OK) PL_FAIL("test machinery: a bad tree: %s", why.error);
+    work_check_init(&t->check, &t->b, &t->s);
+}
+
 /* The node array's children of the root, nodes[1] and nodes[2], hold a and b's trees; a is a leaf
  * of a_count primitives starting at prim slot 0; b is the tree `sub` (of the primitives after a's),
  * whose nodes follow. wall_second puts a at nodes[2]. */
@@ -370,9 +378,7 @@ static void order_tree_finish(order_tree *t, int a_count, const bvh *sub, bool a
         t->b.nodes[i == 0 ? sub_at : i + 2] = node;
     }
     t->b.nodes[0] = (bvh_node){aabb_union(a_box, sub->nodes[0].box), 1, 0};
-    pl_diag why = pl_diag_default();
-    if (bvh_validate(&t->b, &t->s, 64, true, NULL, &why) != PL_OK) PL_FAIL("test machinery: a bad tree: %s", why.error);
-    work_check_init(&t->check, &t->b, &t->s);
+    order_tree_check(t);
 }
 
 /* A wall (2 triangles at z = 0) in front of a mesh (8 layers of 32 small triangles, z = -1 to
@@ -410,9 +416,11 @@ typedef struct { closest_fn closest; any_fn any; } query_fn;
 static bool nothing_behind_the_wall(query_fn q, char *why, size_t why_len)
 {
     closest_fn query = q.closest;
+    int most = 0, mesh = 0;
     for (int order = 0; order < 2; order++) {
         order_tree t;
         wall_tree(&t, order == 1);
+        mesh = t.s.num_triangles - 2;
         for (int k = 0; k < 49; k++) {
             ray r = wall_ray(k);
             hit h;
@@ -421,6 +429,7 @@ static bool nothing_behind_the_wall(query_fn q, char *why, size_t why_len)
             work_check_end(&t.check);
             int behind = 0;
             for (int i = 0; i < t.check.trace.num_prims; i++) behind += t.check.trace.prims[i] >= 2;
+            most = t.check.trace.num_prims > most ? t.check.trace.num_prims : most;
             if (!found || h.prim > 1)
                 snprintf(why, why_len, "ray %d from (%.2f, %.2f, 5) straight at a wall: %s", k, (double)r.o.x,
                          (double)r.o.y, found ? "it reported a hit behind the wall" : "it reported no hit");
@@ -435,7 +444,102 @@ static bool nothing_behind_the_wall(query_fn q, char *why, size_t why_len)
         }
         order_tree_free(&t);
     }
+    snprintf(why, why_len, "2 x 49 rays at a wall in front of a %d-triangle mesh, the wall either child of the root: at most "
+             "%d primitive tests on one ray, none of the mesh", mesh, most);
     return true;
+}
+
+/* A row of ROW_BOXES boxes along x, each a leaf of 4 triangles: two squares of side 1 facing along
+ * x, at c - 0.25 and c + 0.25 for box c = 0, 1, 2, ... Half a unit of empty space lies between
+ * neighbours, so no two nodes are entered at the same t. Over them a balanced tree whose children
+ * are stored in the row's order at even depths and reversed at odd ones: an order that ignores the
+ * ray goes wrong at some level, from one end of the row or the other. */
+#define ROW_BOXES 16
+#define ROW_RAYS 18
+
+static void add_square_facing_x(scene *s, float x)
+{
+    scene_add_triangle(s, triangle_make(vec3_make(x, -0.5f, -0.5f), vec3_make(x, 0.5f, -0.5f), vec3_make(x, 0.5f, 0.5f), 0));
+    scene_add_triangle(s, triangle_make(vec3_make(x, -0.5f, -0.5f), vec3_make(x, 0.5f, 0.5f), vec3_make(x, -0.5f, 0.5f), 0));
+}
+
+/* Writes the subtree over boxes [lo, hi) at node `at`, its children from node *next on; returns its box. */
+static aabb row_subtree(order_tree *t, int at, int lo, int hi, int depth, int *next)
+{
+    if (hi - lo == 1) {
+        aabb box = aabb_empty();
+        for (int i = 0; i < 4; i++) box = aabb_union(box, scene_prim_bounds(&t->s, 4 * lo + i));
+        t->b.nodes[at] = (bvh_node){box, 4 * lo, 4};
+        return box;
+    }
+    int first = *next, mid = (lo + hi) / 2, reversed = depth % 2;
+    *next += 2;
+    aabb box = aabb_union(row_subtree(t, first + reversed, lo, mid, depth + 1, next),
+                          row_subtree(t, first + 1 - reversed, mid, hi, depth + 1, next));
+    t->b.nodes[at] = (bvh_node){box, first, 0};
+    return box;
+}
+
+static void row_tree(order_tree *t)
+{
+    memset(t, 0, sizeof *t);
+    scene_add_material(&t->s, material_make(rgb_gray(0.5f), rgb_gray(0)));
+    for (int c = 0; c < ROW_BOXES; c++) add_square_facing_x(&t->s, (float)c - 0.25f), add_square_facing_x(&t->s, (float)c + 0.25f);
+    t->b.num_nodes = 2 * ROW_BOXES - 1;
+    t->b.num_prims = 4 * ROW_BOXES;
+    t->b.nodes = malloc((size_t)t->b.num_nodes * sizeof *t->b.nodes);
+    t->b.prim_index = malloc((size_t)t->b.num_prims * sizeof *t->b.prim_index);
+    if (!t->b.nodes || !t->b.prim_index) PL_FAIL("test machinery: out of memory");
+    for (int i = 0; i < t->b.num_prims; i++) t->b.prim_index[i] = i;  /* box c's leaf holds 4c .. 4c + 3 */
+    int next = 1;
+    (void)row_subtree(t, 0, 0, ROW_BOXES, 0, &next);
+    order_tree_check(t);
+}
+
+/* Ray k of ROW_RAYS: the first half from x = -5 along +x, the rest from the other end along -x,
+ * through the squares away from their edges, tilted a little so that no slab sees a zero
+ * direction component (the order is judged here, not the slab test's infinities). */
+static ray row_ray(int k)
+{
+    int i = k % (ROW_RAYS / 2);
+    bool from_left = k < ROW_RAYS / 2;
+    vec3 o = vec3_make(from_left ? -5.0f : (float)ROW_BOXES + 4.0f, -0.3f + 0.27f * (float)(i % 3), -0.25f + 0.26f * (float)(i / 3));
+    return ray_make(o, vec3_normalize(vec3_make(from_left ? 1.0f : -1.0f, 0.01f, -0.007f)), 0.0f, INFINITY);
+}
+
+/* The closest hit along the row, from both ends: true when every ray hit the first box on its way
+ * testing no primitive of another box; otherwise false with what the query did in why. */
+static bool nothing_behind_the_first_box(query_fn q, char *why, size_t why_len)
+{
+    order_tree t;
+    row_tree(&t);
+    bool ok = true;
+    int most = 0;
+    for (int k = 0; k < ROW_RAYS && ok; k++) {
+        ray r = row_ray(k);
+        int first_box = k < ROW_RAYS / 2 ? 0 : ROW_BOXES - 1;
+        hit h;
+        work_check_begin(&t.check);
+        bool found = q.closest(&t.b, &t.s, &r, &h);
+        work_check_end(&t.check);
+        int behind = 0, first_leaf = t.check.leaf_of_prim[4 * first_box];
+        for (int i = 0; i < t.check.trace.num_prims; i++) behind += t.check.leaf_of_prim[t.check.trace.prims[i]] != first_leaf;
+        most = t.check.trace.num_prims > most ? t.check.trace.num_prims : most;
+        const char *end = k < ROW_RAYS / 2 ? "left" : "right";
+        if (!found || h.prim / 4 != first_box)
+            snprintf(why, why_len, "ray %d from the %s end of a row of %d boxes: %s", k, end, ROW_BOXES,
+                     found ? "it reported a hit behind the first box" : "it reported no hit");
+        else if (behind > 0)
+            snprintf(why, why_len, "ray %d from the %s end of a row of %d boxes hit the first box at t = %.3g, then "
+                     "tested %d triangles of the boxes behind it: visit the nearer child first at every level, and "
+                     "skip a popped node whose t_enter > r->max_t (task 2.3)", k, end, ROW_BOXES, (double)h.t, behind);
+        ok = found && h.prim / 4 == first_box && behind == 0;
+    }
+    order_tree_free(&t);
+    if (ok)
+        snprintf(why, why_len, "%d rays along a row of %d boxes of 4 triangles, from both ends: at most %d primitive "
+                 "tests on one ray, none of another box", ROW_RAYS, ROW_BOXES, most);
+    return ok;
 }
 
 /* The test's own nearest-first traversal with the early exit, as the handout describes it. */
@@ -477,6 +581,7 @@ static void judge_order(bool (*check)(query_fn, char *, size_t), query_fn correc
     bool part_passed = check(part, why, sizeof why);
     assert_implemented();
     if (!part_passed) fail_msg("%s", why);
+    print_message("      %s\n", why);  /* what the part did, as the log test prints its work */
 }
 
 static void test_bvh_intersect__nearer_child_first_nothing_behind_the_nearest_hit(void **state)
@@ -484,6 +589,8 @@ static void test_bvh_intersect__nearer_child_first_nothing_behind_the_nearest_hi
     (void)state;
     judge_order(nothing_behind_the_wall, (query_fn){.closest = nearest_first}, (query_fn){.closest = dfs_closest},
                 "a left-first traversal", "child 2 of the root", (query_fn){.closest = bvh_intersect});
+    judge_order(nothing_behind_the_first_box, (query_fn){.closest = nearest_first}, (query_fn){.closest = dfs_closest},
+                "a left-first traversal", "boxes behind it", (query_fn){.closest = bvh_intersect});
 }
 
 /* Two leaves under the root: A holds a small triangle off to the side (it stretches A's box
@@ -515,6 +622,7 @@ static bool stops_at_the_first_hit(query_fn q, char *why, size_t why_len)
     order_tree t;
     stack_tree(&t);
     bool ok = true;
+    int most = 0;
     for (int k = 0; k < 9 && ok; k++) {
         ray r = ray_make(vec3_make(-0.3f + 0.3f * (float)(k % 3), -0.3f + 0.3f * (float)(k / 3), 5), vec3_make(0, 0, -1), 0.0f, 20.0f);
         work_check_begin(&t.check);
@@ -522,6 +630,7 @@ static bool stops_at_the_first_hit(query_fn q, char *why, size_t why_len)
         work_check_end(&t.check);
         const counters_trace *tr = &t.check.trace;
         int first = -1, after = 0;
+        most = tr->num_prims > most ? tr->num_prims : most;
         for (int i = 0; i < tr->num_prims; i++) {
             ray probe = r;
             hit scratch;
@@ -536,6 +645,9 @@ static bool stops_at_the_first_hit(query_fn q, char *why, size_t why_len)
         ok = occluded && after == 0;
     }
     order_tree_free(&t);
+    if (ok)
+        snprintf(why, why_len, "9 shadow rays through 4 triangles in two leaves: at most %d primitive tests on one ray, "
+                 "none of another leaf after the first hit", most);
     return ok;
 }
 
