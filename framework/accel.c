@@ -3,15 +3,26 @@
 #include "../parts/part2_bvh/part2.h"  /* a call site of the parts (framework/README.md) */
 #include "clock.h"
 #include "counters.h"
+#include "spawn.h"
 #include "todo.h"
 #include <stdlib.h>
 #include <string.h>
 
-pl_status accel_build(accel *out, const scene *s, bool want_bvh, int max_leaf_size, pl_diag *diag)
+/* Each triangle's normal and test error, once: hits then cost a blend, not a cross product, a
+ * division and two square roots each (spawn.h). */
+static pl_status make_frames(accel *a, const scene *s, pl_diag *diag)
 {
-    memset(out, 0, sizeof *out);
-    out->scene = s;
-    if (!want_bvh || scene_prim_count(s) == 0) return PL_OK;
+    if (s->num_triangles == 0) return PL_OK;
+    a->frames = malloc((size_t)s->num_triangles * sizeof *a->frames);
+    if (!a->frames)
+        return pl_fail(diag, PL_ERR_NOMEM, "out of memory for the frames of %d triangles", s->num_triangles);
+    for (int i = 0; i < s->num_triangles; i++) a->frames[i] = tri_frame_make(&s->triangles[i]);
+    return PL_OK;
+}
+
+/* Part 2's tree, checked, or the linear scan when part 2 is still a stub. */
+static pl_status build_bvh(accel *out, const scene *s, int max_leaf_size, pl_diag *diag)
+{
     double t0 = clock_seconds();
     pl_status st = bvh_build(&out->bvh, s, max_leaf_size);
     out->build_seconds = clock_seconds() - t0;
@@ -38,9 +49,21 @@ pl_status accel_build(accel *out, const scene *s, bool want_bvh, int max_leaf_si
     return pl_fail(diag, st, "bvh_build failed: %s", pl_status_name(st));
 }
 
+pl_status accel_build(accel *out, const scene *s, bool want_bvh, int max_leaf_size, pl_diag *diag)
+{
+    memset(out, 0, sizeof *out);
+    out->scene = s;
+    pl_status st = make_frames(out, s, diag);
+    if (st == PL_OK && want_bvh && scene_prim_count(s) > 0) st = build_bvh(out, s, max_leaf_size, diag);
+    if (st != PL_OK) accel_free(out);  /* nothing half-built is left for the caller to free */
+    return st;
+}
+
 void accel_free(accel *a)
 {
     if (!a) return;
+    free(a->frames);
+    a->frames = NULL;
     bvh_free(&a->bvh);
     a->use_bvh = false;
     a->shape = (bvh_shape){0, 0, 0};
@@ -57,7 +80,7 @@ bool accel_intersect_bare(const accel *a, ray *r, hit *h)
 bool accel_intersect(const accel *a, ray *r, hit *h)
 {
     bool found = accel_intersect_bare(a, r, h);
-    if (found) scene_hit_finish(a->scene, r, h);  /* the point and its error bound, once (spawn.h) */
+    if (found) scene_hit_finish(a->scene, a->frames, r, h);  /* the point and its error bound, once (spawn.h) */
     return found;
 }
 

@@ -16,9 +16,11 @@ typedef struct {
     bool use_bvh;         /* false: linear scan (part 2 not implemented, or --no-bvh) */
     bvh_shape shape;      /* from bvh_validate; zeros for the linear scan */
     double build_seconds; /* time bvh_build took */
+    struct tri_frame *frames; /* one per triangle, owned: what each hit's refinement needs (spawn.h) */
 } accel;
 
-/* Builds the BVH with part 2's bvh_build and checks it with bvh_validate before anything walks it;
+/* Computes every triangle's tri_frame (spawn.h; PL_ERR_NOMEM without memory), then builds the BVH
+ * with part 2's bvh_build and checks it with bvh_validate before anything walks it;
  * a stub (PL_ERR_TODO) or want_bvh = false falls back to the linear scan and still returns PL_OK.
  * Other failures, and a malformed tree (PL_ERR_INVALID, "bvh_build made a malformed tree: node 12:
  * child 9000 >= num_nodes 4001"), are returned. */

@@ -1,6 +1,7 @@
 /* COLLADA loader: lights and the camera, placed by their node's transform. A CGL technique in a
  * <light> wins over technique_common, as in CS184. */
 #include "dae_internal.h"
+#include "light.h"
 
 #include <string.h>
 
@@ -43,11 +44,8 @@ static pl_status read_light(dae_ctx *c, const xmlNode *shape, mat4 m, light *l)
         l->kind = LIGHT_AMBIENT;
         l->direction = vec3_make(0, 1, 0);
     } else {  /* area: the node's unit square [-1/2, 1/2]^2 at z = 0, emitting towards its -Z */
-        l->kind = LIGHT_AREA;
-        l->edge_u = mat4_dir(m, vec3_make(1, 0, 0));
-        l->edge_v = mat4_dir(m, vec3_make(0, 1, 0));
-        l->direction = mat4_normal(m, vec3_make(0, 0, -1));
-        l->area = vec3_length(vec3_cross(l->edge_u, l->edge_v));
+        *l = light_make_area(l->position, mat4_dir(m, vec3_make(1, 0, 0)), mat4_dir(m, vec3_make(0, 1, 0)),
+                             mat4_normal(m, vec3_make(0, 0, -1)), l->radiance);
         if (!(l->area > 0))
             st = dae_error(c, shape, PL_ERR_INVALID, "the node's transform gives the area light no area");
     }

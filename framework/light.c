@@ -4,7 +4,9 @@
 #include "light.h"
 #include "frame.h"
 #include "sampler.h"
+#include "spawn.h"
 #include "trace.h"
+#include <string.h>
 
 bool light_is_delta(const light *l)
 {
@@ -32,6 +34,7 @@ static bool sample_point(const light *l, vec3 p, light_sample *out)
     float dist = sqrtf(dist2);
     out->wi = vec3_scale(d, 1.0f / dist);
     out->dist = dist;
+    out->point = l->position;
     out->pdf = 1.0f;
     out->is_delta = true;
     out->L = rgb_scale(l->radiance, attenuation(l, dist) / dist2);
@@ -57,6 +60,7 @@ static bool sample_directional(const light *l, light_sample *out)
 {
     out->wi = vec3_neg(vec3_normalize(l->direction));
     out->dist = INFINITY;
+    out->point = vec3_make(0.0f, 0.0f, 0.0f);  /* at infinity: unused */
     out->pdf = 1.0f;
     out->is_delta = true;
     out->L = l->radiance;
@@ -84,6 +88,7 @@ static bool sample_area(const light *l, vec3 p, vec2 u, light_sample *out)
         return false;
     out->wi = wi;
     out->dist = dist;
+    out->point = q;
     out->pdf = pdf;
     out->is_delta = false;
     out->L = l->radiance;
@@ -98,6 +103,7 @@ static bool sample_ambient(const light *l, vec2 u, light_sample *out)
     vec3 w = sample_uniform_hemisphere(u);
     out->wi = frame_to_world(&up, w);
     out->dist = INFINITY;
+    out->point = vec3_make(0.0f, 0.0f, 0.0f);  /* at infinity: unused */
     out->pdf = sample_uniform_hemisphere_pdf(w);
     out->is_delta = false;
     out->L = l->radiance;
@@ -114,6 +120,22 @@ static bool sample_light(const light *l, vec3 p, vec2 u, light_sample *out)
     case LIGHT_AMBIENT:     return sample_ambient(l, u, out);
     }
     return false;
+}
+
+light light_make_area(vec3 position, vec3 edge_u, vec3 edge_v, vec3 direction, rgb radiance)
+{
+    light l;
+    memset(&l, 0, sizeof l);
+    l.kind = LIGHT_AREA;
+    l.radiance = radiance;
+    l.position = position;
+    l.edge_u = edge_u;
+    l.edge_v = edge_v;
+    l.direction = direction;
+    l.area = vec3_length(vec3_cross(edge_u, edge_v));
+    l.attenuation[0] = 1.0f;
+    spawn_light_leave(&l);
+    return l;
 }
 
 /* A seam function (framework/seam.h): a trace of this thread sees every light sample. */

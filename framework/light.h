@@ -12,6 +12,9 @@ typedef struct {
     rgb L;        /* incident radiance arriving at p along -wi (already attenuated for point/spot) */
     vec3 wi;      /* unit direction from p towards the light, world space */
     float dist;   /* distance from p to the sampled point (INFINITY for directional/ambient) */
+    vec3 point;   /* the sampled point: on an area light, a point light's position; unused (zero)
+                     at infinity. spawn_ray_to_light ends shadow rays there, not at p + wi dist,
+                     whose reconstruction would add its own rounding */
     float pdf;    /* solid-angle density of wi; for delta lights 1 (and is_delta true) */
     bool is_delta;/* point, spot, directional: a single direction, sample once */
 } light_sample;
@@ -19,6 +22,11 @@ typedef struct {
 /* Samples light l as seen from point p with uniform numbers u in [0,1)^2. Returns false when the
  * light contributes nothing at p (behind a one-sided area light, outside a spot cone, pdf 0). */
 PL_PART_API bool light_sample_L(const light *l, vec3 p, vec2 u, light_sample *out);
+/* An area light: the parallelogram position +- edge_u / 2 +- edge_v / 2, emitting radiance towards
+ * direction (its unit normal on that side), with no attenuation. Every area light is made here, so
+ * that its area and spawn_ray_to_light's offset terms are never left for its maker to fill. */
+light light_make_area(vec3 position, vec3 edge_u, vec3 edge_v, vec3 direction, rgb radiance);
+
 /* True for lights with a single direction (one sample per shading point suffices). */
 PL_PART_API bool light_is_delta(const light *l);
 

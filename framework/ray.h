@@ -40,6 +40,8 @@ typedef struct {
     vec3 p_err;    /* per-axis bound on |p - the exact surface point|, world units, widened by the
                       intersection test's own rounding (spawn.h) */
     vec3 ng;       /* unit geometric normal: the face normal (p1 - p0) x (p2 - p0), or outward */
+    float leave;   /* how far from p, along ng, a ray leaving the surface starts: p_err across the
+                      surface, times a safety factor (spawn.h); once per hit, not per ray */
 } hit;
 
 #endif

@@ -108,12 +108,15 @@ bool scene_prim_intersect(const scene *s, int prim, ray *r, hit *h)
     return found;
 }
 
-void scene_hit_finish(const scene *s, const ray *r, hit *h)
+void scene_hit_finish(const scene *s, const tri_frame *frames, const ray *r, hit *h)
 {
     /* The point and its error bound from part 1's t or barycentrics, so that rays leave every
      * surface the same way whatever part 1 computed (spawn.h). */
-    if (h->prim < s->num_triangles)
-        hit_refine_triangle(&s->triangles[h->prim], h);
-    else
+    if (h->prim < s->num_triangles) {
+        const triangle *t = &s->triangles[h->prim];
+        tri_frame f = frames ? frames[h->prim] : tri_frame_make(t);
+        hit_refine_triangle(t, &f, h);
+    } else {
         hit_refine_sphere(&s->spheres[h->prim - s->num_triangles], r, h);
+    }
 }

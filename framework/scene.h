@@ -64,6 +64,8 @@ typedef struct {
     float attenuation[3];  /* point, spot: constant, linear, quadratic (COLLADA); 1,0,0 = none */
     float falloff_deg;     /* spot: half-angle of the cone in degrees */
     float falloff_exp;     /* spot: exponent of the cos falloff inside the cone */
+    float leave_base;      /* area: how far short of it a shadow ray ends, along direction:   */
+    float leave_per_m;     /*   leave_base + leave_per_m * distance (light_make_area, spawn.h) */
 } light;
 
 typedef struct scene {
@@ -94,8 +96,10 @@ PL_PART_API bool scene_prim_intersect(const scene *s, int prim, ray *r, hit *h);
 /* Fills the framework's part of a hit r made on h->prim: the point and its error bound (h->p,
  * h->p_err, h->ng: spawn.h), from part 1's t or barycentrics. accel_intersect calls it once for
  * the closest hit of every query (not for each candidate a traversal passes), so every hit a
- * part gets from render_intersect has them. */
-void scene_hit_finish(const scene *s, const ray *r, hit *h);
+ * part gets from render_intersect has them. frames: one tri_frame per triangle (accel_build
+ * makes them), or NULL to compute the hit triangle's on the spot. */
+struct tri_frame;
+void scene_hit_finish(const scene *s, const struct tri_frame *frames, const ray *r, hit *h);
 
 /* Appending, for loaders and tests. Each returns the new element's index, or -1 without memory. */
 int scene_add_material(scene *s, material m);

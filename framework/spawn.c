@@ -13,9 +13,33 @@ static inline float gamma_n(int n)
 
 static inline vec3 vec3_abs(vec3 a) { return vec3_make(fabsf(a.x), fabsf(a.y), fabsf(a.z)); }
 
+/* The error bound across the surface, with the safety factor: the origin offset of every ray that
+ * leaves this hit (a light sample's four shadow rays share it). */
+static inline void set_leave(hit *h) { h->leave = SPAWN_SAFETY * vec3_dot(vec3_abs(h->ng), h->p_err); }
+
 /* ---- the hit's point and its error bound (called by scene_prim_intersect) ------------------- */
 
-void hit_refine_triangle(const triangle *t, hit *h)
+tri_frame tri_frame_make(const triangle *t)
+{
+    /* Moller-Trumbore decides the side of the plane by the triple product (o - p0).(e1 x e2),
+     * computed with an error up to a few u |o - p0| |e1| |e2|: across the plane that is
+     * u L |e1| |e2| / |e1 x e2|, L the longer edge at p0, which grows as the triangle thins. */
+    vec3 e1 = vec3_sub(t->p1, t->p0), e2 = vec3_sub(t->p2, t->p0), cross = vec3_cross(e1, e2);
+    float d1 = vec3_dot(e1, e1), d2 = vec3_dot(e2, e2), cc = vec3_dot(cross, cross);
+    float edges2 = (d1 > d2 ? d1 : d2) * d1 * d2;  /* (L |e1| |e2|)^2 */
+    tri_frame f;
+    if (!(cc > 0.0f)) {  /* degenerate: part 1 should have missed; leave by the triangle's size */
+        f.ng = vec3_make(0.0f, 0.0f, 0.0f);
+        f.test_err = sqrtf(d1 + d2);
+        return f;
+    }
+    float inv_cc = 1.0f / cc;
+    f.test_err = gamma_n(8) * sqrtf(edges2 * inv_cc);
+    f.ng = vec3_scale(cross, sqrtf(inv_cc));
+    return f;
+}
+
+void hit_refine_triangle(const triangle *t, const tri_frame *f, hit *h)
 {
     /* The barycentric blend lies on the triangle's plane for any b1, b2: its only error is
      * the rounding of the blend itself. */
@@ -23,22 +47,11 @@ void hit_refine_triangle(const triangle *t, hit *h)
     vec3 a = vec3_scale(t->p0, b0), b = vec3_scale(t->p1, h->b1), c = vec3_scale(t->p2, h->b2);
     h->p = vec3_add(vec3_add(a, b), c);
     h->p_err = vec3_scale(vec3_add(vec3_add(vec3_abs(a), vec3_abs(b)), vec3_abs(c)), gamma_n(7));
-
-    /* Moller-Trumbore decides the side of the plane by the triple product (o - p0).(e1 x e2),
-     * computed with an error up to a few u |o - p0| |e1| |e2|: across the plane that is
-     * u L |e1| |e2| / |e1 x e2|, L the longer edge at p0, which grows as the triangle thins. */
-    vec3 e1 = vec3_sub(t->p1, t->p0), e2 = vec3_sub(t->p2, t->p0), cross = vec3_cross(e1, e2);
-    float d1 = vec3_dot(e1, e1), d2 = vec3_dot(e2, e2), cc = vec3_dot(cross, cross);
-    float edges2 = (d1 > d2 ? d1 : d2) * d1 * d2;  /* (L |e1| |e2|)^2 */
-    if (!(cc > 0.0f)) {  /* degenerate: part 1 should have missed; leave by the triangle's size */
-        float e = sqrtf(d1 + d2);
-        h->p_err = vec3_add(h->p_err, vec3_make(e, e, e));
-        h->ng = h->n;
-        return;
-    }
-    float inv_cc = 1.0f / cc, test_err = gamma_n(8) * sqrtf(edges2 * inv_cc);
-    h->p_err = vec3_add(h->p_err, vec3_make(test_err, test_err, test_err));
-    h->ng = vec3_scale(cross, sqrtf(inv_cc));
+    h->p_err = vec3_add(h->p_err, vec3_make(f->test_err, f->test_err, f->test_err));
+    /* A degenerate triangle has no plane: the shading normal part 1 gave stands in. */
+    bool flat = f->ng.x == 0.0f && f->ng.y == 0.0f && f->ng.z == 0.0f;
+    h->ng = flat ? h->n : f->ng;
+    set_leave(h);
 }
 
 void hit_refine_sphere(const sphere *s, const ray *r, hit *h)
@@ -55,6 +68,7 @@ void hit_refine_sphere(const sphere *s, const ray *r, hit *h)
         h->ng = h->n;
         float e = s->radius + fabsf(q.x) + fabsf(q.y) + fabsf(q.z);
         h->p_err = vec3_make(e, e, e);
+        set_leave(h);
         return;
     }
     float inv_len = 1.0f / len;
@@ -62,56 +76,58 @@ void hit_refine_sphere(const sphere *s, const ray *r, hit *h)
     local = vec3_scale(h->ng, s->radius);
     h->p = vec3_add(s->center, local);
     h->p_err = vec3_add(vec3_scale(vec3_abs(local), gamma_n(5)), vec3_scale(vec3_abs(h->p), gamma_n(2)));
+    set_leave(h);
 }
 
 /* ---- offset origins ------------------------------------------------------------------------ */
 
-/* p moved along unit n by its error bound err projected on n, on the side of w. */
-static inline vec3 offset_point(vec3 p, vec3 err, vec3 n, vec3 w)
+/* h's point moved off its surface by h->leave along ng, on the side of w. */
+static inline vec3 offset_point(const hit *h, vec3 w)
 {
-    float d = SPAWN_SAFETY * vec3_dot(vec3_abs(n), err);
     /* pbrt then rounds each coordinate one float away from p. Here the safety factor covers that
      * rounding instead (at most u |o_i| per axis: a fourteenth of d across the surface), and
      * saves six calls to nextafterf per shadow ray. */
-    return vec3_add(p, vec3_scale(n, vec3_dot(w, n) < 0.0f ? -d : d));
+    return vec3_add(h->p, vec3_scale(h->ng, vec3_dot(w, h->ng) < 0.0f ? -h->leave : h->leave));
 }
 
 ray spawn_ray(const ray *from, const hit *h, vec3 w)
 {
-    ray r = ray_make(offset_point(h->p, h->p_err, h->ng, w), w, FLT_MIN, INFINITY);
+    ray r = ray_make(offset_point(h, w), w, FLT_MIN, INFINITY);
     r.depth = from->depth + 1;
     return r;
 }
 
 /* ---- towards a light sample -------------------------------------------------------------- */
 
-/* A bound, per axis, on the error of y = p + wi dist as the point light_sample_L sampled: the
- * reconstruction's rounding (wi and dist carry a few ulps each) plus the light's own
- * position + u edge_u + v edge_v. */
-static vec3 light_point_error(vec3 p, vec3 y, float dist, const light *l)
+/* How far the far end moves off an area light, along its normal: a bound on what can put the
+ * sampled point y (ls->point) on the wrong side of the emissive quad that sits where the light is.
+ * Across the light's plane, per axis: the rounding of y = position + u edge_u + v edge_v and of the
+ * quad's own corners (a few u of |position| + |edge_u| + |edge_v|), and the rounding of the segment
+ * as part 1 intersects it near its end (its direction y - o and the test's differences from the
+ * quad's corners: a few u of its length, dist). Nothing here depends on where p is: every rounding
+ * that involves p is of a difference, y - o or o - corner, whose size is the segment's. Both terms
+ * depend on the light alone, so light_make_area computes them once. */
+void spawn_light_leave(light *l)
 {
-    vec3 size = vec3_add(vec3_abs(p), vec3_abs(y));
-    size = vec3_add(size, vec3_make(dist, dist, dist));
+    vec3 n = vec3_abs(l->direction);
     vec3 own = vec3_add(vec3_abs(l->position), vec3_add(vec3_abs(l->edge_u), vec3_abs(l->edge_v)));
-    return vec3_scale(vec3_add(size, own), gamma_n(8));
+    l->leave_base = SPAWN_SAFETY * gamma_n(8) * vec3_dot(n, own);
+    l->leave_per_m = SPAWN_SAFETY * gamma_n(8) * (n.x + n.y + n.z);
 }
 
 ray spawn_ray_to_light(const ray *from, const hit *h, const light *l, const light_sample *ls)
 {
     if (!isfinite(ls->dist)) return spawn_ray(from, h, ls->wi);  /* directional, ambient */
 
-    /* The far end: an area light's point moved off its surface towards p (the side it emits to,
-     * since light_sample_L samples only lights p sees the front of); a point or spot light has no
-     * surface to leave. */
-    vec3 y = vec3_add(h->p, vec3_scale(ls->wi, ls->dist));
-    if (l->kind == LIGHT_AREA) {
-        vec3 err = light_point_error(h->p, y, ls->dist, l);
-        y = offset_point(y, err, l->direction, vec3_neg(ls->wi));
-    }
+    /* The far end: the sampled point itself, moved off an area light's surface towards p (the
+     * side it emits to: light_sample_L samples only lights p sees the front of); a point or spot
+     * light has no surface to leave. */
+    vec3 y = ls->point;
+    if (l->kind == LIGHT_AREA) y = vec3_add(y, vec3_scale(l->direction, l->leave_base + ls->dist * l->leave_per_m));
 
-    /* The near end as for any ray leaving the surface; the segment runs from one to the other. */
-    /* Unnormalised: t = 1 is the far end, and no square root or division is spent on it. */
-    vec3 o = offset_point(h->p, h->p_err, h->ng, ls->wi);
+    /* The near end as for any ray leaving the surface; the segment runs from one to the other.
+     * Unnormalised: t = 1 is the far end, and no square root or division is spent on it. */
+    vec3 o = offset_point(h, ls->wi);
     ray r = ray_make(o, vec3_sub(y, o), FLT_MIN, 1.0f);
     r.depth = from->depth + 1;
     return r;

@@ -17,7 +17,7 @@
  *   sphere:   the ray's point q reprojected onto the sphere, p = c + R (q - c) / |q - c|;
  *             per axis |p - exact| <= gamma(5) |p - c| + gamma(2) |p|.
  * (gamma(n) = n u / (1 - n u), u = 2^-24 the unit roundoff.) A ray leaving along w starts at
- *   o = p + d ng,  d = SPAWN_SAFETY * (|ng.x| err.x + |ng.y| err.y + |ng.z| err.z),
+ *   o = p + d ng,  d = SPAWN_SAFETY * (|ng.x| err.x + |ng.y| err.y + |ng.z| err.z) = h->leave,
  * with ng the unit geometric normal turned to w's side (pbrt then rounds each coordinate one
  * float away from p; the safety factor covers that rounding here), and min_t = FLT_MIN, so
  * t > 0: a root at exactly 0 (the quadratic rounding the origin onto the sphere) is no hit. The
@@ -28,9 +28,14 @@
  * tests/framework/test_spawn.c checks it on a million random hits from 1e-3 to 1e3 in size,
  * up to 1e4 from the origin, leaving down to 89.9 degrees from the normal.
  *
- * A ray towards a light sample ends short of the light the same way: the far point is offset
- * along the light's normal by a bound on its own error, so the shadow ray never reaches the
- * emissive quad that sits where the light is. */
+ * A ray towards a light sample ends short of the light the same way: the far point is the point
+ * the light sampled (light_sample.point), offset along an area light's normal by a bound on its
+ * error and on the segment's, so the shadow ray never reaches the emissive quad that sits where
+ * the light is.
+ *
+ * Cost. A triangle's normal and test error depend on the triangle alone: accel_build computes them
+ * once (tri_frame), so a hit costs a blend and a few absolute values more than part 1's t. A shadow
+ * ray costs two offsets. `make bench` measures what it all adds to a render (bench/RESULTS.md). */
 #ifndef PL_SPAWN_H
 #define PL_SPAWN_H
 
@@ -57,9 +62,22 @@ PL_PART_API ray spawn_ray(const ray *from, const hit *h, vec3 w);
  * ends is a hit. */
 PL_PART_API ray spawn_ray_to_light(const ray *from, const hit *h, const light *l, const light_sample *ls);
 
+/* What a hit's refinement needs of its triangle and nothing else: the unit geometric normal, and
+ * the bound across the plane on part 1's side-of-plane test (gamma(8) L |e1| |e2| / |e1 x e2|). A
+ * degenerate triangle (no area) gets ng = 0 and its size as the bound. */
+typedef struct tri_frame {
+    vec3 ng;
+    float test_err;
+} tri_frame;
+tri_frame tri_frame_make(const triangle *t);
+
+/* Framework-internal: an area light's far-end offset terms, leave_base and leave_per_m (light.h's
+ * light_make_area calls it). */
+void spawn_light_leave(light *l);
+
 /* Framework-internal: called by scene_hit_finish for the closest hit of a query, so that h->p,
  * h->p_err and h->ng hold whatever part 1 computed. Parts never call them. */
-void hit_refine_triangle(const triangle *t, hit *h);
+void hit_refine_triangle(const triangle *t, const tri_frame *f, hit *h);
 void hit_refine_sphere(const sphere *s, const ray *r, hit *h);
 
 #endif

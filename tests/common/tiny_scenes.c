@@ -3,6 +3,7 @@
 #include <stdlib.h>
 #include <string.h>
 #include "../../framework/cli.h"
+#include "../../framework/light.h"
 
 void tiny_world_begin(tiny_world *w)
 {
@@ -71,17 +72,8 @@ bool tiny_add_quad(scene *s, vec3 c, vec3 ea, vec3 eb, vec3 facing, int mat)
 bool tiny_add_emitter(scene *s, vec3 c, vec3 ea, vec3 eb, vec3 facing, rgb Le)
 {
     int mat = scene_add_material(s, material_make(rgb_gray(0.0f), Le));
-    light l;
-    memset(&l, 0, sizeof l);
-    l.kind = LIGHT_AREA;
-    l.radiance = Le;
-    l.position = c;
-    l.edge_u = ea;
-    l.edge_v = eb;
     vec3 n = vec3_normalize(vec3_cross(ea, eb));
-    l.direction = vec3_dot(n, facing) < 0.0f ? vec3_neg(n) : n;
-    l.area = vec3_length(vec3_cross(ea, eb));
-    l.attenuation[0] = 1.0f;
+    light l = light_make_area(c, ea, eb, vec3_dot(n, facing) < 0.0f ? vec3_neg(n) : n, Le);
     return mat >= 0 && scene_add_light(s, l) >= 0 && tiny_add_quad(s, c, ea, eb, facing, mat);
 }
 
@@ -158,16 +150,7 @@ bool tiny_scene_furnace(scene *s, float rho, float Le)
             vec3 centre = vec3_make(c[0], c[1], c[2]);
             vec3 ea = vec3_make(a[0], a[1], a[2]), eb = vec3_make(b[0], b[1], b[2]);
             vec3 inwards = vec3_neg(centre);
-            light l;
-            memset(&l, 0, sizeof l);
-            l.kind = LIGHT_AREA;
-            l.radiance = rgb_gray(Le);
-            l.position = centre;
-            l.edge_u = ea;
-            l.edge_v = eb;
-            l.direction = inwards;
-            l.area = 4.0f;
-            l.attenuation[0] = 1.0f;
+            light l = light_make_area(centre, ea, eb, inwards, rgb_gray(Le));
             if (scene_add_light(s, l) < 0 || !tiny_add_quad(s, centre, ea, eb, inwards, mat))
                 return false;
         }

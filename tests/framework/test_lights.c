@@ -15,17 +15,8 @@
 
 static light area_light(float half_x, float half_z, float height)
 {
-    light l;
-    memset(&l, 0, sizeof l);
-    l.kind = LIGHT_AREA;
-    l.radiance = rgb_gray(3.0f);
-    l.position = vec3_make(0, height, 0);
-    l.edge_u = vec3_make(2 * half_x, 0, 0);
-    l.edge_v = vec3_make(0, 0, 2 * half_z);
-    l.direction = vec3_make(0, -1, 0);
-    l.area = 4 * half_x * half_z;
-    l.attenuation[0] = 1.0f;
-    return l;
+    return light_make_area(vec3_make(0, height, 0), vec3_make(2 * half_x, 0, 0), vec3_make(0, 0, 2 * half_z),
+                           vec3_make(0, -1, 0), rgb_gray(3.0f));
 }
 
 /* E[1 / pdf(wi)] over the light's samples = the solid angle it subtends (the integral of 1 over the

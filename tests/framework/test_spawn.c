@@ -42,7 +42,7 @@ static vec3 leaving_direction(rng *g, vec3 n)
 static bool hit_prim(const scene *s, int prim, ray *r, hit *h)
 {
     if (!scene_prim_intersect(s, prim, r, h)) return false;
-    scene_hit_finish(s, r, h);
+    scene_hit_finish(s, NULL, r, h);
     return true;
 }
 
@@ -165,11 +165,8 @@ static bool light_and_floor(scene *s, rng *g, light *l, ray *r, hit *h)
 {
     float size = log_uniform(g, -3.0f, 3.0f);
     frame f = frame_from_normal(sample_uniform_sphere(rng_uniform2(g)));
-    memset(l, 0, sizeof *l);
-    l->kind = LIGHT_AREA, l->radiance = rgb_gray(1.0f), l->attenuation[0] = 1.0f;
-    l->position = random_place(g), l->direction = vec3_neg(f.n);
-    l->edge_u = vec3_scale(f.s, size * (0.2f + rng_uniform(g))), l->edge_v = vec3_scale(f.t, size * (0.2f + rng_uniform(g)));
-    l->area = vec3_length(vec3_cross(l->edge_u, l->edge_v));
+    vec3 place = random_place(g), eu = vec3_scale(f.s, size * (0.2f + rng_uniform(g)));
+    *l = light_make_area(place, eu, vec3_scale(f.t, size * (0.2f + rng_uniform(g))), vec3_neg(f.n), rgb_gray(1.0f));
     vec3 hu = vec3_scale(l->edge_u, 0.5f), hv = vec3_scale(l->edge_v, 0.5f), c = l->position;
     vec3 c00 = vec3_sub(vec3_sub(c, hu), hv), c10 = vec3_sub(vec3_add(c, hu), hv);
     vec3 c11 = vec3_add(vec3_add(c, hu), hv), c01 = vec3_add(vec3_sub(c, hu), hv);
