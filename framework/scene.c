@@ -114,8 +114,9 @@ void scene_hit_finish(const scene *s, const tri_frame *frames, const ray *r, hit
      * surface the same way whatever part 1 computed (spawn.h). */
     if (h->prim < s->num_triangles) {
         const triangle *t = &s->triangles[h->prim];
-        tri_frame f = frames ? frames[h->prim] : tri_frame_make(t);
-        hit_refine_triangle(t, &f, h);
+        tri_frame own;
+        if (!frames) own = tri_frame_make(t);
+        hit_refine_triangle(t, frames ? &frames[h->prim] : &own, h);
     } else {
         hit_refine_sphere(&s->spheres[h->prim - s->num_triangles], r, h);
     }

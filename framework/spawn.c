@@ -19,8 +19,13 @@ static inline void set_leave(hit *h) { h->leave = SPAWN_SAFETY * vec3_dot(vec3_a
 
 /* ---- the hit's point and its error bound (called by scene_prim_intersect) ------------------- */
 
+
 tri_frame tri_frame_make(const triangle *t)
 {
+    /* The blend b0 p0 + b1 p1 + b2 p2 (b0 = 1 - b1 - b2) errs per axis by at most gamma(7) times
+     * sum |b_i p_i|, and for a hit inside the triangle (every b_i >= 0, summing to 1 up to a
+     * rounding) that sum is at most the largest |p_i| on that axis: gamma(8) of it covers both. */
+    vec3 big = vec3_max(vec3_abs(t->p0), vec3_max(vec3_abs(t->p1), vec3_abs(t->p2)));
     /* Moller-Trumbore decides the side of the plane by the triple product (o - p0).(e1 x e2),
      * computed with an error up to a few u |o - p0| |e1| |e2|: across the plane that is
      * u L |e1| |e2| / |e1 x e2|, L the longer edge at p0, which grows as the triangle thins. */
@@ -28,30 +33,35 @@ tri_frame tri_frame_make(const triangle *t)
     float d1 = vec3_dot(e1, e1), d2 = vec3_dot(e2, e2), cc = vec3_dot(cross, cross);
     float edges2 = (d1 > d2 ? d1 : d2) * d1 * d2;  /* (L |e1| |e2|)^2 */
     tri_frame f;
+    float test_err;
     if (!(cc > 0.0f)) {  /* degenerate: part 1 should have missed; leave by the triangle's size */
         f.ng = vec3_make(0.0f, 0.0f, 0.0f);
-        f.test_err = sqrtf(d1 + d2);
-        return f;
+        test_err = sqrtf(d1 + d2);
+    } else {
+        float inv_cc = 1.0f / cc;
+        test_err = gamma_n(8) * sqrtf(edges2 * inv_cc);
+        f.ng = vec3_scale(cross, sqrtf(inv_cc));
     }
-    float inv_cc = 1.0f / cc;
-    f.test_err = gamma_n(8) * sqrtf(edges2 * inv_cc);
-    f.ng = vec3_scale(cross, sqrtf(inv_cc));
+    f.p_err = vec3_add(vec3_scale(big, gamma_n(8)), vec3_make(test_err, test_err, test_err));
+    f.leave = SPAWN_SAFETY * vec3_dot(vec3_abs(f.ng), f.p_err);
     return f;
 }
 
 void hit_refine_triangle(const triangle *t, const tri_frame *f, hit *h)
 {
-    /* The barycentric blend lies on the triangle's plane for any b1, b2: its only error is
-     * the rounding of the blend itself. */
+    /* The barycentric blend lies on the triangle's plane for any b1, b2 (up to the rounding
+     * tri_frame_make bounds); the rest depends on the triangle alone. */
     float b0 = 1.0f - h->b1 - h->b2;
     vec3 a = vec3_scale(t->p0, b0), b = vec3_scale(t->p1, h->b1), c = vec3_scale(t->p2, h->b2);
     h->p = vec3_add(vec3_add(a, b), c);
-    h->p_err = vec3_scale(vec3_add(vec3_add(vec3_abs(a), vec3_abs(b)), vec3_abs(c)), gamma_n(7));
-    h->p_err = vec3_add(h->p_err, vec3_make(f->test_err, f->test_err, f->test_err));
-    /* A degenerate triangle has no plane: the shading normal part 1 gave stands in. */
-    bool flat = f->ng.x == 0.0f && f->ng.y == 0.0f && f->ng.z == 0.0f;
-    h->ng = flat ? h->n : f->ng;
-    set_leave(h);
+    h->p_err = f->p_err;
+    h->ng = f->ng;
+    h->leave = f->leave;
+    if (f->ng.x == 0.0f && f->ng.y == 0.0f && f->ng.z == 0.0f) {
+        /* A degenerate triangle has no plane: the shading normal part 1 gave stands in. */
+        h->ng = h->n;
+        set_leave(h);
+    }
 }
 
 void hit_refine_sphere(const sphere *s, const ray *r, hit *h)

@@ -11,9 +11,11 @@
  * every hit carries a bound on the error of its point, filled by the framework whatever part 1
  * computed (scene_hit_finish calls hit_refine_triangle / hit_refine_sphere below):
  *   triangle: p = b0 p0 + b1 p1 + b2 p2 with b0 = 1 - b1 - b2, on the triangle's plane however
- *             accurate the barycentrics are; per axis |p - exact| <= gamma(7) sum_i |b_i p_i|,
- *             plus gamma(8) L |e1| |e2| / |e1 x e2| (L the longer edge at p0) for the rounding of
- *             part 1's own test (Moller-Trumbore's triple product), which grows as a triangle thins;
+ *             accurate the barycentrics are; per axis |p - exact| <= gamma(7) sum_i |b_i p_i|
+ *             <= gamma(8) max_i |p_i| for a hit inside the triangle, plus gamma(8) L |e1| |e2| /
+ *             |e1 x e2| (L the longer edge at p0) for the rounding of part 1's own test
+ *             (Moller-Trumbore's triple product), which grows as a triangle thins: a bound that
+ *             depends on the triangle alone, so accel_build computes it once (tri_frame);
  *   sphere:   the ray's point q reprojected onto the sphere, p = c + R (q - c) / |q - c|;
  *             per axis |p - exact| <= gamma(5) |p - c| + gamma(2) |p|.
  * (gamma(n) = n u / (1 - n u), u = 2^-24 the unit roundoff.) A ray leaving along w starts at
@@ -33,9 +35,11 @@
  * error and on the segment's, so the shadow ray never reaches the emissive quad that sits where
  * the light is.
  *
- * Cost. A triangle's normal and test error depend on the triangle alone: accel_build computes them
- * once (tri_frame), so a hit costs a blend and a few absolute values more than part 1's t. A shadow
- * ray costs two offsets. `make bench` measures what it all adds to a render (bench/RESULTS.md). */
+ * Cost. Whatever depends on one triangle or one light alone is computed once: a triangle's normal,
+ * error bound and offset when accel_build runs (tri_frame), an area light's offset terms when it is
+ * made (light_make_area). A hit on a triangle then costs the blend, a hit on a sphere the
+ * reprojection, and a shadow ray two offsets. `make bench-references` measures renders per second
+ * (bench/RESULTS.md says what the offsets cost). */
 #ifndef PL_SPAWN_H
 #define PL_SPAWN_H
 
@@ -62,12 +66,13 @@ PL_PART_API ray spawn_ray(const ray *from, const hit *h, vec3 w);
  * ends is a hit. */
 PL_PART_API ray spawn_ray_to_light(const ray *from, const hit *h, const light *l, const light_sample *ls);
 
-/* What a hit's refinement needs of its triangle and nothing else: the unit geometric normal, and
- * the bound across the plane on part 1's side-of-plane test (gamma(8) L |e1| |e2| / |e1 x e2|). A
- * degenerate triangle (no area) gets ng = 0 and its size as the bound. */
+/* What a hit on a triangle takes from the triangle alone: the unit geometric normal, the error
+ * bound of any hit point on it, and the offset that bound gives (hit.leave). A degenerate triangle
+ * (no area) gets ng = 0 and its size in the bound; its hits take part 1's normal. */
 typedef struct tri_frame {
     vec3 ng;
-    float test_err;
+    vec3 p_err;
+    float leave;
 } tri_frame;
 tri_frame tri_frame_make(const triangle *t);
 

@@ -243,7 +243,14 @@ void tiny_scene_translate(scene *s, vec3 t)
         tr->p0 = vec3_add(tr->p0, t), tr->p1 = vec3_add(tr->p1, t), tr->p2 = vec3_add(tr->p2, t);
     }
     for (int i = 0; i < s->num_spheres; i++) s->spheres[i].center = vec3_add(s->spheres[i].center, t);
-    for (int i = 0; i < s->num_lights; i++) s->lights[i].position = vec3_add(s->lights[i].position, t);
+    for (int i = 0; i < s->num_lights; i++) {
+        light *l = &s->lights[i];
+        /* An area light is made again: its offset terms depend on where it is (spawn.h). */
+        if (l->kind == LIGHT_AREA)
+            *l = light_make_area(vec3_add(l->position, t), l->edge_u, l->edge_v, l->direction, l->radiance);
+        else
+            l->position = vec3_add(l->position, t);
+    }
 }
 
 void tiny_hit_push_behind(const ray *r, hit *h, float fraction)

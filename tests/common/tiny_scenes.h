@@ -76,7 +76,8 @@ bool tiny_scene_cornell(scene *s);
 bool tiny_scene_stripes(scene *s);
 
 /* Moves every triangle, sphere and light of s by t (a scene far from the origin, where floats are
- * coarse and a ray from the raw hit point hits its own surface). */
+ * coarse and a ray from the raw hit point hits its own surface). Before tiny_world_finish: the
+ * accel keeps what it derives from each triangle's place (tri_frame, spawn.h). */
 void tiny_scene_translate(scene *s, vec3 t);
 
 /* Moves h->p by `fraction` (0..1) of its error bound across the surface, to the side the ray r
