@@ -39,7 +39,7 @@ uint64_t seam_hash(uint64_t h, const void *data, size_t size)
 uint64_t seam_hash_int(uint64_t h, int64_t v) { return seam_hash(h, &v, sizeof v); }
 
 /* The structs below are hashed whole only where they have no padding. */
-_Static_assert(sizeof(ray) == 9 * 4 && sizeof(hit) == 17 * 4 && sizeof(mat4) == 16 * 4, "padding in ray, hit or mat4");
+_Static_assert(sizeof(ray) == 9 * 4 && sizeof(hit) == 18 * 4 && sizeof(mat4) == 16 * 4, "padding in ray, hit or mat4");
 
 uint64_t seam_hash_camera(uint64_t h, const camera *c)
 {
