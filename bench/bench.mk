@@ -1,8 +1,8 @@
 # Benchmarks: speed figures, never tests. `make bench` runs them all; each prints its figures, and
 # none installs anything or writes a tracked file (bench-bvh's table goes to build/bench/bvh/).
 # BENCH_RUNS=N: runs per figure (median or best, as each says).
-.PHONY: bench bench-bvh bench-grade bench-references bench-load bench-write bench-transport bench-trace
-bench: bench-bvh bench-grade bench-references bench-load bench-write bench-transport bench-trace  ## every benchmark (figures, not tests; see bench/RESULTS.md)
+.PHONY: bench bench-bvh bench-grade bench-references bench-load bench-write bench-transport bench-trace bench-surfaces
+bench: bench-bvh bench-grade bench-references bench-load bench-write bench-transport bench-trace bench-surfaces  ## every benchmark (figures, not tests; see bench/RESULTS.md)
 
 # ---- BVH (part 2): build time, rays per second, whole render; beside Embree when installed -------
 #   Embree (Debian's libembree-dev, used only here) ships no pkg-config file, so its header is the
@@ -66,3 +66,13 @@ bench-transport: $(BIN)/pathtracer $(BIN)/imgtool  ## parts 3-5 render times and
 
 bench-trace: $(BIN)/pathtracer  ## --trace-pixel's cost, and a render with the trace hooks beside one without (BASE=commit)
 	$(Q)sh bench/trace.sh
+
+# ---- leaving surfaces (spawn.h): what the offsets cost a render, beside the commit before them ----
+SURFACES_BASE ?= e179730
+bench-surfaces: $(BIN)/pathtracer  ## renders with the surface offsets beside renders without them (SURFACES_BASE=commit)
+	@echo "== this tree beside $(SURFACES_BASE), the last commit whose rays left surfaces by EPS_F alone"
+	@for f in "-m 1 -l 4" "-m 5 -l 1" "-m 5 -l 4"; do \
+	   for s in scenes/cornell_spheres.dae scenes/cornell_bunny.dae; do \
+	     sh bench/against.sh $(SURFACES_BASE) $(BENCH_RUNS) $$s -q -t 2 -r 160 120 -s 16 $$f; \
+	   done; \
+	 done
