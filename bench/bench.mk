@@ -73,6 +73,6 @@ bench-surfaces: $(BIN)/pathtracer  ## renders with the surface offsets beside re
 	@echo "== this tree beside $(SURFACES_BASE), the last commit whose rays left surfaces by EPS_F alone"
 	@for f in "-m 1 -l 4" "-m 5 -l 1" "-m 5 -l 4"; do \
 	   for s in scenes/cornell_spheres.dae scenes/cornell_bunny.dae; do \
-	     sh bench/against.sh $(SURFACES_BASE) $(BENCH_RUNS) $$s -q -t 2 -r 160 120 -s 16 $$f; \
+	     sh bench/against.sh $(SURFACES_BASE) $(BENCH_RUNS) $$s -q -t 2 -r 200 150 -s 32 $$f; \
 	   done; \
 	 done
