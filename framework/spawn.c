@@ -17,8 +17,7 @@ static inline vec3 vec3_abs(vec3 a) { return vec3_make(fabsf(a.x), fabsf(a.y), f
  * leaves this hit (a light sample's four shadow rays share it). */
 static inline void set_leave(hit *h) { h->leave = SPAWN_SAFETY * vec3_dot(vec3_abs(h->ng), h->p_err); }
 
-/* ---- the hit's point and its error bound (called by scene_prim_intersect) ------------------- */
-
+/* ---- the hit's point and its error bound (scene_hit_finish calls these) ----------------------- */
 
 tri_frame tri_frame_make(const triangle *t)
 {
