@@ -13,9 +13,10 @@ static inline float gamma_n(int n)
 
 static inline vec3 vec3_abs(vec3 a) { return vec3_make(fabsf(a.x), fabsf(a.y), fabsf(a.z)); }
 
-/* The error bound across the surface, with the safety factor: the origin offset of every ray that
- * leaves this hit (a light sample's four shadow rays share it). */
-static inline void set_leave(hit *h) { h->leave = SPAWN_SAFETY * vec3_dot(vec3_abs(h->ng), h->p_err); }
+/* The error bound p_err across the surface of normal ng, with the safety factor: the origin offset
+ * of every ray that leaves a hit (a light sample's four shadow rays share it). */
+static inline float leave_distance(vec3 ng, vec3 p_err) { return SPAWN_SAFETY * vec3_dot(vec3_abs(ng), p_err); }
+static inline void set_leave(hit *h) { h->leave = leave_distance(h->ng, h->p_err); }
 
 /* ---- the hit's point and its error bound (scene_hit_finish calls these) ----------------------- */
 
@@ -42,7 +43,7 @@ tri_frame tri_frame_make(const triangle *t)
         f.ng = vec3_scale(cross, sqrtf(inv_cc));
     }
     f.p_err = vec3_add(vec3_scale(big, gamma_n(8)), vec3_make(test_err, test_err, test_err));
-    f.leave = SPAWN_SAFETY * vec3_dot(vec3_abs(f.ng), f.p_err);
+    f.leave = leave_distance(f.ng, f.p_err);
     return f;
 }
 

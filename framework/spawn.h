@@ -38,8 +38,8 @@
  * Cost. Whatever depends on one triangle or one light alone is computed once: a triangle's normal,
  * error bound and offset when accel_build runs (tri_frame), an area light's offset terms when it is
  * made (light_make_area). A hit on a triangle then costs the blend, a hit on a sphere the
- * reprojection, and a shadow ray two offsets. `make bench-references` measures renders per second
- * (bench/RESULTS.md says what the offsets cost). */
+ * reprojection, and a shadow ray two offsets. `make bench-surfaces` measures what that costs a
+ * render (bench/RESULTS.md). */
 #ifndef PL_SPAWN_H
 #define PL_SPAWN_H
 
