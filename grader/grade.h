@@ -97,6 +97,14 @@ typedef struct {
     /* A failing case: the pixels that differ most from the reference, one line each with the
      * --trace-pixel command that replays the render of that pixel (framework/trace.h); or "". */
     char trace[1536];
+    unsigned long long seed;   /* the seed of the render this result judges */
+    /* Rendered twice (grade_image.h: a failure a correct render has by chance is confirmed or not by
+     * a second render, which this result judges): the first render's seed and p-value. */
+    bool rendered_twice;
+    unsigned long long first_seed;
+    double first_p;
+    bool chance_failure;       /* set by the judge: it failed on its p-value alone (not its figures,
+                                  not a bad pixel, not a deterministic case) */
 } grade_case_result;
 
 typedef struct {

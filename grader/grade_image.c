@@ -319,6 +319,7 @@ static void judge(const grade_env *env, const grade_spec *spec, int part, const 
             figures = figures && c->noise <= GRADE_NOISE_FACTOR;
         }
         c->pass = figures && c->v.pass;
+        c->chance_failure = figures && !c->v.pass && !c->v.deterministic && c->v.bad_pixels == 0;
         c->score = c->pass ? k->points : 0.0;
         if (!c->pass) point_at_pixels(env, k, &cand, refimg, c);
         write_pictures(env, part, c, &cand, refimg);
@@ -327,20 +328,57 @@ static void judge(const grade_env *env, const grade_spec *spec, int part, const 
     image_free(&candvar);
 }
 
+/* One render of the case at env->seed, judged into c. */
+static void render_and_judge(const grade_env *env, const grade_spec *spec, const char *tree, int part, const char *ref,
+                             const image *refimg, const image *refvar, grade_case_result *c)
+{
+    film f = {0};
+    output_film_counts counts;
+    c->seed = env->seed;
+    if (render_candidate(env, tree, part, c, &f, &counts)) {
+        write_candidate_exr(env, part, c->spec, &f);
+        judge(env, spec, part, ref, refimg, refvar, &f, &counts, c);
+    }
+    film_free(&f);
+}
+
+unsigned long long grade_confirm_seed(unsigned long long seed)
+{
+    /* One step of splitmix64: every bit of the seed moves about half of the result's. */
+    uint64_t z = (uint64_t)seed + 0x9e3779b97f4a7c15ull;
+    z = (z ^ (z >> 30)) * 0xbf58476d1ce4e5b9ull;
+    z = (z ^ (z >> 27)) * 0x94d049bb133111ebull;
+    z ^= z >> 31;
+    return (unsigned long long)(z % 1000000000000ull);
+}
+
 void grade_image_case(const grade_env *env, const grade_spec *spec, const char *tree, int part, grade_case_result *c)
 {
     const grade_case *k = c->spec;
     char ref[4096];
     grade_refs_path(env->root, k, part, ref, sizeof ref);
     image refimg = {0}, refvar = {0};
-    film f = {0};
-    output_film_counts counts;
     if (!load_reference(ref, &refimg, &refvar, c)) return;
-    if (render_candidate(env, tree, part, c, &f, &counts)) {
-        write_candidate_exr(env, part, k, &f);
-        judge(env, spec, part, ref, &refimg, &refvar, &f, &counts, c);
+    render_and_judge(env, spec, tree, part, ref, &refimg, &refvar, c);
+    /* Why a second render, and not a smaller alpha: the tests' p-values are exact only as far as a
+     * block's sum of samples is normal, and at the 5 to 6 sigma that Sidak's correction asks of each
+     * block, the rare bright paths of a path tracer make its tail heavier than the normal's (measured:
+     * 8 failures of the solution in 14,000 gradings where 1.4 were due). Two renders at independent
+     * seeds both fail with the square of one's chance, whatever the shape of that tail; a biased
+     * render fails both. The first failure costs nothing but time. */
+    if (c->chance_failure) {
+        grade_env again = *env;
+        again.seed = grade_confirm_seed(env->seed);
+        grade_case_result second;
+        memset(&second, 0, sizeof second);
+        second.spec = k;
+        render_and_judge(&again, spec, tree, part, ref, &refimg, &refvar, &second);
+        second.rendered_twice = true;
+        second.first_seed = c->seed;
+        second.first_p = c->v.p_value;
+        verdict_free(&c->v);
+        *c = second;
     }
-    film_free(&f);
     image_free(&refimg);
     image_free(&refvar);
 }

@@ -6,7 +6,8 @@
  *                     without it, grade this tree as it is, public cases only (a student's make grade)
  *   --out DIR         where results.json, the report (DIR/report/index.html) and scratch go (out/grade)
  *   --calibrate N     render every case of this tree N times with fresh seeds and print, per case, how
- *                     often it failed beside the alpha it claims, and the deciles of its p-values
+ *                     often its first render failed beside the alpha it claims, how often the case
+ *                     failed (its second render too), and the deciles of the first render's p-values
  *   --cases A,B       with --calibrate: only the cases of these names (a slow case's 2,000 runs alone)
  * Exit status: 0 when every graded part got full marks, 1 otherwise, 2 for bad arguments or a course's
  * file that is not usable (grading/cases.json, a reference: grade_refs.h), before anyone is graded, 3
@@ -59,7 +60,7 @@ static bool name_listed(const char *names, const char *name)
 static int calibrate(const grade_env *base, const grade_spec *spec, const char *parts, const char *cases, int runs)
 {
     int worst = 0;
-    printf("%-28s %6s %9s %8s  p-value deciles\n", "case", "runs", "failures", "alpha");
+    printf("%-28s %6s %9s %9s %8s  p-value deciles\n", "case", "runs", "failures", "confirmed", "alpha");
     for (int k = 0; k < GRADE_NUM_PARTS; k++) {
         char digit[2] = {(char)('1' + k), 0};
         if (!strstr(parts, digit)) continue;
@@ -70,7 +71,7 @@ static int calibrate(const grade_env *base, const grade_spec *spec, const char *
         }
         for (int i = 0; i < p->num_cases; i++) {
             if (!name_listed(cases, p->cases[i].name)) continue;
-            int failures = 0, decile[10] = {0};
+            int failures = 0, confirmed = 0, decile[10] = {0};
             double noise_min = INFINITY, noise_max = 0.0;  /* noise_check cases: the range over the runs */
             for (int run = 0; run < runs; run++) {
                 grade_env env = *base;
@@ -83,24 +84,31 @@ static int calibrate(const grade_env *base, const grade_spec *spec, const char *
                     fprintf(stderr, "grade: %s: %s\n", c.spec->name, c.reason);
                     return 1;
                 }
-                failures += !c.pass;
-                /* A failure of the solution is a false failure: its seed makes it again. */
-                if (!c.pass)
-                    fprintf(stderr, "grade: part %d, case %s fails at seed %llu (p = %.3g): bin/grade --parts %d --seed %llu "
-                                    "shows it\n", p->part, c.spec->name, (unsigned long long)env.seed, c.v.p_value, p->part,
-                            (unsigned long long)env.seed);
+                /* Two counts: the first render's failures (the test's own rate, what its alpha claims)
+                 * and the case's, confirmed by a second render (grade_image.h). A failure of the
+                 * solution is a false failure: its seed makes it again. */
+                bool first_failed = c.rendered_twice || !c.pass;
+                double first_p = c.rendered_twice ? c.first_p : c.v.p_value;
+                failures += first_failed;
+                confirmed += !c.pass;
+                if (first_failed)
+                    fprintf(stderr, "grade: part %d, case %s fails at seed %llu (p = %.3g)%s: bin/grade --parts %d --seed %llu "
+                                    "shows it\n", p->part, c.spec->name, (unsigned long long)env.seed, first_p,
+                            c.pass ? ", its second render passes" : c.rendered_twice ? ", its second render too" : "",
+                            p->part, (unsigned long long)env.seed);
                 noise_max = c.noise > noise_max ? c.noise : noise_max;
                 noise_min = c.noise < noise_min ? c.noise : noise_min;
-                decile[c.v.p_value >= 1.0 ? 9 : (int)(c.v.p_value * 10)]++;
+                decile[first_p >= 1.0 ? 9 : (int)(first_p * 10)]++;
                 verdict_free(&c.v);
             }
-            printf("part%d/%-22s %6d %9d %8.0e ", p->part, p->cases[i].name, runs, failures, spec->family_alpha);
+            printf("part%d/%-22s %6d %9d %9d %8.0e ", p->part, p->cases[i].name, runs, failures, confirmed,
+                   spec->family_alpha);
             for (int d = 0; d < 10; d++) printf(" %3d", decile[d]);
             if (p->cases[i].noise_check) printf("   noise ratio %.3f to %.3f (limit %.2f)", noise_min, noise_max,
                                                    GRADE_NOISE_FACTOR);
             printf("\n");
             fflush(stdout);
-            worst = failures > worst ? failures : worst;
+            worst = confirmed > worst ? confirmed : worst;
         }
     }
     return worst > 0;

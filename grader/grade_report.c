@@ -39,11 +39,22 @@ static int rounding_text(const verdict *v, char *out, size_t size)
 static void case_text(const grade_case_result *c, char *out, size_t size)
 {
     const verdict *v = &c->v;
+    /* Rendered twice (grade_image.h): say so first; what follows judges the second render. */
+    int len = 0;
+    if (c->rendered_twice)
+        len = snprintf(out, size, "Rendered twice: the first render (seed %llu) differed from the reference (p-value "
+                       "%.3g). A correct render fails a case by chance about once in a thousand gradings at most, so "
+                       "the case was rendered again at seed %llu. %s ", c->first_seed, c->first_p, c->seed,
+                       c->pass ? "That render is judged here, and the first failure was chance, not your code:"
+                       : c->ran ? "That render differs too, so the difference is your code's, not chance:"
+                                : "That render");
+    if (len < 0 || (size_t)len >= size) return;
+    out += len, size -= (size_t)len;
     if (!c->ran) {
         snprintf(out, size, "**did not run**: %s", c->reason);
         return;
     }
-    int len = v->deterministic ? rounding_text(v, out, size)
+    len = v->deterministic ? rounding_text(v, out, size)
                                : snprintf(out, size, "%s. p-value %.3g (the case fails below %.0e), relMSE %.4f, "
                                           "mean ratio red %.3f green %.3f blue %.3f.",
                                           v->pass ? "**matches the reference**" : "**differs from the reference**",
@@ -274,8 +285,9 @@ static void html_head(FILE *f, const grade_result *r)
                "vertical-align:middle}\npre{background:#f6f6f6;padding:8px;white-space:pre-wrap}\n"
                "</style></head><body>\n<h1>pathlab grade</h1>\n");
     fprintf(f, "<p>Seed %llu, %.0f s. Each image case renders a scene with your part and compares it with the "
-               "reference, block by block; a case fails only when the difference is too large to be noise (a "
-               "correct part fails a case less than once in a thousand gradings).</p>\n",
+               "reference, block by block; a case fails only when the difference is too large to be noise, "
+               "in two renders at two seeds (a correct part fails one render about once in a thousand gradings "
+               "at most, so a case that fails is rendered again).</p>\n",
             (unsigned long long)r->seed, r->seconds);
     if (r->unprotected[0]) html_wrapped(f, "<p class=\"fail\">Unavailable protections: ", r->unprotected, "</p>\n");
 }

@@ -36,13 +36,18 @@ test-grader: $(BIN)/grade
 # The grader builds with GCC's -Wformat-truncation on: paths go through grade_path (refused, never
 # cut) and messages through grade_msg (cut on purpose, marked), both in grader/grade_fmt.c.
 
-.PHONY: grade test-report test-grader-process
+.PHONY: grade test-report test-grader-process test-grade-confirm
 grade: $(BIN)/grade  ## grade your parts on the public cases (PARTS=3: one part; SEED=N: repeat a run); report in out/grade/
 	$(Q)$(BIN)/grade --out out/grade $(if $(PARTS),--parts $(PARTS)) $(if $(SEED),--seed $(SEED))
 
 # The HTML report in a real browser: headless Chromium screenshots it.
 test-report: $(BIN)/grade $(BIN)/pathtracer $(BIN)/imgtool  ## the grader's HTML report, screenshotted in headless Chromium
 	$(Q)sh tests/grader/report.sh
+
+# A failure chance can explain is confirmed by a second render, and only such a failure
+# (tests/grader/confirm.sh: scratch trees whose renderer is wrong on purpose, first or always).
+test-grade-confirm: $(BIN)/grade $(BIN)/pathtracer $(BIN)/test-part3  ## a failing case is rendered twice, judged on the second
+	$(Q)sh tests/grader/confirm.sh
 
 # The grader's containment at process level (tests/grader/sandbox.sh says what it proves): grades
 # part 1 of hostile submissions; as root it also sweeps the file system as student code for secrets

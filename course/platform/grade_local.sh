@@ -9,7 +9,8 @@
 #               this machine allows);
 # and each public test's name, status and score in the two results.json must be equal. A bug is
 # compared on its own part only: locally a later part is built on the student's buggy part, in the
-# autograder on the course's. Ends with "N passed, N failed".
+# autograder on the course's. The bug of part 3 fails its image cases twice: each was rendered again
+# (grader/grade_image.h) and differed again. Ends with "N passed, N failed".
 set -u
 cd "$(dirname "$0")/../.." || exit 2
 root=$PWD
@@ -17,12 +18,8 @@ SEED=${SEED:-20261124}
 STUDENT=release/student
 MESSAGE="grade: no sandbox on this machine: your own code runs unconfined; your official grade comes from the autograder"
 [ -d "$STUDENT" ] && [ -x bin/grade ] || { echo "grade-local: run make release bin/grade first" >&2; exit 2; }
-# jq reads results.json (the grader's own reading is jansson's).
-if ! command -v jq >/dev/null; then
-    [ "$(id -u)" = 0 ] || { echo "grade-local: SKIPPED: jq is missing and installing it needs root"; exit 0; }
-    DEBIAN_FRONTEND=noninteractive apt-get install -y -qq --no-install-recommends jq >/dev/null 2>&1 ||
-        { apt-get update -qq && DEBIAN_FRONTEND=noninteractive apt-get install -y -qq --no-install-recommends jq >/dev/null; }
-fi
+. tests/common/need.sh
+need jq jq grade-local  # reads results.json (the grader's own reading is jansson's)
 # Scratch outside the repository, readable by nobody on the way down.
 work=$(mktemp -d /tmp/pathlab-grade-local-XXXXXX) && chmod 755 "$work" || exit 2
 trap 'rm -rf "$work"' EXIT INT TERM
@@ -78,5 +75,13 @@ for m in part1-pixel-corner-not-centre part3-bsdf-without-pi; do
     if grep -q "	failed	" "$work/$m-a.txt" 2>/dev/null; then pass "$m: fails in both"
     else fail "$m: expected failed verdicts, got none"; fi
 done
+# A bug's failed image case is rendered twice (grader/grade_image.h) and fails both renders.
+a=$work/part3-bsdf-without-pi-autograder/results.json
+n=$(jq '[.tests[] | select(.name | startswith("Part 3: image")) | select(.status == "failed")] | length' "$a" 2>/dev/null)
+m=$(jq '[.tests[] | select(.name | startswith("Part 3: image")) | select(.status == "failed")
+         | select(.output | startswith("Rendered twice")) | select(.output | contains("differs too"))] | length' "$a" 2>/dev/null)
+if [ -n "$n" ] && [ "$n" -gt 0 ] && [ "$m" = "$n" ]; then
+    pass "part3-bsdf-without-pi: its $n failed image cases were rendered twice and differ both times"
+else fail "part3-bsdf-without-pi: ${m:-?} of its ${n:-?} failed image cases say they were rendered twice and differ too"; fi
 echo "grade-local: $passed passed, $failed failed"
 [ "$failed" = 0 ]

@@ -7,16 +7,8 @@
 set -eu
 cd "$(dirname "$0")/../.."
 out=out/report-test
-if ! command -v chromium >/dev/null; then
-    if [ "$(id -u)" = 0 ]; then
-        echo "test-report: installing chromium"
-        DEBIAN_FRONTEND=noninteractive apt-get install -y -qq --no-install-recommends chromium >/dev/null 2>&1 ||
-            { apt-get update -qq && DEBIAN_FRONTEND=noninteractive apt-get install -y -qq --no-install-recommends chromium >/dev/null; }
-    else
-        echo "test-report: SKIPPED: chromium is missing and installing it needs root"
-        exit 0
-    fi
-fi
+. tests/common/need.sh
+need chromium chromium test-report
 fail() { echo "test-report: FAILED: $*"; exit 1; }
 rm -rf "$out"
 mkdir -p out

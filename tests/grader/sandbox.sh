@@ -26,12 +26,8 @@ set -eu
 cd "$(dirname "$0")/../.."
 out=out/sandbox-test
 fail() { echo "test-grader-process: FAILED: $*"; exit 1; }
-# jq reads results.json here (the grader's own reading is jansson's).
-if ! command -v jq >/dev/null; then
-    [ "$(id -u)" = 0 ] || { echo "test-grader-process: SKIPPED: jq is missing and installing it needs root"; exit 0; }
-    DEBIAN_FRONTEND=noninteractive apt-get install -y -qq --no-install-recommends jq >/dev/null 2>&1 ||
-        { apt-get update -qq && DEBIAN_FRONTEND=noninteractive apt-get install -y -qq --no-install-recommends jq >/dev/null; }
-fi
+. tests/common/need.sh
+need jq jq test-grader-process  # reads results.json here (the grader's own reading is jansson's)
 rm -rf "$out"
 mkdir -p "$out"
 
