@@ -18,7 +18,8 @@
  *   min_block_samples candidate samples (and min_block_pixels pixels), never a fixed 8x8.
  * (With known_variance, a z test against the reference's variance instead: verdict_params.)
  * The p-values of all K tests are combined with Sidak: the case p-value is 1 - (1 - p_min)^K, uniform
- * on [0, 1] for a correct render, and the case fails when it is below family_alpha.
+ * on [0, 1] for a correct render, and the render fails when it is below family_alpha (the grader
+ * then judges a second render before it fails the case: grader/grade_image.h says why).
  *
  * Deterministic cases (one sample per pixel at its centre, normal shading) run no test at all: two
  * correct implementations differ there by rounding only, and a t test divides that rounding by its
@@ -61,7 +62,7 @@ typedef struct {
 } verdict_image;
 
 typedef struct {
-    double family_alpha;    /* chance a correct render fails the case (1e-3) */
+    double family_alpha;    /* chance a correct render fails (default 1e-3; the grader sets cases.json's) */
     int candidate_spp;      /* samples per pixel of the candidate render (sizes the blocks) */
     int min_block_pixels;   /* at least this many pixels per block (64) */
     long min_block_samples; /* at least this many candidate samples per block (4096) */

@@ -5,7 +5,9 @@
 #   flaky   the first render of each pair is wrong (normal shading in place of the case's light: a
 #           p-value failure, nothing else) and the second is the case itself, so every case fails
 #           its first render and passes on its second: the case passes, and the report says it was
-#           rendered twice, with both seeds;
+#           rendered twice, with both seeds. It is also what a student who has read the grader would
+#           try against the rule, and it scores only because its second render is right, which
+#           takes a right part (student code cannot tell which render it is: both get a seed);
 #   biased  every render is wrong: both renders fail, and so does the case;
 #   det     part 1's deterministic case from the wrong scene: a failure that is not chance, never
 #           rendered again.
