@@ -10,7 +10,7 @@
 # and each public test's name, status and score in the two results.json must be equal. A bug is
 # compared on its own part only: locally a later part is built on the student's buggy part, in the
 # autograder on the course's. The bug of part 3 fails its image cases twice: each was rendered again
-# (grader/grade_image.h) and differed again. Ends with "N passed, N failed".
+# (grader/grade_image.h) and differed again, but for those too noisy. Ends with "N passed, N failed".
 set -u
 cd "$(dirname "$0")/../.." || exit 2
 root=$PWD
@@ -75,13 +75,16 @@ for m in part1-pixel-corner-not-centre part3-bsdf-without-pi; do
     if grep -q "	failed	" "$work/$m-a.txt" 2>/dev/null; then pass "$m: fails in both"
     else fail "$m: expected failed verdicts, got none"; fi
 done
-# A bug's failed image case is rendered twice (grader/grade_image.h) and fails both renders.
+# A bug's failed image case was rendered twice (grader/grade_image.h) and failed both renders, unless
+# what failed is a figure chance cannot explain, which is never rendered again (here the noise
+# ratio: an albedo not divided by pi is pi times noisier too).
 a=$work/part3-bsdf-without-pi-autograder/results.json
-n=$(jq '[.tests[] | select(.name | startswith("Part 3: image")) | select(.status == "failed")] | length' "$a" 2>/dev/null)
-m=$(jq '[.tests[] | select(.name | startswith("Part 3: image")) | select(.status == "failed")
-         | select(.output | startswith("Rendered twice")) | select(.output | contains("differs too"))] | length' "$a" 2>/dev/null)
-if [ -n "$n" ] && [ "$n" -gt 0 ] && [ "$m" = "$n" ]; then
-    pass "part3-bsdf-without-pi: its $n failed image cases were rendered twice and differ both times"
-else fail "part3-bsdf-without-pi: ${m:-?} of its ${n:-?} failed image cases say they were rendered twice and differ too"; fi
+lost='[.tests[] | select(.name | startswith("Part 3: image")) | select(.status == "failed")'
+n=$(jq "$lost] | length" "$a" 2>/dev/null)
+twice=$(jq "$lost | select(.output | startswith(\"Rendered twice\")) | select(.output | contains(\"differs too\"))] | length" "$a" 2>/dev/null)
+noisy=$(jq "$lost | select(.output | startswith(\"Rendered twice\") | not) | select(.output | contains(\"(more than 1.15x)\"))] | length" "$a" 2>/dev/null)
+if [ -n "$n" ] && [ "${twice:-0}" -gt 0 ] && [ $((twice + noisy)) = "$n" ]; then
+    pass "part3-bsdf-without-pi: $twice failed image cases rendered twice and different both times, $noisy too noisy (never again)"
+else fail "part3-bsdf-without-pi: of its ${n:-?} failed image cases, ${twice:-?} were rendered twice and differ too and ${noisy:-?} are too noisy"; fi
 echo "grade-local: $passed passed, $failed failed"
 [ "$failed" = 0 ]
