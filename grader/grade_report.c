@@ -55,10 +55,10 @@ static void case_text(const grade_case_result *c, char *out, size_t size)
         return;
     }
     len = v->deterministic ? rounding_text(v, out, size)
-                               : snprintf(out, size, "%s. p-value %.3g (the case fails below %.0e), relMSE %.4f, "
-                                          "mean ratio red %.3f green %.3f blue %.3f.",
-                                          v->pass ? "**matches the reference**" : "**differs from the reference**",
-                                          v->p_value, v->alpha, v->rel_mse, v->ratio[0], v->ratio[1], v->ratio[2]);
+                           : snprintf(out, size, "%s. p-value %.3g (the case fails below %.0e), relMSE %.4f, "
+                                      "mean ratio red %.3f green %.3f blue %.3f.",
+                                      v->pass ? "**matches the reference**" : "**differs from the reference**",
+                                      v->p_value, v->alpha, v->rel_mse, v->ratio[0], v->ratio[1], v->ratio[2]);
     if (len < 0 || (size_t)len >= size) return;
     if (v->bad_pixels)
         len += snprintf(out + len, size - len, " %ld pixels are NaN, infinite or negative; the first at x=%d y=%d "
@@ -285,9 +285,9 @@ static void html_head(FILE *f, const grade_result *r)
                "vertical-align:middle}\npre{background:#f6f6f6;padding:8px;white-space:pre-wrap}\n"
                "</style></head><body>\n<h1>pathlab grade</h1>\n");
     fprintf(f, "<p>Seed %llu, %.0f s. Each image case renders a scene with your part and compares it with the "
-               "reference, block by block; a case fails only when the difference is too large to be noise, "
-               "in two renders at two seeds (a correct part fails one render about once in a thousand gradings "
-               "at most, so a case that fails is rendered again).</p>\n",
+               "reference, block by block; a case fails only when the difference is too large to be noise (a "
+               "correct part's render differs that much about once in a thousand gradings at most, so a case whose "
+               "render does is rendered again at another seed, and fails only if that render differs too).</p>\n",
             (unsigned long long)r->seed, r->seconds);
     if (r->unprotected[0]) html_wrapped(f, "<p class=\"fail\">Unavailable protections: ", r->unprotected, "</p>\n");
 }
