@@ -15,7 +15,7 @@
 # spheres_normals, part 1), whose counts say how many first renders and how many cases failed, and
 # the wrapper counts its renders.
 # The flaky tree is also graded as a student's make grade would (part 3, its public cases), for the
-# report's words. Run it with `make test-grade-confirm`; about two minutes on two cores.
+# report's words. Run it with `make test-grade-confirm`; about 15 seconds on two cores.
 set -eu
 cd "$(dirname "$0")/../.."
 root=$PWD
