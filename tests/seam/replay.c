@@ -107,7 +107,7 @@ static void replay_todo(const seam_header *h, seam_fn fn)
         pl_todo_report(seam_fn_task(named), seam_fn_name(named));
 }
 
-const void *seam_replay(seam_fn fn, uint64_t inputs, rng *g, size_t *size)
+const void *seam_replay(seam_fn fn, uint64_t inputs, rng *g, size_t max, size_t *size)
 {
     if (broken) seam_fail(fn, "an earlier call's record was wrong");
     seam_header h;
@@ -117,7 +117,11 @@ const void *seam_replay(seam_fn fn, uint64_t inputs, rng *g, size_t *size)
     if (h.fn != (uint32_t)fn)
         seam_fail(fn, "the answer is for %s(): the code under test did not make the test's calls", seam_fn_name((int)h.fn));
     if (h.inputs != inputs) seam_fail(fn, "the answer is for a call with other arguments than the test's");
-    if (h.payload > SEAM_MAX_PAYLOAD) seam_fail(fn, "it sent %u bytes of outputs", h.payload);
+    /* Sized before anything is allocated: a record claiming more than this call can answer (up to
+     * SEAM_MAX_PAYLOAD) would make the judge grow to what the subject names. The message is the
+     * judge's own: it never repeats the claimed size, a number the code under test chose. */
+    if (h.payload > max || h.payload > SEAM_MAX_PAYLOAD)
+        seam_fail(fn, "its outputs are longer than this call can return");
     replay_trace(fn, &h);
     seam_trace_bounds(0, 0);
     if (h.payload > payload_room) {
@@ -126,7 +130,7 @@ const void *seam_replay(seam_fn fn, uint64_t inputs, rng *g, size_t *size)
         payload = malloc(payload_room);
         if (!payload) {
             payload_room = 0;
-            seam_fail(fn, "the judge has no memory for %u bytes of outputs", h.payload);
+            seam_fail(fn, "the judge has no memory for the outputs of this call");
         }
     }
     read_or_fail(fn, payload, h.payload);
@@ -140,8 +144,8 @@ const void *seam_replay(seam_fn fn, uint64_t inputs, rng *g, size_t *size)
 void seam_replay_fixed(seam_fn fn, uint64_t inputs, rng *g, void *out, size_t size)
 {
     size_t got;
-    const void *p = seam_replay(fn, inputs, g, &got);
-    if (got != size) seam_fail(fn, "it sent %zu bytes of outputs where %zu were expected", got, size);
+    const void *p = seam_replay(fn, inputs, g, size, &got);
+    if (got != size) seam_fail(fn, "its outputs are shorter than this call returns (%zu bytes)", size);
     memcpy(out, p, size);
 }
 

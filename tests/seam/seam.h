@@ -37,7 +37,7 @@
 struct render_ctx;
 
 #define SEAM_MAGIC 0x6d616573u       /* "seam" */
-#define SEAM_MAX_PAYLOAD (1u << 30)  /* a BVH over 2M primitives is about 40 MB */
+#define SEAM_MAX_PAYLOAD (1u << 30)  /* a ceiling for every call; each replay also has its own max */
 #define SEAM_MAX_TRACE (1u << 24)    /* trace entries of one call */
 
 /* Part functions, by number: the record names the function it answers. The numbers and names are
@@ -113,9 +113,11 @@ void seam_end_hit(seam_call *c, seam_fn fn, uint64_t inputs, bool found, const r
 
 /* Reads the record of a call to fn with these inputs, applies its work, trace, stub reports and
  * generator (g may be NULL), and returns its payload (valid until the next replay) with its size in
- * *size. A record that is missing, for another call or malformed fails the test (seam_fail). */
-const void *seam_replay(seam_fn fn, uint64_t inputs, rng *g, size_t *size);
-/* seam_replay for a payload of exactly `size` bytes, copied to out. */
+ * *size. max is the largest payload this call can answer, known to the caller from the function and
+ * its inputs: a record claiming more fails before the judge allocates anything. A record that is
+ * missing, for another call, larger than max or malformed fails the test (seam_fail). */
+const void *seam_replay(seam_fn fn, uint64_t inputs, rng *g, size_t max, size_t *size);
+/* seam_replay for a payload of exactly `size` bytes (its max too), copied to out. */
 void seam_replay_fixed(seam_fn fn, uint64_t inputs, rng *g, void *out, size_t size);
 /* The judge's side of seam_end_hit. */
 bool seam_replay_hit(seam_fn fn, uint64_t inputs, ray *r, hit *h);

@@ -102,19 +102,20 @@ bool aabb_intersect(const aabb *b, const ray *r, float *t_enter, float *t_exit)
 }
 
 /* The tree, checked for size only: its shape is for the tests to judge (bvh_validate). A tree has
- * at most 2n - 1 nodes; the bound leaves room for a wasteful one the validator will name. */
+ * at most 2n - 1 nodes; the bound leaves room for a wasteful one the validator will name. The same
+ * bound sizes the record before the judge allocates it (seam_replay's max). */
 pl_status bvh_build(bvh *out, const scene *s, int max_leaf_size)
 {
-    size_t size;
-    const unsigned char *p = seam_replay(SEAM_bvh_build, build_inputs(out, s, max_leaf_size), NULL, &size);
-    build_out head;
-    if (size < sizeof head) seam_fail(SEAM_bvh_build, "its answer is %zu bytes long", size);
-    memcpy(&head, p, sizeof head);
     int64_t bound = 4 * (int64_t)(s ? scene_prim_count(s) : 0) + 16;
+    build_out head;
+    size_t size, max = sizeof head + (size_t)bound * (sizeof(bvh_node) + sizeof(int));
+    const unsigned char *p = seam_replay(SEAM_bvh_build, build_inputs(out, s, max_leaf_size), NULL, max, &size);
+    if (size < sizeof head) seam_fail(SEAM_bvh_build, "its answer is shorter than a tree's header");
+    memcpy(&head, p, sizeof head);
     if (head.num_nodes < 0 || head.num_prims < 0 || head.num_nodes > bound || head.num_prims > bound ||
         size != sizeof head + (size_t)head.num_nodes * sizeof(bvh_node) + (size_t)head.num_prims * sizeof(int))
-        seam_fail(SEAM_bvh_build, "it sent a tree of %d nodes and %d primitive slots in %zu bytes", head.num_nodes,
-                  head.num_prims, size);
+        seam_fail(SEAM_bvh_build, "it sent a tree whose counts are negative, beyond %lld for this scene, or not "
+                  "those of its length", (long long)bound);
     pl_status st = head.status >= PL_OK && head.status <= PL_ERR_NOMEM ? (pl_status)head.status : PL_ERR_INVALID;
     if (!out) return st;
     *out = (bvh){0};
