@@ -131,21 +131,38 @@ typedef struct {
 
 /* ---- running children ---------------------------------------------------------------------- */
 
-/* Every limit a child gets, in one place, each with its reason. Wall-clock limits are per stage;
+/* Every limit of the grader, in one place, each with its reason. Wall-clock limits are per stage;
  * CPU limits per process (RLIMIT_CPU), so a render's threads share its CPU allowance. */
-#define GRADE_BUILD_SECONDS 120          /* one part's build: the course's takes ~15 s on one core */
+/* -- wall clock */
+#define GRADE_COMPILE_SECONDS 60         /* one submitted file's confined compile: a part's takes ~2 s */
+#define GRADE_LINK_SECONDS 120           /* one graded program's link, as root, from the course's objects */
 #define GRADE_COURSE_BUILD_SECONDS 900   /* the course's whole tree, once, trusted: ~60 s on a busy 2 cores */
-#define GRADE_SUITE_SECONDS 300          /* a part's suite: the slowest (part 4) takes ~40 s */
+#define GRADE_SUITE_SECONDS 300          /* a part's suite (a student's own tree, whole; a split suite, all
+                                            its tests): the slowest (part 4) takes ~40 s */
+#define GRADE_TEST_SECONDS 60            /* one test's subject in a split suite; the slowest takes ~8 s */
+#define GRADE_JUDGE_SECONDS 90           /* its judge: it waits for the subject, so it gets longer */
 #define GRADE_RENDER_SECONDS 120         /* one case's render: the slowest takes ~20 s at two threads */
+#define GRADE_INSPECT_SECONDS 120        /* one tool reading the submission's objects (nm, objdump) */
 #define GRADE_CPU_PER_WALL 2             /* CPU seconds per wall second: the grader's two threads */
+/* -- memory, processes, files */
 #define GRADE_COMPILER_MEMORY ((long)1 << 30)   /* cc1 on a part: ~150 MB; `#include "/dev/zero"` stops here */
-#define GRADE_CODE_MEMORY ((long)4 << 30)       /* a render or a suite: the largest case needs ~600 MB */
-#define GRADE_FILE_BYTES ((long)64 << 20)       /* any file a child writes (objects, the legacy XML) */
-#define GRADE_PROCESSES 256              /* the sandbox user's processes and threads: make -j2 and cc1 */
+#define GRADE_CODE_MEMORY ((long)4 << 30)       /* a render, a suite's subject or its judge: the largest
+                                                   case needs ~600 MB */
+#define GRADE_FILE_BYTES ((long)64 << 20)       /* any file a child writes (an object, the legacy XML) */
+#define GRADE_TMP_BYTES ((long)64 << 20)        /* each of a stage's private /tmp, /var/tmp, /dev/shm */
+#define GRADE_PROCESSES 256              /* the sandbox user's processes and threads: cc and its cc1, as */
+/* -- what a submission may hold (grade_build.c's manifest) */
+#define GRADE_SOURCE_FILES 32            /* files in one part's folder: the course's have 2 to 5 */
+#define GRADE_SOURCE_BYTES ((long)1 << 20)   /* one submitted file: the course's largest is ~30 KB */
+#define GRADE_SOURCE_NAME 64             /* characters of a file's name, [a-z0-9_] then .c or .h */
+/* -- what the grader reads back */
 #define GRADE_LOG_MAX (256 * 1024)       /* what the grader keeps of a child's output */
+#define GRADE_TOOL_LOG_MAX (4 << 20)     /* a trusted tool's listing (nm over every object) */
+#define GRADE_SCENE_MAX (64L << 20)      /* a hidden scene copied for its render */
 #define GRADE_ROOT_MAX 1024              /* the course, --out and --submission paths: every path is one of
                                             these and short names, so buffers of 4096 always fit */
 #define GRADE_FILM_MAX ((long)128 << 20) /* a streamed film: 136 bytes a pixel, far above any case */
+#define GRADE_MAX_TESTS 256              /* tests in one suite: the course's largest has ~40 */
 
 /* Formatting into fixed buffers (grade_fmt.c). grade_path: a path, never cut: false (and a line on
  * stderr) when it does not fit, with out emptied; the caller gives up on what the path was for.
@@ -170,11 +187,15 @@ typedef struct {
                                   the child cannot write), cut at log_max bytes; NULL: discarded */
     long log_max;
     char *const *env;          /* extra "NAME=value" entries, NULL-terminated, or NULL */
-    bool untrusted;            /* runs student code: the sandbox's user, limits, namespaces, and the
-                                  seccomp filter from its first instruction (grader/sandbox.h) */
+    bool untrusted;            /* runs student code: the sandbox's user, limits, namespaces, a private
+                                  read-only view with its own /tmp, and the seccomp filter from its
+                                  first instruction (grader/sandbox.h) */
     bool compiler;             /* with untrusted: the compiler or a tool reading student files, running
-                                  none of them: user, limits and namespaces, no filter (make forks) */
+                                  none of them: all of the above but the filter (cc forks cc1 and as) */
     bool writes_files;         /* with untrusted: the filter lets it create files (the XML suite) */
+    const char *writable;      /* with untrusted: the one folder it may write (its output), or NULL */
+    bool bounded;              /* trusted, but reading what student code made (the linker on its
+                                  objects, the judge on its records): the limits, as the grader's user */
     grade_capture *capture;    /* a second channel to the grader, or NULL */
 } grade_run_opts;
 
@@ -189,11 +210,15 @@ typedef struct {
     unsigned uid, gid;         /* nobody's */
     long process_limit;        /* RLIMIT_NPROC for untrusted children (counts the whole user's) */
     bool filter;               /* the seccomp filter is installed before student code runs */
+    const char *dir;           /* the sandbox's folder: the one a stage sees of its /tmp (grade_sandbox_keep) */
     char filter_why[160];      /* why not, when it is not */
 } grade_sandbox;
 
 /* Finds what this machine allows (call once, before any child runs). */
 grade_sandbox grade_sandbox_probe(void);
+/* The sandbox's folder, where every stage's files are: it stays in view when a stage gets a private
+ * /tmp (call before any child runs, with a path that outlives the grading). */
+void grade_sandbox_keep(grade_sandbox *s, const char *dir);
 /* The protections this machine could not give, in words for the report ("" when none is missing). */
 void grade_sandbox_describe(const grade_sandbox *s, char *out, size_t size);
 /* The protections in force, for the staff log ("user nobody, network namespace, seccomp ..."). */

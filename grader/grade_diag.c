@@ -14,8 +14,6 @@
 #include <stdlib.h>
 #include <string.h>
 
-#define DIAG_LOG_MAX (256 * 1024)
-
 /* A header line about the part's own files: "parts/<folder>/<file>:" with no ".." or second slash. */
 static bool own_header(const char *line, const char *own)
 {
@@ -72,7 +70,7 @@ void grade_diagnostics(const char *log, const char *folder, int max_lines, char 
     char *text = NULL, own[300];
     size_t len = 0, used = 0;
     pl_diag diag = pl_diag_default();
-    if (file_read_all(log, "build log", DIAG_LOG_MAX, &text, &len, &diag) != PL_OK) return;
+    if (file_read_all(log, "build log", GRADE_TOOL_LOG_MAX, &text, &len, &diag) != PL_OK) return;
     grade_path(own, sizeof own, "parts/%s/", folder);
     bool keeping = false;  /* inside a kept header's excerpt */
     int kept = 0;

@@ -15,6 +15,7 @@
  * The first violation is reported naming the file and the symbol; the part then scores zero. */
 #include "grade_inspect.h"
 #include "grade.h"
+#include "grade_tree.h"
 #include "../framework/file.h"
 #include <dirent.h>
 #include <stdio.h>
@@ -22,14 +23,14 @@
 #include <string.h>
 #include <sys/stat.h>
 
-#define INSPECT_SECONDS 120
-#define LOG_MAX (4 << 20)
-#define OBJ_DIR "build/release"  /* where the Makefile puts a release build's objects */
+#define OBJ_DIR GRADE_OBJECTS
+#define LOG_MAX GRADE_TOOL_LOG_MAX
 
 static bool run_to(char *const argv[], const char *cwd, const char *log, bool untrusted)
 {
-    grade_run_opts o = {.wall_seconds = INSPECT_SECONDS, .cwd = cwd, .log_path = log, .log_max = LOG_MAX, .untrusted = untrusted,
-                        .compiler = true};
+    /* Trusted tools read the submission's objects too: bounded, when not contained. */
+    grade_run_opts o = {.wall_seconds = GRADE_INSPECT_SECONDS, .cwd = cwd, .log_path = log, .log_max = LOG_MAX,
+                        .untrusted = untrusted, .compiler = true, .bounded = true};
     grade_run_result r = grade_run(argv, &o);
     return r.exited && r.status == 0;
 }

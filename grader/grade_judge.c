@@ -19,33 +19,13 @@
 #include <time.h>
 #include <unistd.h>
 
-#define TEST_SECONDS 60      /* one test's subject; the slowest test takes about 8 s */
-#define JUDGE_SECONDS 90     /* its judge: it waits for the subject, so it gets longer */
-#define SPLIT_SECONDS 300    /* the whole suite */
-#define BUILD_SECONDS 300
-#define LOG_MAX (256 * 1024)
-#define MAX_TESTS 256
 #define NAME_MAX_LEN 128
 #define JUDGE_SEAM_STATUS 3  /* replay.c: the record stream failed on a render's worker thread */
 
 typedef struct {
-    char names[MAX_TESTS][NAME_MAX_LEN];
+    char names[GRADE_MAX_TESTS][NAME_MAX_LEN];
     int count;
 } test_list;
-
-/* The course's judge, built in the course's tree (never the grading tree, whose objects the
- * submission's compiler run could have touched), with the grading tree's flags. */
-static bool build_judge(const grade_env *env, int n, const char *dir, char *judge, size_t size)
-{
-    char target[32], log[4200];
-    snprintf(target, sizeof target, "bin/judge-part%d", n);
-    grade_path(judge, size, "%s/%s", env->root, target);
-    grade_path(log, sizeof log, "%s/judge-build.log", dir);
-    char *argv[] = {"make", "-C", (char *)env->root, "-j2", "--no-print-directory", "LTO=0", "WERROR=0", "SAN=0", target, NULL};
-    grade_run_opts o = {.wall_seconds = BUILD_SECONDS, .log_path = log, .log_max = LOG_MAX};
-    grade_run_result rr = grade_run(argv, &o);
-    return rr.exited && rr.status == 0;
-}
 
 /* The judge's list of its tests (PL_TEST_LIST=1: "  name" lines under each group's). */
 static bool list_tests(const char *judge, const char *root, const char *dir, test_list *list)
@@ -53,7 +33,8 @@ static bool list_tests(const char *judge, const char *root, const char *dir, tes
     char log[4200];
     grade_path(log, sizeof log, "%s/tests.list", dir);
     char *envv[] = {"PL_TEST_LIST=1", NULL}, *argv[] = {(char *)judge, NULL};
-    grade_run_opts o = {.wall_seconds = JUDGE_SECONDS, .cwd = root, .log_path = log, .log_max = LOG_MAX, .env = envv};
+    grade_run_opts o = {.wall_seconds = GRADE_JUDGE_SECONDS, .cwd = root, .log_path = log, .log_max = GRADE_LOG_MAX,
+                        .env = envv, .bounded = true};
     grade_run_result rr = grade_run(argv, &o);
     FILE *f = rr.exited && rr.status == 0 ? fopen(log, "r") : NULL;
     list->count = 0;
@@ -63,7 +44,7 @@ static bool list_tests(const char *judge, const char *root, const char *dir, tes
         line[len] = '\0';
         if (strncmp(line, "  ", 2) || len - 2 >= NAME_MAX_LEN || strspn(line + 2, "abcdefghijklmnopqrstuvwxyzABCDEFGHIJKLMNOPQRSTUVWXYZ0123456789_") != len - 2)
             continue;
-        if (list->count < MAX_TESTS) memcpy(list->names[list->count++], line + 2, len - 1);  /* len - 2 < NAME_MAX_LEN, and its NUL */
+        if (list->count < GRADE_MAX_TESTS) memcpy(list->names[list->count++], line + 2, len - 1);  /* len - 2 < NAME_MAX_LEN, and its NUL */
     }
     if (f) fclose(f);
     return list->count > 0;
@@ -93,8 +74,8 @@ static pid_t start_subject(const char *tree, int n, const char *name, const char
     grade_path(log, sizeof log, "%s/subject-%d.log", dir, k);
     grade_path(filter, sizeof filter, "PL_TEST_FILTER=%s", name);
     char *envv[] = {filter, "PL_SEAM_FD=3", NULL}, *argv[] = {bin, NULL};
-    grade_run_opts o = {.wall_seconds = TEST_SECONDS, .cwd = tree, .log_path = log, .log_max = LOG_MAX, .env = envv,
-                        .untrusted = true};
+    grade_run_opts o = {.wall_seconds = GRADE_TEST_SECONDS, .cwd = tree, .log_path = log, .log_max = GRADE_LOG_MAX,
+                        .env = envv, .untrusted = true};
     grade_run_piped(argv, &o, 0, record_fd);
     _exit(0);
 }
@@ -115,8 +96,9 @@ static void run_test(const grade_env *env, const char *tree, const char *judge, 
         pid_t helper = start_subject(tree, n, name, dir, k, fds[1]);
         close(fds[1]);
         char *envv[] = {filter, "PL_SEAM_FD=0", "CMOCKA_MESSAGE_OUTPUT=xml", xml_env, NULL}, *argv[] = {(char *)judge, NULL};
-        grade_run_opts o = {.wall_seconds = JUDGE_SECONDS, .cwd = env->root, .log_path = log, .log_max = LOG_MAX,
-                            .env = envv};
+        /* The judge is the course's code, but it parses what the subject sent: bounded like it. */
+        grade_run_opts o = {.wall_seconds = GRADE_JUDGE_SECONDS, .cwd = env->root, .log_path = log,
+                            .log_max = GRADE_LOG_MAX, .env = envv, .bounded = true};
         if (helper > 0) rr = grade_run_piped(argv, &o, fds[0], 0);
         close(fds[0]);
         if (helper > 0) waitpid(helper, NULL, 0);
@@ -150,10 +132,13 @@ void grade_judge_suite(const grade_env *env, const char *tree, const grade_part_
         grade_msg(r->suite_reason, sizeof r->suite_reason, "cannot create %s", dir);
         return;
     }
+    /* The course's judge, built with the course's objects before any student code ran
+     * (grade_tree_course_build), never in a grading tree. */
     static test_list list;
-    if (!build_judge(env, p->part, dir, judge, sizeof judge) || !list_tests(judge, env->root, dir, &list)) {
-        grade_msg(r->suite_reason, sizeof r->suite_reason, "the course's judge of part %d does not build or run "
-                 "(see %s/judge-build.log): the course's problem, please tell the staff", p->part, dir);
+    grade_path(judge, sizeof judge, "%s/course/bin/judge-part%d", env->work, p->part);
+    if (!list_tests(judge, env->root, dir, &list)) {
+        grade_msg(r->suite_reason, sizeof r->suite_reason, "the course's judge of part %d does not run (see "
+                 "%s/tests.list): the course's problem, please tell the staff", p->part, dir);
         return;
     }
     if (list.count != p->unit_tests) {
@@ -163,8 +148,8 @@ void grade_judge_suite(const grade_env *env, const char *tree, const grade_part_
     }
     double t0 = clock_seconds();
     for (int k = 0; k < list.count; k++) {
-        if (clock_seconds() - t0 > SPLIT_SECONDS) {
-            grade_msg(r->suite_reason, sizeof r->suite_reason, "the suite ran past %d s (%d of %d tests run)", SPLIT_SECONDS,
+        if (clock_seconds() - t0 > GRADE_SUITE_SECONDS) {
+            grade_msg(r->suite_reason, sizeof r->suite_reason, "the suite ran past %d s (%d of %d tests run)", GRADE_SUITE_SECONDS,
                      k, list.count);
             break;
         }

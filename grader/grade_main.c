@@ -142,7 +142,7 @@ static bool make_dir(const char *path)
 static bool make_sandbox_dir(char *out, size_t size)
 {
     const char *tmp = getenv("TMPDIR") && getenv("TMPDIR")[0] == '/' ? getenv("TMPDIR") : "/tmp";
-    grade_path(out, size, "%s/pathlab-sandbox.XXXXXX", tmp);
+    grade_path(out, size, "%s/" GRADE_SANDBOX_NAME "XXXXXX", tmp);
     return mkdtemp(out) && chmod(out, 0711) == 0;
 }
 
@@ -335,6 +335,7 @@ int main(int argc, char **argv)
     grade_env env = {.root = f.root, .submission = a.submission ? f.submission : NULL, .work = f.work,
                      .sandbox_dir = sandbox_dir, .report = f.report, .public_only = a.public_only, .seed = result.seed,
                      .threads = a.threads, .sandbox = grade_sandbox_probe()};
+    grade_sandbox_keep(&env.sandbox, sandbox_dir);
     /* Before any child runs: the grader's own set-up, and the answers out of the children's reach. */
     char why[512] = "";
     bool set_up = !a.submission || setup_ok(&env, f.outdir, a.parts, why, sizeof why);

@@ -1,5 +1,6 @@
 /* Grader machinery: not part of any assignment. One part: its tree, its suite, its image cases. */
 #include "grade.h"
+#include "grade_build.h"
 #include "grade_image.h"
 #include "grade_guard.h"
 #include "grade_inspect.h"
@@ -18,52 +19,29 @@
 #include <string.h>
 #include <sys/stat.h>
 
-#define SUITE_SECONDS GRADE_SUITE_SECONDS
-#define LOG_MAX GRADE_LOG_MAX
-#define XML_MAX (4L << 20)        /* a suite's results file: far more than 100 tests need */
 #define BUILD_TAIL_LINES 40       /* of a failed build's output, shown in the report */
 
-/* The build's verdict when it failed, in the grader's words: what limit it ran past, or that it
- * does not compile (the compiler's own lines for the part's files are shown beside it). */
-static void build_verdict(const grade_run_result *rr, int n, const char *raw, grade_part_result *r)
+/* A student's own tree (make grade): built by its own make, as they build it, with the course's
+ * warnings whatever they exported and no sanitizer, so `make grade` and `make` share every object.
+ * Their own code, on their own machine: nothing here is confined (a submission is built by
+ * grade_build.c instead). */
+static bool build_own_tree(const grade_env *env, int n, grade_part_result *r)
 {
-    if (rr->timed_out) grade_msg(r->suite_reason, sizeof r->suite_reason, "part %d's build ran past %d s", n, GRADE_BUILD_SECONDS);
-    else if (rr->output_cut)
-        grade_msg(r->suite_reason, sizeof r->suite_reason, "part %d's build printed more than %d KiB", n, GRADE_LOG_MAX / 1024);
-    else if (strstr(raw, "out of memory") || strstr(raw, "memory exhausted") || strstr(raw, "Killed signal"))
-        grade_msg(r->suite_reason, sizeof r->suite_reason, "part %d's build ran past its memory limit (%ld MiB)", n,
-                 GRADE_COMPILER_MEMORY >> 20);
-    else if (!rr->exited)
-        grade_msg(r->suite_reason, sizeof r->suite_reason, "part %d's build was stopped: it ran past its CPU time or "
-                 "another limit", n);
-}
-
-static bool build(const grade_env *env, const char *tree, int n, grade_part_result *r)
-{
-    char target[32], subject[32], sources[8192] = "PARTS_SRC=";
+    char target[32];
     snprintf(target, sizeof target, "bin/test-part%d", n);
-    snprintf(subject, sizeof subject, "bin/subject-part%d", n);  /* the split suite's half (grade_judge.c) */
     grade_path(r->build_log, sizeof r->build_log, "%s/part%d/build.log", env->work, n);
-    if (env->submission && !grade_tree_sources(env, tree, n, sources, sizeof sources)) return false;
-    /* GRADE_MAKE_ARGS: LTO=0 (the objects hold machine code, and the allow-list reads the very files
-     * linked; ld --wrap sees every call), WERROR=0 SAN=0 whatever the grader's caller exported. */
-    char *argv[] = {"make", "-C", (char *)tree, GRADE_MAKE_ARGS, "bin/pathtracer", target,
-                    env->submission ? sources : NULL, subject, NULL};
-    /* The compiler reads student files (#include, .incbin): it runs as the sandbox's user, with limits. */
-    grade_run_opts o = {.wall_seconds = GRADE_BUILD_SECONDS, .log_path = r->build_log, .log_max = GRADE_LOG_MAX,
-                        .untrusted = env->submission != NULL, .compiler = true};
+    char *argv[] = {"make", "-C", (char *)env->root, "-j2", "--no-print-directory", "WERROR=0", "SAN=0", "bin/pathtracer",
+                    target, NULL};
+    grade_run_opts o = {.wall_seconds = GRADE_COURSE_BUILD_SECONDS, .log_path = r->build_log, .log_max = GRADE_LOG_MAX};
     grade_run_result rr = grade_run(argv, &o);
     bool ok = rr.exited && rr.status == 0;
     if (!ok) {
         char folder[256] = "";
         grade_part_folder(env->root, n, folder, sizeof folder);
-        char raw[sizeof r->build_output];  /* the limit's traces, before the filter drops make's lines */
-        grade_log_tail(r->build_log, BUILD_TAIL_LINES, raw, sizeof raw);
         grade_diagnostics(r->build_log, folder, BUILD_TAIL_LINES, r->build_output, sizeof r->build_output);
-        build_verdict(&rr, n, raw, r);
+        if (!rr.exited) grade_run_describe(&rr, r->suite_reason, sizeof r->suite_reason);
     }
-    /* What was built and inspected is what runs: the child's user may no longer change it. */
-    return ok && (!env->submission || grade_tree_seal(env, tree));
+    return ok;
 }
 
 /* make's quiet progress lines ("  CC     framework/rng.c"): no help in finding the error. */
@@ -155,8 +133,8 @@ static void run_suite(const grade_env *env, const char *tree, const grade_part_s
     grade_path(bin, sizeof bin, "%s/bin/test-part%d", tree, p->part);
     char *envv[] = {"CMOCKA_MESSAGE_OUTPUT=xml", xml_env, NULL};
     char *argv[] = {bin, NULL};
-    grade_run_opts o = {.wall_seconds = SUITE_SECONDS, .cwd = tree, .log_path = log, .log_max = LOG_MAX, .env = envv,
-                        .untrusted = contained, .writes_files = true};
+    grade_run_opts o = {.wall_seconds = GRADE_SUITE_SECONDS, .cwd = tree, .log_path = log, .log_max = GRADE_LOG_MAX,
+                        .env = envv, .untrusted = contained, .writes_files = true, .writable = dir};
     grade_run_result rr = grade_run(argv, &o);
 
     /* A suite that crashed or timed out scores zero, whatever files it left. */
@@ -221,13 +199,13 @@ static void list_cases(const grade_env *env, const grade_part_spec *p, grade_par
 
 /* Built, and (a submission's) keeping to the allow-list before any of it runs; else the reason is
  * in r->suite_reason and every case's. */
-static bool ready(const grade_env *env, char *tree, int part, grade_part_result *r)
+static bool ready(const grade_env *env, const char *tree, int part, grade_part_result *r)
 {
     char dir[4096], folder[256], why[sizeof r->suite_reason];
     grade_path(dir, sizeof dir, "%s/part%d", env->work, part);
     if (!grade_part_dirs(env, part)) grade_msg(r->suite_reason, sizeof r->suite_reason, "cannot create %s", dir);
-    r->built = !r->suite_reason[0] && (!env->submission || grade_tree_make(env, part, tree, 4096, r)) &&
-               build(env, tree, part, r);
+    r->built = !r->suite_reason[0] &&
+               (env->submission ? grade_build_submission(env, part, tree, r) : build_own_tree(env, part, r));
     if (!r->built && !r->suite_reason[0]) grade_msg(r->suite_reason, sizeof r->suite_reason, "the part does not build");
     if (r->built && env->submission && grade_part_folder(env->root, part, folder, sizeof folder) &&
         !grade_inspect_part(tree, folder, dir, true, why, sizeof why))
@@ -241,7 +219,11 @@ void grade_part(const grade_env *env, const grade_spec *spec, const grade_part_s
 {
     list_cases(env, p, r);
     char tree[4096], suite[4200];
-    grade_path(tree, sizeof tree, "%s", env->root);  /* a student's own tree; grade_tree_make sets a submission's */
+    /* A student's own tree is graded where it is; a submission's part is built into a tree of its
+     * own in the sandbox's folder, removed below. (Never the other way round: the tree removed is
+     * always that one, whatever failed.) */
+    if (env->submission) grade_path(tree, sizeof tree, "%s/part%d", env->sandbox_dir, p->part);
+    else grade_path(tree, sizeof tree, "%s", env->root);
     if (ready(env, tree, p->part, r)) {
         sweep_hook(env, tree, p->part);
         /* A submission's verdicts come from the course's judge (grade_judge.c), never from a process

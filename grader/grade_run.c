@@ -68,6 +68,11 @@ grade_sandbox grade_sandbox_probe(void)
     return sandbox;
 }
 
+void grade_sandbox_keep(grade_sandbox *s, const char *dir)
+{
+    s->dir = sandbox.dir = dir;
+}
+
 void grade_sandbox_describe(const grade_sandbox *s, char *out, size_t size)
 {
     snprintf(out, size, "%s%s%s%s", s->as_other_user ? "" : "not root: student code ran as your own user, "
@@ -80,13 +85,18 @@ void grade_sandbox_describe(const grade_sandbox *s, char *out, size_t size)
 
 void grade_sandbox_in_force(const grade_sandbox *s, char *out, size_t size)
 {
-    char filter[64];
+    char filter[64], view[256];
     sandbox_filter_name(filter, sizeof filter);
+    if (s->isolated)
+        snprintf(view, sizeof view, "PID and mount namespaces: own /proc, all read-only but a stage's output, private "
+                                    "/tmp, /var/tmp and /dev/shm of %ld MiB each", GRADE_TMP_BYTES >> 20);
+    else
+        snprintf(view, sizeof view, "no PID or mount namespace: the shared /tmp, /var/tmp and /dev/shm are swept of "
+                                    "the sandbox user's files after each stage, and bounded only per file");
     snprintf(out, size, "%s; %s; %s; %s; limits: wall, CPU, address space (%ld MiB code, %ld MiB compiler), "
                         "%ld processes, files of %ld MiB, output cut at %d KiB; orphans killed",
              s->as_other_user ? "student code as user nobody" : "student code as the grader's own user",
-             s->no_network ? "network namespace" : "no network namespace",
-             s->isolated ? "PID and mount namespaces (own /proc)" : "no PID or mount namespace",
+             s->no_network ? "network namespace" : "no network namespace", view,
              s->filter ? filter : "no system-call filter", GRADE_CODE_MEMORY >> 20, GRADE_COMPILER_MEMORY >> 20,
              (long)GRADE_PROCESSES, GRADE_FILE_BYTES >> 20, GRADE_LOG_MAX / 1024);
 }
@@ -100,8 +110,8 @@ static void set_limit(int resource, rlim_t value)
     setrlimit(resource, &l);
 }
 
-/* The limits and the drop to the sandbox's user, for a child that runs or compiles student code. */
-static void confine(const grade_run_opts *o)
+/* CPU time and memory, for every child that runs student code or reads what it made. */
+static void stage_limits(const grade_run_opts *o)
 {
     set_limit(RLIMIT_CPU, (rlim_t)(o->wall_seconds * GRADE_CPU_PER_WALL) + 5);
 #ifndef __SANITIZE_ADDRESS__
@@ -109,12 +119,24 @@ static void confine(const grade_run_opts *o)
      * with terabytes of shadow reserved, and could not allocate the filter under any limit.) */
     set_limit(RLIMIT_AS, (rlim_t)(o->compiler ? GRADE_COMPILER_MEMORY : GRADE_CODE_MEMORY));
 #endif
+}
+
+/* The limits, the namespaces, the private view and the drop to the sandbox's user, for a child
+ * that runs or compiles student code. */
+static void confine(const grade_run_opts *o)
+{
+    stage_limits(o);
     set_limit(RLIMIT_NOFILE, SANDBOX_EXEC_FD + 1);  /* sandbox_exec lowers it by one more */
 #ifdef __linux__
     if (sandbox.no_network && unshare(CLONE_NEWNET | CLONE_NEWIPC) != 0) _exit(126);
 #endif
-    /* Still root: from here on the process that continues is inside new PID and mount namespaces. */
-    if (sandbox.isolated) sandbox_isolate();
+    /* Still root: from here on the process that continues is inside new PID and mount namespaces,
+     * where it sees everything read-only but its output, and /tmp, /var/tmp, /dev/shm of its own. */
+    if (sandbox.isolated) {
+        sandbox_isolate();
+        if (!sandbox_private_view(sandbox.dir, o->writable, GRADE_TMP_BYTES) || (o->cwd && chdir(o->cwd) != 0))
+            _exit(126);
+    }
     if (sandbox.as_other_user) {
         /* Drop every privilege for good: groups, then gid, then uid (the order matters). */
         if (setgroups(0, NULL) != 0 || setgid(sandbox.gid) != 0 || setuid(sandbox.uid) != 0) _exit(126);
@@ -148,6 +170,7 @@ static void child_setup(const grade_run_opts *o, int out_fd, int capture_fd, int
     if (o->untrusted) environ = clean;
     for (char *const *e = o->env; e && *e; e++) putenv(*e);
     if (o->untrusted) confine(o);
+    else if (o->bounded) stage_limits(o);
 }
 
 /* The log, created by the grader: a fresh file (O_EXCL), never a name the child planted (a symlink
@@ -277,6 +300,8 @@ grade_run_result grade_run_piped(char *const argv[], const grade_run_opts *o, in
      * test-autograder's do). Only after an untrusted child: the course's own children may run side
      * by side (the reference maker's threads, the judge beside its subject), and this would kill them. */
     if (o->untrusted) sandbox_kill_orphans();
+    /* Without a mount namespace the stage shared /tmp: what its user left there goes now. */
+    if (o->untrusted && sandbox.as_other_user && !sandbox.isolated) sandbox_clean_shared_tmp(sandbox.uid);
     close(fds[0]);
     if (cap[0] >= 0) close(cap[0]);
     close(log_fd);

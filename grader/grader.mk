@@ -21,6 +21,24 @@ $(BIN)/grade: $(BUILD)/grader/grade_main.o $(GRADER_OBJ) $(GRADER_FRAMEWORK_OBJ)
 	@mkdir -p $(dir $@)
 	$(Q)$(CC) $(LDFLAGS) -o $@ $^ $(LDLIBS) $(GRADER_LIBS)
 
+# The graded build's recipes, as data (grader/grade_build.c reads them): the compiler, the flags a
+# part's file is compiled with, and each graded program's link line. bin/grade builds a submission
+# from them without make or a shell: a submitted name never reaches a command anything interprets.
+# Written in the course's own tree, by the course's make, before any student code is seen.
+GRADE_RECIPES := $(BUILD)/grade-recipes.txt
+comma        := ,
+grade_link   = link $(1) $(LDFLAGS) -o $(1) $(2) $(LDLIBS) $(3)
+$(GRADE_RECIPES): FORCE
+	@mkdir -p $(dir $@)
+	@{ echo 'cc $(CC)'; \
+	   echo 'objects $(BUILD)'; \
+	   echo 'compile $(filter-out -MMD -MP,$(CPPFLAGS)) $(CFLAGS)'; \
+	   echo '$(call grade_link,$(BIN)/pathtracer,$(BUILD)/framework/main.o $(LIB_OBJ))'; \
+	   $(foreach n,1 2 3 4 5,\
+	   echo '$(call grade_link,$(BIN)/test-part$(n),$(call suite_obj,part$(n)) $(COMMON_OBJ) $(LIB_OBJ),$(shell pkg-config --libs $(TPKGS)))'; \
+	   echo '$(call grade_link,$(BIN)/subject-part$(n),$(foreach f,$(call part_fns,$(n)),-Wl$(comma)--wrap=$(f)) $(call suite_obj,part$(n)) $(COMMON_OBJ) $(LIB_OBJ) $(call seam_obj,subject,record,$(n)),$(shell pkg-config --libs $(TPKGS)))';) \
+	 } >$@.tmp && mv $@.tmp $@
+
 # The sandbox's self-test: tries what the filter forbids, and sweeps folders for secret bytes.
 $(BIN)/grade-probe: $(BUILD)/grader/probe_main.o
 	$(say) LD $@

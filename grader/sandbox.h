@@ -36,6 +36,18 @@ bool sandbox_isolation_supported(void);
  * a step fails (the probe found them, so this is not expected). */
 void sandbox_isolate(void);
 
+/* In the child sandbox_isolate returned to, still privileged: the stage's private view of the file
+ * system. Everything becomes read-only; /tmp, /var/tmp and /dev/shm become fresh tmpfs of tmp_bytes
+ * each, which vanish with the namespace; `keep` (the sandbox's folder, which may sit under /tmp)
+ * stays where it is, read-only; `writable` (NULL: none), a folder under it, is the one place the
+ * stage may write. False when a step was refused (the caller ends the child: _exit(126)). */
+bool sandbox_private_view(const char *keep, const char *writable, long tmp_bytes);
+
+/* Without namespaces: removes what the sandbox's user (uid) left at the top of /tmp, /var/tmp and
+ * /dev/shm, so that nothing a stage wrote there survives it (the stage's only way to write there is
+ * the compiler's temporary files; the filter forbids creating files to student code). */
+void sandbox_clean_shared_tmp(unsigned uid);
+
 /* The grader adopts every orphan of its children (Linux: a subreaper), so none can escape. */
 void sandbox_adopt_orphans(void);
 /* Kills and reaps every descendant the grader adopted, e.g. a grandchild that called setsid. */

@@ -35,6 +35,7 @@
 #include <sched.h>
 #include <sys/ioctl.h>
 #include <sys/mount.h>
+#include <sys/stat.h>
 #include <sys/prctl.h>
 #include <sys/resource.h>
 #include <sys/syscall.h>
@@ -236,6 +237,82 @@ void sandbox_isolate(void)
     if (worker < 0) _exit(126);
     if (worker > 0) init_process(worker, link[1]);
     close(link[1]);
+}
+
+/* ---- a stage's private view of the file system ------------------------------------------------ */
+
+/* The folders every user may write: each stage gets its own, empty and bounded. */
+static const char *const shared_tmp[] = {"/tmp", "/var/tmp", "/dev/shm"};
+
+/* Whether path is dir or below it. */
+static bool inside(const char *path, const char *dir)
+{
+    size_t n = strlen(dir);
+    return !strncmp(path, dir, n) && (path[n] == '/' || path[n] == '\0');
+}
+
+/* mkdir -p, as root inside the stage's own tmpfs (the mount point `keep` goes back to). */
+static bool make_path(const char *path)
+{
+    char buf[4096];
+    if (snprintf(buf, sizeof buf, "%s", path) >= (int)sizeof buf) return false;
+    for (char *p = buf + 1;; p++)
+        if (*p == '/' || *p == '\0') {
+            char c = *p;
+            *p = '\0';
+            if (mkdir(buf, 0755) != 0 && errno != EEXIST) return false;
+            if (!c) return true;
+            *p = c;
+        }
+}
+
+bool sandbox_private_view(const char *keep, const char *writable, long tmp_bytes)
+{
+    /* `keep` is taken first, as a detached copy of its mount: the tmpfs below may cover its path. */
+    int kept = keep ? (int)open_tree(AT_FDCWD, keep, OPEN_TREE_CLONE | OPEN_TREE_CLOEXEC | AT_RECURSIVE) : -1;
+    if (keep && kept < 0) return false;
+    struct mount_attr ro = {.attr_set = MOUNT_ATTR_RDONLY | MOUNT_ATTR_NOSUID};
+    bool ok = mount_setattr(AT_FDCWD, "/", AT_RECURSIVE, &ro, sizeof ro) == 0;
+    char options[64];
+    snprintf(options, sizeof options, "size=%ld,mode=1777", tmp_bytes);
+    bool covered = false;
+    for (size_t i = 0; ok && i < sizeof shared_tmp / sizeof shared_tmp[0]; i++) {
+        struct stat st;
+        if (stat(shared_tmp[i], &st) != 0 || !S_ISDIR(st.st_mode)) continue;
+        ok = mount("tmpfs", shared_tmp[i], "tmpfs", MS_NOSUID | MS_NODEV, options) == 0;
+        covered = covered || (keep && inside(keep, shared_tmp[i]));
+    }
+    /* The sandbox's folder back at its own path, read-only like the rest. */
+    if (ok && covered)
+        ok = make_path(keep) && mount_setattr(kept, "", AT_EMPTY_PATH | AT_RECURSIVE, &ro, sizeof ro) == 0 &&
+             move_mount(kept, "", AT_FDCWD, keep, MOVE_MOUNT_F_EMPTY_PATH) == 0;
+    if (kept >= 0) close(kept);
+    /* The stage's output: a bind mount of its folder, the one mount made writable again. */
+    struct mount_attr rw = {.attr_clr = MOUNT_ATTR_RDONLY};
+    if (ok && writable)
+        ok = mount(writable, writable, NULL, MS_BIND, NULL) == 0 && mount_setattr(AT_FDCWD, writable, 0, &rw, sizeof rw) == 0;
+    return ok;
+}
+
+void sandbox_clean_shared_tmp(unsigned uid)
+{
+    for (size_t i = 0; i < sizeof shared_tmp / sizeof shared_tmp[0]; i++) {
+        DIR *d = opendir(shared_tmp[i]);
+        for (struct dirent *e; d && (e = readdir(d));) {
+            char path[4096];
+            struct stat st;
+            if (!strcmp(e->d_name, ".") || !strcmp(e->d_name, "..")) continue;
+            grade_path(path, sizeof path, "%s/%s", shared_tmp[i], e->d_name);
+            if (lstat(path, &st) != 0 || st.st_uid != uid) continue;
+            pid_t pid = fork();  /* rm never follows a link it deletes */
+            if (pid == 0) {
+                execlp("rm", "rm", "-rf", "--", path, (char *)NULL);
+                _exit(127);
+            }
+            if (pid > 0) waitpid(pid, NULL, 0);
+        }
+        if (d) closedir(d);
+    }
 }
 
 void sandbox_adopt_orphans(void)

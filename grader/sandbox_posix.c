@@ -32,6 +32,14 @@ bool sandbox_isolation_supported(void) { return false; }
 
 void sandbox_isolate(void) {}
 
+bool sandbox_private_view(const char *keep, const char *writable, long tmp_bytes)
+{
+    (void)keep, (void)writable, (void)tmp_bytes;
+    return false;
+}
+
+void sandbox_clean_shared_tmp(unsigned uid) { (void)uid; }
+
 void sandbox_adopt_orphans(void) {}
 
 void sandbox_kill_orphans(void)
