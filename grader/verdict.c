@@ -106,17 +106,51 @@ static void find_hint(verdict *v, const verdict_image *cand, const verdict_image
     }
 }
 
-/* The predicted variance of one difference d = candidate - reference, known_variance only:
- * Var(candidate) + Var(reference), the first from the reference's per-sample variance (its variance
- * of the mean times its samples) over the candidate's samples. Where the reference's samples all
- * agreed, coverage is a Bernoulli event it did not see: the candidate's own variance of the mean
- * stands in (verdict.h). Plus the rounding of two correct implementations (VERDICT_ROUNDING_SD). */
-static double pixel_variance(const verdict_params *p, double ref_var, double cand_var)
+/* The largest value of the reference's 3x3 neighbourhood of pixel (x, y), in channel ch. */
+static double local_max(const verdict_image *ref, int x, int y, int ch)
 {
-    double per_sample = ref_var * p->reference_spp;
-    double var = per_sample <= VERDICT_NO_SPREAD * VERDICT_NO_SPREAD
-                     ? fmax(cand_var, 0.0) + ref_var
-                     : ref_var * ((double)p->reference_spp / p->candidate_spp + 1.0);
+    double m = 0.0;
+    for (int j = y > 0 ? y - 1 : 0; j <= y + 1 && j < ref->height; j++)
+        for (int i = x > 0 ? x - 1 : 0; i <= x + 1 && i < ref->width; i++)
+            m = fmax(m, (double)ref->rgb[3 * ((long)j * ref->width + i) + ch]);
+    return m;
+}
+
+/* The predicted variance of one difference d = candidate - reference at pixel (x, y), channel ch,
+ * known_variance only: Var(candidate) + Var(reference), the first from the reference's per-sample
+ * variance (its variance of the mean times its samples) over the candidate's samples, plus the
+ * rounding of two correct implementations (VERDICT_ROUNDING_SD).
+ * Where the reference's samples all agreed, coverage is a Bernoulli event it did not see, and the
+ * z test must not give p = 0 for one candidate sample that hit the sliver (verdict.h). The
+ * candidate's own variance of the mean says what its hits weigh, but it is the candidate's number
+ * (a forged film claims any sum of squares), so it counts only up to a bound from the reference's
+ * side and the course's sample count:
+ * - the reference bounds the chance of a hit: all reference_spp samples missed, so it is about
+ *   1 / (reference_spp + 1) or less; a candidate's n samples then hit at most once, bar chance, and
+ *   its mean moves by steps of 1/n of the contrast. A z test of so rare an event is honest only
+ *   when that one step weighs about one standard deviation, so the bound is the variance of the
+ *   mean of a Bernoulli with p = 1/n: p (1 - p) / n times the contrast squared, what one hit in n
+ *   weighs (a bound of p = 1 / (reference_spp + 1) made one hit z = sqrt(reference_spp / n), 8 at
+ *   1024 and 16: p = 0 again);
+ * - the contrast: samples are non-negative, so a hit and a miss differ by at most the larger of
+ *   their values: the pixel's own, or that of the surface the hit found, which borders the pixel and
+ *   so shows in its neighbourhood (local_max, the 3x3 maximum, the pixel included).
+ * So an honest candidate keeps its own variance (zero on flat faces: the strict floor), and a forged
+ * one buys at most one hit's worth per pixel: a block off by that everywhere still has z = sqrt(m)
+ * over its m pixels, and a flat grey forged over a black or white face, no leniency at all. */
+static double pixel_variance(const verdict_params *p, const verdict_image *ref, const verdict_image *cand, int x,
+                             int y, int ch)
+{
+    long k = 3 * ((long)y * ref->width + x) + ch;
+    double ref_var = ref->var[k], per_sample = ref_var * p->reference_spp, var;
+    if (per_sample > VERDICT_NO_SPREAD * VERDICT_NO_SPREAD)
+        var = ref_var * ((double)p->reference_spp / p->candidate_spp + 1.0);
+    else {
+        double n = p->candidate_spp, contrast = local_max(ref, x, y, ch);
+        double one_hit = (1.0 / n) * (1.0 - 1.0 / n) / n * contrast * contrast;
+        double cand_var = cand->var && cand->var[k] > 0.0 ? cand->var[k] : 0.0;  /* NaN: none */
+        var = fmin(cand_var, one_hit) + ref_var;
+    }
     return var + VERDICT_ROUNDING_SD * VERDICT_ROUNDING_SD;
 }
 
@@ -168,9 +202,7 @@ static void scan_pixels(verdict *v, const verdict_image *cand, const verdict_ima
             if (p->deterministic) v->beyond_tolerance += compare_pixel(v, c, r, x, h - 1 - y, block);
             for (int ch = 0; ch < 3; ch++) {
                 double d = (double)c[ch] - (double)r[ch];
-                double var = p->known_variance && ref->var
-                                 ? pixel_variance(p, ref->var[3 * i + ch], cand->var ? cand->var[3 * i + ch] : 0.0)
-                                 : 0.0;
+                double var = p->known_variance && ref->var ? pixel_variance(p, ref, cand, x, y, ch) : 0.0;
                 diff_add(&acc[block * 3 + ch], d, r[ch], var);
                 diff_add(&whole[ch], d, r[ch], var);
                 cand_total[ch] += c[ch];

@@ -58,7 +58,8 @@ typedef struct {
     int width, height;
     const float *rgb;  /* width * height * 3 linear means, top row first; not owned */
     const float *var;  /* the same layout: each mean's variance (NULL if unknown); the candidate's
-                          is used only where the reference's is zero (known_variance, below) */
+                          is used only where the reference's is zero, and only up to a bound of the
+                          reference's (known_variance, below) */
 } verdict_image;
 
 typedef struct {
@@ -73,8 +74,11 @@ typedef struct {
      * a poor estimate and t with m - 1 degrees of freedom rejects far too often.
      * Coverage at an edge is a Bernoulli event: a sliver that the reference's samples all missed
      * (zero variance) may be hit by a candidate sample. Such a pixel takes the candidate's own
-     * variance of the mean instead (cand->var), which is what that one hit weighs: never p = 0 for
-     * a difference the reference could not predict, and no leniency where the reference varies. */
+     * variance of the mean instead (cand->var), which is what that one hit weighs, but never more
+     * than one hit in candidate_spp samples could weigh against the brightest value of the
+     * reference's neighbourhood (verdict.c, pixel_variance): never p = 0 for a difference the
+     * reference could not predict, no leniency where the reference varies, and no statistic the
+     * candidate supplies loosens its own test beyond the reference's bound. */
     bool known_variance;
     int reference_spp;
     /* The case is lit at grazing angles (its "grazing" field): a candidate that fails dark there

@@ -383,7 +383,7 @@ static void test_verdict__deterministic_fails_flips_shifts_scales_and_wrong_norm
  * probability (1e-5 to 1e-4), so the reference's 1024 samples almost always all miss it (zero
  * variance) while a candidate's 16 now and then hit it. Such a pixel must weigh what one Bernoulli
  * hit weighs, never p = 0: the verdict uses the candidate's own variance where the reference's is
- * zero. Alpha: the case's 1e-3; at most 3 of RUNS fail (6e-5 at that alpha). Fixed seeds
+ * zero, up to what one hit in SPP weighs against the reference's neighbourhood. Alpha: the case's 1e-3; at most 3 of RUNS fail (6e-5 at that alpha). Fixed seeds
  * (base_seed). Without the candidate's variance most renders fail; a coverage 0.05 too high fails. */
 static float sliver_coverage(int x, int y)
 {
@@ -445,6 +445,36 @@ static void test_verdict__known_variance_models_coverage_the_reference_missed(vo
     free(cand_var);
 }
 
+/* A forged film: flat grey where the reference is a sharp black and white edge whose samples never
+ * varied, with an enormous claimed sum of squares. Where the reference saw no spread the verdict
+ * takes the candidate's variance only up to what one hit weighs against the reference's
+ * neighbourhood, so the claim buys nothing: the film fails (it passed at p = 1 when the candidate's
+ * variance counted whole). */
+static void test_verdict__known_variance_ignores_a_forged_variance(void **state)
+{
+    (void)state;
+    float *ref = malloc(sizeof(float) * 3 * W * H), *ref_var = calloc((size_t)3 * W * H, sizeof(float));
+    float *cand = malloc(sizeof(float) * 3 * W * H), *cand_var = malloc(sizeof(float) * 3 * W * H);
+    assert_true(ref && ref_var && cand && cand_var);
+    for (int i = 0; i < 3 * W * H; i++) {
+        ref[i] = i / 3 % W < W / 2 ? 0.0f : 1.0f;
+        cand[i] = 0.5f;
+        cand_var[i] = 1e30f;
+    }
+    verdict_image c = {W, H, cand, cand_var}, r = {W, H, ref, ref_var};
+    verdict_params p = verdict_params_default(SPP);
+    p.known_variance = true;
+    p.reference_spp = EDGE_REF_SPP;
+    verdict v;
+    assert_int_equal(verdict_compute(&c, &r, &p, &v, NULL), PL_OK);
+    if (v.pass) fail_msg("a flat grey film with a forged variance passed (p = %g)", v.p_value);
+    verdict_free(&v);
+    free(ref);
+    free(ref_var);
+    free(cand);
+    free(cand_var);
+}
+
 /* ---- the noise check: as noisy as the course's render, not more --------------------------------- */
 
 /* Per-sample variances: the reference's v everywhere; a candidate equal to it but for one firefly
@@ -491,6 +521,7 @@ int verdict_tests(void)
         cmocka_unit_test(test_verdict__deterministic_tolerates_rounding_and_ties),
         cmocka_unit_test(test_verdict__deterministic_fails_flips_shifts_scales_and_wrong_normals),
         cmocka_unit_test(test_verdict__known_variance_models_coverage_the_reference_missed),
+        cmocka_unit_test(test_verdict__known_variance_ignores_a_forged_variance),
         cmocka_unit_test(test_verdict__noise_ratio_sees_extra_noise_not_one_firefly),
     };
     return cmocka_run_group_tests_name("verdict", tests, make_reference, free_reference);
