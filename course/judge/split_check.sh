@@ -37,14 +37,19 @@ problem() {
 
 # split N [PATTERN]: part N's tests, each as subject | judge; "<name> pass|fail|todo" lines in
 # $work/split-N.txt ("todo": failed saying "not implemented"). A judge that ends otherwise than by
-# a verdict is a problem.
+# a verdict is a problem. With $judge_kb set (an attack's "Judge memory:" line), each judge runs
+# under `ulimit -v` of that many KiB, and one that says it has no memory is a problem: it sized a
+# payload by what the record claims instead of what the call can return.
+judge_kb=""
 split() {
     n=$1 pattern=${2:-*} out="$work/split-$1.txt"
     : > "$out"
     for t in $(cd "$tree" && PL_TEST_LIST=1 PL_TEST_FILTER="$pattern" "bin/judge-part$n" | sed -n 's/^  //p'); do
         (cd "$tree" && PL_TEST_FILTER=$t "bin/subject-part$n" 3>&1 >/dev/null 2>&1 |
-            PL_TEST_FILTER=$t "bin/judge-part$n" > "$work/judge.log" 2>&1)
+            { [ -z "$judge_kb" ] || ulimit -v "$judge_kb"; PL_TEST_FILTER=$t "bin/judge-part$n"; } > "$work/judge.log" 2>&1)
         status=$?
+        [ -n "$judge_kb" ] && grep -q "has no memory" "$work/judge.log" &&
+            problem "part $n, $t: the judge ran out of its $judge_kb KiB: it allocated what the record claims"
         # cmocka turns a crash inside a test into a failure ("Test failed with exception"): the
         # judge's own crash is a problem all the same.
         grep -q 'failed with exception' "$work/judge.log" && status=crashed
@@ -116,6 +121,9 @@ for attack in $(case $stages in *" attacks "*) ls "$root"/course/judge/attacks/*
     # whole suite takes half a minute.
     pattern=$(sed -n 's/^ \* Graded on \(test_[A-Za-z0-9_*]*\).*/\1/p' "$attack")
     file=$(sed -n 's/^ \* Replaces: \([a-z_0-9]*\.c\)$/\1/p' "$attack")
+    # The judge's address space, when the header caps it ("Judge memory: <MiB> MiB").
+    judge_kb=$(sed -n 's/^ \* Judge memory: \([0-9]*\) MiB$/\1/p' "$attack")
+    judge_kb=${judge_kb:+$((judge_kb * 1024))}
     [ -f "$root/parts/$folder/$file" ] || { problem "attack $name: its Replaces: line names no file of parts/$folder"; continue; }
     cp "$root/parts/$folder/$file" "$tree/parts/$folder/$file.inc"  # for an attack that wraps the course's code
     cp "$attack" "$tree/parts/$folder/$file"
