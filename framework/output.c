@@ -293,23 +293,27 @@ pl_status output_film_send(int fd, const film *f, const output_film_counts *c, p
 }
 
 /* The grader's side: every length and the end marker checked before a byte is believed; the
- * counts come back as sent (they are the candidate's word: grading/README.md says what bounds them). */
+ * counts come back as sent (they are the candidate's word: grading/README.md says what bounds them).
+ * A refusal says what was wrong and what the case expects in the grader's words, never a number
+ * from the stream: the render is student code, and a header's two sizes echoed back would carry
+ * 8 bytes of whatever it read (a hidden scene, its own memory) out to the student. */
 pl_status output_film_receive(const void *data, size_t len, int width, int height, film *out,
                               output_film_counts *c, pl_diag *diag)
 {
     const unsigned char *p = data;
-    size_t pixels = (size_t)width * (size_t)height;
+    size_t pixels = (size_t)width * (size_t)height, expected = FILM_HEADER_BYTES + pixels * OUTPUT_FILM_PIXEL_BYTES + 8;
     if (len < FILM_HEADER_BYTES || memcmp(p, film_magic, 8))
-        return pl_fail(diag, PL_ERR_PARSE, "the render sent no film (%zu bytes, not a film stream)", len);
+        return pl_fail(diag, PL_ERR_PARSE, "the render sent no film (what it sent is not a film stream)");
     int w = (int)(uint32_t)get_le(p + 8, 4), h = (int)(uint32_t)get_le(p + 12, 4);
     if (w != width || h != height)
-        return pl_fail(diag, PL_ERR_PARSE, "the film is %dx%d, the case renders %dx%d", w, h, width, height);
-    if (len != FILM_HEADER_BYTES + pixels * OUTPUT_FILM_PIXEL_BYTES + 8 || memcmp(p + len - 8, film_end, 8))
-        return pl_fail(diag, PL_ERR_PARSE, "the film stream is %zu bytes, a %dx%d film takes %zu", len, w, h,
-                       FILM_HEADER_BYTES + pixels * OUTPUT_FILM_PIXEL_BYTES + 8);
+        return pl_fail(diag, PL_ERR_PARSE, "the film's size is not the case's: the case renders %dx%d", width, height);
+    if (len != expected || memcmp(p + len - 8, film_end, 8))
+        return pl_fail(diag, PL_ERR_PARSE, "the film stream is not the length of a %dx%d film (%zu bytes) or does "
+                       "not end with the film's end marker", width, height, expected);
     uint64_t *counts[4] = {&c->rays, &c->node_visits, &c->prim_tests, &c->samples};
     for (int i = 0; i < 4; i++) *counts[i] = (uint64_t)get_le(p + 16 + 8 * i, 8);
-    if (film_alloc(out, w, h) != PL_OK) return pl_fail(diag, PL_ERR_NOMEM, "out of memory for a %dx%d film", w, h);
+    if (film_alloc(out, width, height) != PL_OK)
+        return pl_fail(diag, PL_ERR_NOMEM, "out of memory for a %dx%d film", width, height);
     for (size_t i = 0; i < pixels; i++) {
         const unsigned char *q = p + FILM_HEADER_BYTES + i * OUTPUT_FILM_PIXEL_BYTES;
         film_pixel *px = &out->pixels[i];

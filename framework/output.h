@@ -59,7 +59,8 @@ typedef struct {
 /* Writes the stream of f to fd (all of it, retrying short writes). */
 pl_status output_film_send(int fd, const film *f, const output_film_counts *c, pl_diag *diag);
 /* Reads a stream from memory: out (allocated here; film_free it) must be width x height. Errors say
- * what was wrong ("the film is 64x48, the case renders 128x96"). */
+ * what was wrong and what the case expects, never a number the stream holds ("the film's size is
+ * not the case's: the case renders 128x96"): the stream is the candidate's, its message the student's. */
 pl_status output_film_receive(const void *data, size_t len, int width, int height, film *out,
                               output_film_counts *c, pl_diag *diag);
 

@@ -473,6 +473,31 @@ static void test_output__every_temporary_is_tracked_or_refused(void **state)
     expect_killed_leaving_nothing(table_full_then_killed);
 }
 
+/* A film stream's refusal names what the case expects, never a number the stream holds: a render
+ * is student code, and a header whose sizes came back in the message would carry 8 bytes of
+ * whatever it read out to the student (these two are the bits of the floats 2.2 and 5.5). */
+static void test_output__film_refusal_never_echoes_the_stream(void **state)
+{
+    (void)state;
+    static unsigned char stream[12345];
+    const uint32_t claimed[2] = {1074580685u, 1085276160u};
+    memcpy(stream, "PLFILM1\n", 8);
+    for (int k = 0; k < 8; k++) stream[8 + k] = (unsigned char)(claimed[k / 4] >> (8 * (k % 4)));
+    film got = {0};
+    output_film_counts counts;
+    pl_diag d = pl_diag_default();
+    assert_int_not_equal(output_film_receive(stream, 48, 160, 120, &got, &counts, &d), PL_OK);
+    assert_non_null(strstr(d.error, "160x120"));
+    assert_null(strstr(d.error, "1074580685"));
+    assert_null(strstr(d.error, "1085276160"));
+    /* The right size but a length of the candidate's choosing: refused without that length. */
+    for (int k = 0; k < 8; k++) stream[8 + k] = (unsigned char)(k % 4 == 0 ? 2 : 0);
+    assert_int_not_equal(output_film_receive(stream, sizeof stream, 2, 2, &got, &counts, &d), PL_OK);
+    assert_null(strstr(d.error, "12345"));
+    assert_int_not_equal(output_film_receive(stream, 21, 2, 2, &got, &counts, &d), PL_OK);
+    assert_null(strstr(d.error, "21"));
+}
+
 int output_tests(void)
 {
     const struct CMUnitTest tests[] = {
@@ -489,6 +514,7 @@ int output_tests(void)
         cmocka_unit_test_setup_teardown(test_output__merge_checks_its_output_first, dir_setup, dir_teardown),
         cmocka_unit_test_setup_teardown(test_output__signal_right_after_create_leaves_nothing, dir_setup, dir_teardown),
         cmocka_unit_test_setup_teardown(test_output__every_temporary_is_tracked_or_refused, dir_setup, dir_teardown),
+        cmocka_unit_test(test_output__film_refusal_never_echoes_the_stream),
     };
     return cmocka_run_group_tests_name("outputs", tests, NULL, NULL);
 }
