@@ -1,5 +1,6 @@
 /* Grader machinery: not part of any assignment. One image case. */
 #include "grade_image.h"
+#include "grade_figure.h"
 #include "grade_guard.h"
 #include "grade_refs.h"
 #include "../framework/file.h"
@@ -9,13 +10,13 @@
 #include "../framework/output.h"
 #include <jansson.h>
 #include <math.h>
+#include <signal.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 #include <unistd.h>
 
 #define Z_SCALE 5.0f  /* the z-map saturates at |t| = 5 */
-#define SCENE_MAX (64L << 20)
 
 /* What the verdict reads of a film: the mean image (R, G, B, top row first), optionally each mean's
  * variance (var: same layout; NULL to skip), the mean sample count per pixel, and the pixels with
@@ -57,7 +58,9 @@ static pl_status read_reference(const char *path, image *out, image *var, long *
 
 /* A streamed film's shape, beyond its size (output_film_receive): every pixel took the case's samples
  * (an adaptive case: 1 to that many), no more bad samples than samples, and sums a real set of
- * samples could have (sum of squares * n >= sum^2, per channel, up to the rounding of film.h). */
+ * samples could have (sum of squares * n >= sum^2, per channel, up to the rounding of film.h).
+ * The refusal names neither the pixel nor its values: which pixel is wrong is the render's choice,
+ * 14 bits at 160x120 that it could fill with what it read (grade_figure.h). */
 static bool film_shape_ok(const film *f, const grade_case *k, bool adaptive, char *why, size_t size)
 {
     long pixels = (long)f->width * f->height;
@@ -71,9 +74,11 @@ static bool film_shape_ok(const film *f, const grade_case *k, bool adaptive, cha
              * exact one by up to n * 2^-33. */
             sums_ok = s >= 0 && (q + p->n * 0x1p-32) * p->n >= s * s * (1.0 - 1e-9);
         }
-        if (!count_ok || !sums_ok)
-            return grade_msg(why, size, "the film's pixel %ld (x=%ld, y=%ld from the top) %s", i, i % f->width,
-                            i / f->width, count_ok ? "holds sums no samples can have" : "has the wrong sample count"), false;
+        if (!count_ok && adaptive)
+            return grade_msg(why, size, "a pixel of the film took no samples, or more than the case's %d", k->samples), false;
+        if (!count_ok)
+            return grade_msg(why, size, "a pixel of the film did not take the case's %d samples", k->samples), false;
+        if (!sums_ok) return grade_msg(why, size, "a pixel of the film holds sums no samples can have"), false;
     }
     return true;
 }
@@ -117,12 +122,15 @@ static pl_status write_z_map(const verdict *v, int width, int height, const char
 static bool scene_for_child(const grade_env *env, const char *tree, const grade_case *k, char *path, size_t size,
                             pl_diag *diag)
 {
-    grade_path(path, size, "%s/%s", env->root, k->scene);
-    if (strncmp(k->scene, "grading/", 8) != 0) return true;
+    /* A public scene is read from the tree's own copy of scenes/: a render sees nothing of the
+     * machine but its tree (grade_run.c: its private view may hide the course's root). */
+    bool hidden = !strncmp(k->scene, "grading/", 8);
+    grade_path(path, size, "%s/%s", hidden ? env->root : tree, k->scene);
+    if (!hidden) return true;
     char *data = NULL;
     size_t len = 0;
     const char *base = strrchr(k->scene, '/') + 1;
-    pl_status st = file_read_all(path, "scene", SCENE_MAX, &data, &len, diag);
+    pl_status st = file_read_all(path, "scene", GRADE_SCENE_MAX, &data, &len, diag);
     grade_path(path, size, "%s/%s", tree, base);
     if (!st) st = file_write_atomic(path, data, len, diag);
     free(data);
@@ -133,6 +141,19 @@ static bool scene_for_child(const grade_env *env, const char *tree, const grade_
 static void drop_scene_copy(const grade_case *k, const char *scene)
 {
     if (!strncmp(k->scene, "grading/", 8)) remove(scene);
+}
+
+/* Why a render failed, in the grader's words: the kind of ending, never its exit status or signal
+ * number, which the render chooses (8 bits through exit(), 6 through raise()). */
+static void render_failure(const grade_run_result *rr, char *why, size_t size)
+{
+    if (rr->timed_out) grade_msg(why, size, "the render ran past its %d s", GRADE_RENDER_SECONDS);
+    else if (rr->exited) grade_msg(why, size, "the render exited with an error status (its log says why)");
+    else if (rr->status == SIGXCPU) grade_msg(why, size, "the render ran past its CPU time");
+    else if (rr->status == SIGSYS) grade_msg(why, size, "the render made a system call the sandbox forbids");
+    else if (rr->status == SIGSEGV || rr->status == SIGBUS)
+        grade_msg(why, size, "the render crashed: a memory error (a pointer or index out of bounds?)");
+    else grade_msg(why, size, "the render was killed by a signal (an abort, a crash or a kill)");
 }
 
 /* The candidate's render, in a child: the student's code never runs in the grader's process, and
@@ -159,11 +180,7 @@ static bool render_candidate(const grade_env *env, const char *tree, int part, g
     grade_run_result rr = grade_run(argv, &o);
     drop_scene_copy(k, scene);
     bool ok = rr.exited && rr.status == 0;
-    if (!ok) {
-        char why[128];
-        grade_run_describe(&rr, why, sizeof why);
-        grade_msg(c->reason, sizeof c->reason, "the render %s", why);
-    }
+    if (!ok) render_failure(&rr, c->reason, sizeof c->reason);
     else if (film_pipe.overflow || output_film_receive(film_pipe.data, (size_t)film_pipe.len, k->width, k->height, out,
                                                        counts, &diag) != PL_OK) {
         grade_msg(c->reason, sizeof c->reason, "the render sent no usable film: %s",
@@ -257,11 +274,13 @@ static void point_at_pixels(const grade_env *env, const grade_case *k, const ima
         len += snprintf(flags + len, sizeof flags - len, "%s ", k->flags[f]);
     int len = 0;
     for (int j = 0; j < GRADE_TRACE_PIXELS && best[j] >= 0 && len < (int)sizeof c->trace; j++) {
-        int x = best[j] % cand->width, y = cand->height - 1 - best[j] / cand->width;
+        int x = grade_figure_pixel(best[j] % cand->width, k->width);
+        int y = grade_figure_pixel(cand->height - 1 - best[j] / cand->width, k->height);
         len += snprintf(c->trace + len, sizeof c->trace - len,
-                        "pixel (%d, %d), luminance off by %.4g: bin/pathtracer %s-r %d %d -s %d --seed %llu "
-                        "--trace-pixel %d %d %s%s\n", x, y, (double)diff[j], flags, k->width, k->height, k->samples,
-                        (unsigned long long)env->seed, x, y, k->scene, k->hidden ? " (a hidden case's scene: not in your tree)" : "");
+                        "pixel (%d, %d), luminance off by %.3g: bin/pathtracer %s-r %d %d -s %d --seed %llu "
+                        "--trace-pixel %d %d %s\n", x, y, grade_figure((double)diff[j], GRADE_FIGURE_DIGITS, 0.0,
+                        GRADE_RATIO_MAX), flags, k->width, k->height, k->samples, (unsigned long long)env->seed, x, y,
+                        k->scene);
     }
 }
 
@@ -321,7 +340,7 @@ static void judge(const grade_env *env, const grade_spec *spec, int part, const 
         c->pass = figures && c->v.pass;
         c->chance_failure = figures && !c->v.pass && !c->v.deterministic && c->v.bad_pixels == 0;
         c->score = c->pass ? k->points : 0.0;
-        if (!c->pass) point_at_pixels(env, k, &cand, refimg, c);
+        if (!c->pass && !k->hidden) point_at_pixels(env, k, &cand, refimg, c);  /* a hidden case: no pixels */
         write_pictures(env, part, c, &cand, refimg);
     }
     image_free(&cand);

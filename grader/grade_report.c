@@ -5,8 +5,11 @@
  * report both show it, so a student reads the same sentence wherever they look. Every string that
  * reaches a student goes through report_text (valid UTF-8) and, in the HTML, html_escape: messages
  * hold whatever bytes a test or a compiler printed, and neither jansson nor a browser may be handed
- * them raw. */
+ * them raw. And every number a render decides (ratios, p-values, counts, pixels) goes through
+ * grade_figure (grade_figure.h) before it is formatted; a hidden case shows its verdict and a coarse
+ * mean ratio alone (hidden_case_text). */
 #include "grade.h"
+#include "grade_figure.h"
 #include "../framework/file.h"
 #include "../framework/utf8.h"
 #include <jansson.h>
@@ -18,33 +21,162 @@
 /* Channels by index, in the verdict's messages. */
 static const char *const channel_names[3] = {"red", "green", "blue"};
 
+/* ---- the figures shown: every number a render decides goes through grade_figure ---------------- */
+
+/* A public case's figure (grade_figure.h: rounded to 3 significant digits, clamped to [lo, hi]). */
+static double shown(double x, double lo, double hi)
+{
+    return grade_figure(x, GRADE_FIGURE_DIGITS, lo, hi);
+}
+
+static double shown_ratio(double ratio)
+{
+    return shown(ratio, 0.0, GRADE_RATIO_MAX);
+}
+
+static long case_pixels(const grade_case *k)
+{
+    return (long)k->width * k->height;
+}
+
 /* A deterministic case's verdict: how many pixels are beyond the rounding tolerance, against the
  * ties allowed, and the largest difference. A pass within the tolerance is never called a failure. */
-static int rounding_text(const verdict *v, char *out, size_t size)
+static int rounding_text(const grade_case *k, const verdict *v, char *out, size_t size)
 {
     int len = snprintf(out, size, "%s: %ld pixels differ by more than the rounding tolerance %.1e (at most %ld may: "
                        "rays that graze an edge go either way); the largest difference is %.3g",
                        v->pass ? "**matches the reference** up to rounding" : "**differs from the reference**",
-                       v->beyond_tolerance, v->tolerance, v->tie_pixels, v->max_diff);
+                       grade_figure_count(v->beyond_tolerance, case_pixels(k)), v->tolerance, v->tie_pixels,
+                       shown(v->max_diff, 0.0, GRADE_RATIO_MAX));
     if (len >= 0 && (size_t)len < size && v->max_x >= 0)
         len += snprintf(out + len, size - len, ", in the %s channel at x=%d y=%d (from the bottom-left)",
-                        channel_names[v->max_channel], v->max_x, v->max_y);
+                        channel_names[v->max_channel % 3], grade_figure_pixel(v->max_x, k->width),
+                        grade_figure_pixel(v->max_y, k->height));
     if (len >= 0 && (size_t)len < size)
-        len += snprintf(out + len, size - len, ". relMSE %.4f, mean ratio red %.3f green %.3f blue %.3f.", v->rel_mse,
-                        v->ratio[0], v->ratio[1], v->ratio[2]);
+        len += snprintf(out + len, size - len, ". relMSE %.3g, mean ratio red %.3g green %.3g blue %.3g.",
+                        shown(v->rel_mse, 0.0, GRADE_REL_MSE_MAX), shown_ratio(v->ratio[0]), shown_ratio(v->ratio[1]),
+                        shown_ratio(v->ratio[2]));
     return len;
+}
+
+/* The course's figures of a case's own render (samples per pixel, noise, work per ray), where the
+ * case judges them; a hidden case says only whether each is within the course's bound. */
+static int figures_text(const grade_case_result *c, bool hidden, char *out, size_t size)
+{
+    int len = 0;
+    if (c->course_spp > 0) {
+        bool ok = fabs(c->spp / c->course_spp - 1.0) <= GRADE_SPP_TOLERANCE;
+        len += hidden ? snprintf(out, size, " Samples per pixel: %s %.0f%% of the course's.", ok ? "within" : "more than",
+                                 100.0 * GRADE_SPP_TOLERANCE)
+                      : snprintf(out, size, " Samples per pixel: %.3g on average, the course's %.3g (%s %.0f%%).",
+                                 shown(c->spp, 0.0, GRADE_SPP_MAX), shown(c->course_spp, 0.0, GRADE_SPP_MAX),
+                                 ok ? "within" : "more than", 100.0 * GRADE_SPP_TOLERANCE);
+        if (!ok && len >= 0 && (size_t)len < size)
+            len += snprintf(out + len, size - len, " %s", c->spp > c->course_spp
+                            ? "Pixels stop later than they should: does adaptive_converged ever say yes?"
+                            : "Pixels stop earlier than they should: check the confidence test.");
+    }
+    if (c->spec->noise_check && len >= 0 && (size_t)len < size) {
+        bool ok = c->noise <= GRADE_NOISE_FACTOR;
+        len += hidden ? snprintf(out + len, size - len, " Noise per sample: %s %.2fx the course's.",
+                                 ok ? "within" : "more than", GRADE_NOISE_FACTOR)
+                      : snprintf(out + len, size - len, " Noise per sample: %.3g x the course's (%s %.2fx).",
+                                 shown_ratio(c->noise), ok ? "within" : "more than", GRADE_NOISE_FACTOR);
+        if (!ok && (size_t)len < size)
+            len += snprintf(out + len, size - len, " The image is right on average but noisier than it should be: "
+                            "does every one of the -l light samples draw its own random numbers, and are they "
+                            "spent where the handout says?");
+    }
+    if (c->course_work > 0 && len >= 0 && (size_t)len < size) {
+        bool ok = c->work >= 0 && c->work <= GRADE_WORK_FACTOR * c->course_work;
+        if (hidden)
+            len += snprintf(out + len, size - len, " Work per camera ray: %s %.0fx the course's BVH.",
+                            ok ? "within" : "more than", GRADE_WORK_FACTOR);
+        else if (c->work < 0)  /* no camera ray counted: nothing to divide by */
+            len += snprintf(out + len, size - len, " Work per camera ray: none counted (the course's BVH %.3g).",
+                            shown(c->course_work, 0.0, GRADE_WORK_MAX));
+        else
+            len += snprintf(out + len, size - len, " Work per camera ray (node visits + primitive tests, counted by "
+                            "the framework): %.3g, the course's BVH %.3g (%s %.0fx).", shown(c->work, 0.0, GRADE_WORK_MAX),
+                            shown(c->course_work, 0.0, GRADE_WORK_MAX), ok ? "within" : "more than", GRADE_WORK_FACTOR);
+        if (!ok && len >= 0 && (size_t)len < size)
+            len += snprintf(out + len, size - len, " The image is right, but the tree does not save work: check the "
+                            "SAH split, the leaf size, the nearest-first traversal, skipping boxes entered beyond the "
+                            "nearest hit, and stopping a shadow ray at its first hit (tasks 2.2 to 2.4).");
+    }
+    return len;
+}
+
+/* Where a statistical verdict failed: the first bad pixel, or the block (or the whole image) that
+ * differs most, and the hint. */
+static int where_text(const grade_case *k, const verdict *v, char *out, size_t size)
+{
+    int len = 0;
+    if (v->bad_pixels)
+        len = snprintf(out, size, " %ld pixels are NaN, infinite or negative; the first at x=%d y=%d (from the "
+                       "bottom-left).", grade_figure_count(v->bad_pixels, case_pixels(k)),
+                       grade_figure_pixel(v->bad_x, k->width), grade_figure_pixel(v->bad_y, k->height));
+    else if (!v->pass && !v->deterministic && v->worst_block_x >= 0)  /* rounding_text says where */
+        len = snprintf(out, size, " Most different: the %s channel of block (%d, %d) from the top-left (t = %+.3g: %s "
+                       "than the reference).", channel_names[v->worst_channel % 3],
+                       grade_figure_pixel(v->worst_block_x, v->blocks_x), grade_figure_pixel(v->worst_block_y, v->blocks_y),
+                       shown(v->worst_t, -GRADE_T_MAX, GRADE_T_MAX), v->worst_t > 0 ? "brighter" : "darker");
+    else if (!v->pass && !v->deterministic)
+        len = snprintf(out, size, " The whole image's %s channel is %s than the reference (t = %+.3g).",
+                       channel_names[v->worst_channel % 3], v->worst_t > 0 ? "brighter" : "darker",
+                       shown(v->worst_t, -GRADE_T_MAX, GRADE_T_MAX));
+    if (!v->pass && v->hint[0] && len >= 0 && (size_t)len < size) len += snprintf(out + len, size - len, " Hint: %s.", v->hint);
+    return len;
+}
+
+/* The mean of the lit channels' ratios (NaN when none is lit): a hidden case's one figure. */
+static double mean_ratio(const verdict *v)
+{
+    double sum = 0.0;
+    int lit = 0;
+    for (int ch = 0; ch < 3; ch++)
+        if (!isnan(v->ratio[ch])) sum += v->ratio[ch], lit++;
+    return lit ? sum / lit : NAN;
+}
+
+/* A hidden case: its scene is the course's secret, and its render may have read it, so the student
+ * sees the verdict and coarse figures only: the mean ratio to 2 digits, whether the course's
+ * figures are within bounds; no p-value, no pixel or block, no trace command (README: "What
+ * reaches the student"). */
+static void hidden_case_text(const grade_case_result *c, char *out, size_t size)
+{
+    int len = 0;
+    if (c->rendered_twice)
+        len = snprintf(out, size, "Rendered twice: the first render differed from the reference, and a correct render "
+                       "does that by chance about once in a thousand gradings at most, so the case was rendered again; "
+                       "that render is judged here. ");
+    if (len < 0 || (size_t)len >= size) return;
+    out += len, size -= (size_t)len;
+    if (!c->ran) {
+        snprintf(out, size, "**did not run**: %s", c->reason);
+        return;
+    }
+    len = snprintf(out, size, "%s (a hidden case: its figures are coarse). Mean ratio to the reference %.2g.",
+                   c->v.pass ? "**matches the reference**" : "**differs from the reference**",
+                   grade_figure(mean_ratio(&c->v), GRADE_FIGURE_COARSE_DIGITS, 0.0, GRADE_HIDDEN_RATIO_MAX));
+    if (len >= 0 && (size_t)len < size) figures_text(c, true, out + len, size - len);
 }
 
 /* One case's verdict in words (Markdown): the same text in results.json and the HTML report. */
 static void case_text(const grade_case_result *c, char *out, size_t size)
 {
+    const grade_case *k = c->spec;
     const verdict *v = &c->v;
+    if (k->hidden) {
+        hidden_case_text(c, out, size);
+        return;
+    }
     /* Rendered twice (grade_image.h): say so first; what follows judges the second render. */
     int len = 0;
     if (c->rendered_twice)
         len = snprintf(out, size, "Rendered twice: the first render (seed %llu) differed from the reference (p-value "
                        "%.3g). A correct render fails a case by chance about once in a thousand gradings at most, so "
-                       "the case was rendered again at seed %llu. %s ", c->first_seed, c->first_p, c->seed,
+                       "the case was rendered again at seed %llu. %s ", c->first_seed, shown(c->first_p, 0.0, 1.0), c->seed,
                        c->pass ? "That render is judged here, and the first failure was chance, not your code:"
                        : c->ran ? "That render differs too, so the difference is your code's, not chance:"
                                 : "That render");
@@ -54,52 +186,14 @@ static void case_text(const grade_case_result *c, char *out, size_t size)
         snprintf(out, size, "**did not run**: %s", c->reason);
         return;
     }
-    len = v->deterministic ? rounding_text(v, out, size)
-                           : snprintf(out, size, "%s. p-value %.3g (the case fails below %.0e), relMSE %.4f, "
-                                      "mean ratio red %.3f green %.3f blue %.3f.",
+    len = v->deterministic ? rounding_text(k, v, out, size)
+                           : snprintf(out, size, "%s. p-value %.3g (the case fails below %.0e), relMSE %.3g, "
+                                      "mean ratio red %.3g green %.3g blue %.3g.",
                                       v->pass ? "**matches the reference**" : "**differs from the reference**",
-                                      v->p_value, v->alpha, v->rel_mse, v->ratio[0], v->ratio[1], v->ratio[2]);
-    if (len < 0 || (size_t)len >= size) return;
-    if (v->bad_pixels)
-        len += snprintf(out + len, size - len, " %ld pixels are NaN, infinite or negative; the first at x=%d y=%d "
-                        "(from the bottom-left).", v->bad_pixels, v->bad_x, v->bad_y);
-    else if (!v->pass && !v->deterministic && v->worst_block_x >= 0)  /* rounding_text says where */
-        len += snprintf(out + len, size - len, " Most different: the %s channel of block (%d, %d) from the top-left "
-                        "(t = %+.1f: %s than the reference).", channel_names[v->worst_channel], v->worst_block_x,
-                        v->worst_block_y, v->worst_t, v->worst_t > 0 ? "brighter" : "darker");
-    else if (!v->pass && !v->deterministic)
-        len += snprintf(out + len, size - len, " The whole image's %s channel is %s than the reference (t = %+.1f).",
-                        channel_names[v->worst_channel], v->worst_t > 0 ? "brighter" : "darker", v->worst_t);
-    if (!v->pass && v->hint[0] && (size_t)len < size) len += snprintf(out + len, size - len, " Hint: %s.", v->hint);
-    /* The course's figures for the case's own render, when the case judges them. */
-    if (c->course_spp > 0 && len >= 0 && (size_t)len < size) {
-        bool ok = fabs(c->spp / c->course_spp - 1.0) <= GRADE_SPP_TOLERANCE;
-        len += snprintf(out + len, size - len, " Samples per pixel: %.1f on average, the course's %.1f (%s %.0f%%).",
-                        c->spp, c->course_spp, ok ? "within" : "more than", 100.0 * GRADE_SPP_TOLERANCE);
-        if (!ok && (size_t)len < size)
-            len += snprintf(out + len, size - len, " %s", c->spp > c->course_spp
-                            ? "Pixels stop later than they should: does adaptive_converged ever say yes?"
-                            : "Pixels stop earlier than they should: check the confidence test.");
-    }
-    if (c->spec->noise_check && len >= 0 && (size_t)len < size) {
-        bool ok = c->noise <= GRADE_NOISE_FACTOR;
-        len += snprintf(out + len, size - len, " Noise per sample: %.3f x the course's (%s %.2fx).", c->noise,
-                        ok ? "within" : "more than", GRADE_NOISE_FACTOR);
-        if (!ok && (size_t)len < size)
-            len += snprintf(out + len, size - len, " The image is right on average but noisier than it should be: "
-                            "does every one of the -l light samples draw its own random numbers, and are they "
-                            "spent where the handout says?");
-    }
-    if (c->course_work > 0 && len >= 0 && (size_t)len < size) {
-        bool ok = c->work >= 0 && c->work <= GRADE_WORK_FACTOR * c->course_work;
-        len += snprintf(out + len, size - len, " Work per camera ray (node visits + primitive tests, counted by "
-                        "the framework): %.1f, the course's BVH %.1f (%s %.0fx).", c->work, c->course_work,
-                        ok ? "within" : "more than", GRADE_WORK_FACTOR);
-        if (!ok && (size_t)len < size)
-            snprintf(out + len, size - len, " The image is right, but the tree does not save work: check the SAH "
-                     "split, the leaf size, the nearest-first traversal, skipping boxes entered beyond the nearest "
-                     "hit, and stopping a shadow ray at its first hit (tasks 2.2 to 2.4).");
-    }
+                                      shown(v->p_value, 0.0, 1.0), v->alpha, shown(v->rel_mse, 0.0, GRADE_REL_MSE_MAX),
+                                      shown_ratio(v->ratio[0]), shown_ratio(v->ratio[1]), shown_ratio(v->ratio[2]));
+    if (len >= 0 && (size_t)len < size) len += where_text(k, v, out + len, size - len);
+    if (len >= 0 && (size_t)len < size) figures_text(c, false, out + len, size - len);
 }
 
 /* A failing case's pixels and the commands that trace them (grade_image.c), after its text. */
@@ -334,7 +428,7 @@ static void html_case(FILE *f, const grade_case_result *c)
     html_wrapped(f, "<p><i>", c->spec->shows, "</i></p>");
     html_wrapped(f, "<p>", text, "</p>\n");
     html_trace(f, c);
-    if (c->ran && c->images[0][0]) {
+    if (c->ran && c->images[0][0] && !c->spec->hidden) {  /* a hidden case's render is not shown (case_text) */
         fprintf(f, "<div class=\"imgs\">");
         for (int m = 0; m < 3; m++)
             if (c->images[m][0])

@@ -89,7 +89,8 @@ static void find_hint(verdict *v, const verdict_image *cand, const verdict_image
         }
     }
     if (lit > 0 && black * 4 > lit) {
-        snprintf(v->hint, sizeof v->hint, "black where the reference is lit (%ld of %ld lit pixels)", black, lit);
+        /* No count: how many pixels are black is the candidate's choice (grade_figure.h). */
+        snprintf(v->hint, sizeof v->hint, "black where the reference is lit (more than a quarter of its lit pixels)");
         return;
     }
     for (size_t k = 0; k < sizeof known / sizeof known[0]; k++) {

@@ -4,6 +4,7 @@ int sandbox_tests(void);
 int split_tests(void);
 int readers_tests(void);  /* references, suite results, results.json read as hostile */
 int allow_tests(void);  /* the allow-list, the PL_PART_API marks and the handout agree */
+int figure_tests(void);  /* what reaches the student: figures rounded, hidden cases coarse */
 
 int main(void)
 {
@@ -12,5 +13,6 @@ int main(void)
     failed += split_tests();
     failed += readers_tests();
     failed += allow_tests();
+    failed += figure_tests();
     return failed != 0;
 }
