@@ -24,6 +24,7 @@
 #define GRADE_T_MAX 1000.0       /* a block's t statistic, either sign */
 #define GRADE_SPP_MAX 1e6        /* samples per pixel */
 #define GRADE_WORK_MAX 1e9       /* node visits + primitive tests per camera ray */
+#define GRADE_SECONDS_MAX 1e6    /* the run's time */
 
 /* x clamped to [lo, hi] and rounded to `digits` significant digits; 0 when its magnitude is below
  * GRADE_FIGURE_FLOOR. NaN stays NaN (an unlit channel's ratio: the reference's fact, not the

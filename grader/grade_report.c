@@ -24,19 +24,26 @@ static const char *const channel_names[3] = {"red", "green", "blue"};
 /* ---- the figures shown: every number a render decides goes through grade_figure ---------------- */
 
 /* A public case's figure (grade_figure.h: rounded to 3 significant digits, clamped to [lo, hi]). */
-static double shown(double x, double lo, double hi)
+static double public_figure(double x, double lo, double hi)
 {
     return grade_figure(x, GRADE_FIGURE_DIGITS, lo, hi);
 }
 
 static double shown_ratio(double ratio)
 {
-    return shown(ratio, 0.0, GRADE_RATIO_MAX);
+    return public_figure(ratio, 0.0, GRADE_RATIO_MAX);
 }
 
 static long case_pixels(const grade_case *k)
 {
     return (long)k->width * k->height;
+}
+
+/* The run's time as shown: a render that sleeps chooses it to the millisecond, so it is a figure
+ * too (3 significant digits, printed in whole seconds: about 10 bits a run instead of 17 a case). */
+static double run_seconds(const grade_result *r)
+{
+    return public_figure(r->seconds, 0.0, GRADE_SECONDS_MAX);
 }
 
 /* A deterministic case's verdict: how many pixels are beyond the rounding tolerance, against the
@@ -47,14 +54,14 @@ static int rounding_text(const grade_case *k, const verdict *v, char *out, size_
                        "rays that graze an edge go either way); the largest difference is %.3g",
                        v->pass ? "**matches the reference** up to rounding" : "**differs from the reference**",
                        grade_figure_count(v->beyond_tolerance, case_pixels(k)), v->tolerance, v->tie_pixels,
-                       shown(v->max_diff, 0.0, GRADE_RATIO_MAX));
+                       public_figure(v->max_diff, 0.0, GRADE_RATIO_MAX));
     if (len >= 0 && (size_t)len < size && v->max_x >= 0)
         len += snprintf(out + len, size - len, ", in the %s channel at x=%d y=%d (from the bottom-left)",
                         channel_names[v->max_channel % 3], grade_figure_pixel(v->max_x, k->width),
                         grade_figure_pixel(v->max_y, k->height));
     if (len >= 0 && (size_t)len < size)
         len += snprintf(out + len, size - len, ". relMSE %.3g, mean ratio red %.3g green %.3g blue %.3g.",
-                        shown(v->rel_mse, 0.0, GRADE_REL_MSE_MAX), shown_ratio(v->ratio[0]), shown_ratio(v->ratio[1]),
+                        public_figure(v->rel_mse, 0.0, GRADE_REL_MSE_MAX), shown_ratio(v->ratio[0]), shown_ratio(v->ratio[1]),
                         shown_ratio(v->ratio[2]));
     return len;
 }
@@ -69,7 +76,7 @@ static int figures_text(const grade_case_result *c, bool hidden, char *out, size
         len += hidden ? snprintf(out, size, " Samples per pixel: %s %.0f%% of the course's.", ok ? "within" : "more than",
                                  100.0 * GRADE_SPP_TOLERANCE)
                       : snprintf(out, size, " Samples per pixel: %.3g on average, the course's %.3g (%s %.0f%%).",
-                                 shown(c->spp, 0.0, GRADE_SPP_MAX), shown(c->course_spp, 0.0, GRADE_SPP_MAX),
+                                 public_figure(c->spp, 0.0, GRADE_SPP_MAX), public_figure(c->course_spp, 0.0, GRADE_SPP_MAX),
                                  ok ? "within" : "more than", 100.0 * GRADE_SPP_TOLERANCE);
         if (!ok && len >= 0 && (size_t)len < size)
             len += snprintf(out + len, size - len, " %s", c->spp > c->course_spp
@@ -94,11 +101,11 @@ static int figures_text(const grade_case_result *c, bool hidden, char *out, size
                             ok ? "within" : "more than", GRADE_WORK_FACTOR);
         else if (c->work < 0)  /* no camera ray counted: nothing to divide by */
             len += snprintf(out + len, size - len, " Work per camera ray: none counted (the course's BVH %.3g).",
-                            shown(c->course_work, 0.0, GRADE_WORK_MAX));
+                            public_figure(c->course_work, 0.0, GRADE_WORK_MAX));
         else
             len += snprintf(out + len, size - len, " Work per camera ray (node visits + primitive tests, counted by "
-                            "the framework): %.3g, the course's BVH %.3g (%s %.0fx).", shown(c->work, 0.0, GRADE_WORK_MAX),
-                            shown(c->course_work, 0.0, GRADE_WORK_MAX), ok ? "within" : "more than", GRADE_WORK_FACTOR);
+                            "the framework): %.3g, the course's BVH %.3g (%s %.0fx).", public_figure(c->work, 0.0, GRADE_WORK_MAX),
+                            public_figure(c->course_work, 0.0, GRADE_WORK_MAX), ok ? "within" : "more than", GRADE_WORK_FACTOR);
         if (!ok && len >= 0 && (size_t)len < size)
             len += snprintf(out + len, size - len, " The image is right, but the tree does not save work: check the "
                             "SAH split, the leaf size, the nearest-first traversal, skipping boxes entered beyond the "
@@ -120,11 +127,11 @@ static int where_text(const grade_case *k, const verdict *v, char *out, size_t s
         len = snprintf(out, size, " Most different: the %s channel of block (%d, %d) from the top-left (t = %+.3g: %s "
                        "than the reference).", channel_names[v->worst_channel % 3],
                        grade_figure_pixel(v->worst_block_x, v->blocks_x), grade_figure_pixel(v->worst_block_y, v->blocks_y),
-                       shown(v->worst_t, -GRADE_T_MAX, GRADE_T_MAX), v->worst_t > 0 ? "brighter" : "darker");
+                       public_figure(v->worst_t, -GRADE_T_MAX, GRADE_T_MAX), v->worst_t > 0 ? "brighter" : "darker");
     else if (!v->pass && !v->deterministic)
         len = snprintf(out, size, " The whole image's %s channel is %s than the reference (t = %+.3g).",
                        channel_names[v->worst_channel % 3], v->worst_t > 0 ? "brighter" : "darker",
-                       shown(v->worst_t, -GRADE_T_MAX, GRADE_T_MAX));
+                       public_figure(v->worst_t, -GRADE_T_MAX, GRADE_T_MAX));
     if (!v->pass && v->hint[0] && len >= 0 && (size_t)len < size) len += snprintf(out + len, size - len, " Hint: %s.", v->hint);
     return len;
 }
@@ -176,7 +183,7 @@ static void case_text(const grade_case_result *c, char *out, size_t size)
     if (c->rendered_twice)
         len = snprintf(out, size, "Rendered twice: the first render (seed %llu) differed from the reference (p-value "
                        "%.3g). A correct render fails a case by chance about once in a thousand gradings at most, so "
-                       "the case was rendered again at seed %llu. %s ", c->first_seed, shown(c->first_p, 0.0, 1.0), c->seed,
+                       "the case was rendered again at seed %llu. %s ", c->first_seed, public_figure(c->first_p, 0.0, 1.0), c->seed,
                        c->pass ? "That render is judged here, and the first failure was chance, not your code:"
                        : c->ran ? "That render differs too, so the difference is your code's, not chance:"
                                 : "That render");
@@ -190,7 +197,7 @@ static void case_text(const grade_case_result *c, char *out, size_t size)
                            : snprintf(out, size, "%s. p-value %.3g (the case fails below %.0e), relMSE %.3g, "
                                       "mean ratio red %.3g green %.3g blue %.3g.",
                                       v->pass ? "**matches the reference**" : "**differs from the reference**",
-                                      shown(v->p_value, 0.0, 1.0), v->alpha, shown(v->rel_mse, 0.0, GRADE_REL_MSE_MAX),
+                                      public_figure(v->p_value, 0.0, 1.0), v->alpha, public_figure(v->rel_mse, 0.0, GRADE_REL_MSE_MAX),
                                       shown_ratio(v->ratio[0]), shown_ratio(v->ratio[1]), shown_ratio(v->ratio[2]));
     if (len >= 0 && (size_t)len < size) len += where_text(k, v, out + len, size - len);
     if (len >= 0 && (size_t)len < size) figures_text(c, false, out + len, size - len);
@@ -234,7 +241,8 @@ void grade_print_table(const grade_result *r, FILE *out)
         total += p->score;
         max += p->max_score;
     }
-    fprintf(out, "total%52.1f / %.1f   (seed %llu, %.0f s)\n", total, max, (unsigned long long)r->seed, r->seconds);
+    fprintf(out, "total%52.1f / %.1f   (seed %llu, %.0f s)\n", total, max, (unsigned long long)r->seed,
+            run_seconds(r));
     if (r->unprotected[0]) fprintf(out, "unavailable protections: %s\n", r->unprotected);
     print_trace_pixels(r, out);
 }
@@ -313,7 +321,7 @@ pl_status grade_write_results_json(const grade_result *r, const char *path, pl_d
     snprintf(summary, sizeof summary, "pathlab grader, seed %llu.%s%s", (unsigned long long)r->seed,
              r->unprotected[0] ? " Unavailable protections: " : "", r->unprotected);
     char *shown = report_text(summary);
-    json_t *root = complete && shown ? json_pack("{s:f, s:f, s:s, s:O}", "score", total, "execution_time", r->seconds,
+    json_t *root = complete && shown ? json_pack("{s:f, s:f, s:s, s:O}", "score", total, "execution_time", run_seconds(r),
                                                  "output", shown, "tests", tests) : NULL;
     char *text = root ? json_dumps(root, JSON_INDENT(2)) : NULL;
     free(shown);
@@ -382,7 +390,7 @@ static void html_head(FILE *f, const grade_result *r)
                "reference, block by block; a case fails only when the difference is too large to be noise (a "
                "correct part's render differs that much about once in a thousand gradings at most, so a case whose "
                "render does is rendered again at another seed, and fails only if that render differs too).</p>\n",
-            (unsigned long long)r->seed, r->seconds);
+            (unsigned long long)r->seed, run_seconds(r));
     if (r->unprotected[0]) html_wrapped(f, "<p class=\"fail\">Unavailable protections: ", r->unprotected, "</p>\n");
 }
 
