@@ -93,7 +93,8 @@ static void replay_trace(seam_fn fn, const seam_header *h)
         int *list = node ? t->nodes : t->prims, *num = node ? &t->num_nodes : &t->num_prims;
         int cap = node ? t->cap_nodes : t->cap_prims, bound = node ? bound_nodes : bound_prims;
         if (entry < 0 || entry >= bound)
-            seam_fail(fn, "it reports a visit to %s %d, of %d", node ? "node" : "primitive", entry, bound);
+            seam_fail(fn, "it reports a visit to a %s that is not one of the %d of this call", node ? "node" : "primitive",
+                      bound);  /* never the entry: a number the code under test chose */
         if (*num < cap) list[(*num)++] = entry;
         else t->overflow = true;
     }
