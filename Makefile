@@ -177,7 +177,7 @@ help:  ## this list
 # student release has no course/, a part's grading tree holds only what the part's
 # build and tests need.
 -include grader/grader.mk
--include tests/seam/seam.mk
+-include grader/seam/seam.mk
 -include tools/tools.mk
 -include handout/handout.mk
 -include bench/bench.mk

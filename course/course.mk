@@ -30,7 +30,7 @@ release: $(BIN)/strip_solutions $(BIN)/release_points  ## cut release/student an
 release-check: release $(BIN)/imgtool  ## cut the release, then prove it sound (course/release/check says what)
 	$(Q)bash course/release/check $(BIN)/strip_solutions $(BIN)/imgtool $(BIN)/release_points
 
-# The grader's split suites (tests/seam/seam.h) in a scratch tree: same verdicts as test-partN on the
+# The grader's split suites (grader/seam/seam.h) in a scratch tree: same verdicts as test-partN on the
 # solution and the stubs, and nothing gained by the attacks in course/judge/attacks/ (a few minutes).
 test-judge:  ## the split suites (subject | judge per test) agree with test-partN and shrug off attacks
 	$(Q)sh course/judge/split_check.sh

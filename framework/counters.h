@@ -29,7 +29,7 @@ typedef struct {
 work_counts counters_take(void);
 
 /* The calling thread's counts, left as they are; and counts added in one go. The grader's split
- * suites (tests/seam/) carry the work a part's call did from the process that ran it to the judge. */
+ * suites (grader/seam/) carry the work a part's call did from the process that ran it to the judge. */
 work_counts counters_peek(void);
 void counters_add(work_counts w);
 

@@ -2,7 +2,7 @@
  * framework calls, and every framework function the parts call. One X-macro list so that every
  * tool that needs the seam reads it from here: the trace (framework/trace.c) and the grader's
  * split suites, whose record and replay of a graded part's calls number and name the part
- * functions from it (tests/seam/seam.h).
+ * functions from it (grader/seam/seam.h).
  *
  * PL_SEAM_PART_FUNCTIONS(X): X(name, task) for each part function the framework calls, with the
  *   task that writes it ("2.2"). The framework calls the recorded ones through the wrappers in

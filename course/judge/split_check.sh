@@ -1,6 +1,6 @@
 #!/bin/sh
 # Instructor tooling: not part of any assignment. `make test-judge`: proves the split suites
-# (tests/seam/seam.h) in a scratch copy of the tree, built with LTO=0 as the grader builds:
+# (grader/seam/seam.h) in a scratch copy of the tree, built with LTO=0 as the grader builds:
 #   1. the solution: every test of every part passes split (subject | judge, one test at a time),
 #      exactly as it passes in test-partN;
 #   2. the stubs, one part at a time: the split verdicts equal test-partN's (every test fails), and

@@ -54,7 +54,7 @@ void check_failed_invariant(const char *what, const char *file, int line);
 /* cmocka setup/teardown that reset and silence the stub counter; use for every student-code test. */
 int test_setup(void **state);
 
-/* The grader's split suites (tests/seam/seam.h) run the part's functions in one process and the test
+/* The grader's split suites (grader/seam/seam.h) run the part's functions in one process and the test
  * in another, which replays their answers in the order they were given: there a test calls part code
  * from one thread at a time. pl_test_split is set before main in those binaries only. */
 extern bool pl_test_split;

@@ -13,7 +13,7 @@
  * Passes: 0 */
 #include "part5.h"
 #include "../../framework/todo.h"
-#include "../../tests/seam/seam.h"
+#include "../../grader/seam/seam.h"
 #include <unistd.h>
 
 bool adaptive_converged(int n, double s1, double s2, float tol)

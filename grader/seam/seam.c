@@ -1,7 +1,7 @@
 /* Grader machinery: not part of any assignment. What the subject and the judge share (seam.h): the
  * table of part functions and the hash of a call's inputs. */
 #include "seam.h"
-#include "../common/test.h"
+#include "../../tests/common/test.h"
 #include "../../framework/render.h"
 #include <string.h>
 

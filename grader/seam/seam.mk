@@ -1,27 +1,28 @@
-# The split suites (tests/seam/seam.h): the grader runs a part's tests as subject | judge. This fragment
-# lives beside the seam's sources because a part's grading tree holds tests/ but not grader/.
+# The split suites (grader/seam/seam.h): the grader runs a part's tests as subject | judge. The
+# machinery is the grader's (grader/README.md); the programs it links are test programs (the part's
+# suite and tests/common), built by the course's make before any student code is seen.
 #
 # subject-partN: test-partN's objects with part N's functions wrapped, each call recorded to fd 3.
 # judge-partN: the same tests, framework and other parts, with part N's functions replayed from
 # stdin: it links no object of part N. The function names come from the part's header, so the
-# wrappers cannot miss one the header declares (the seam's table, tests/seam/seam.c, names them too).
+# wrappers cannot miss one the header declares (the seam's table, grader/seam/seam.c, names them too).
 # A part's folder (parts/part<N>_<name>/), found by its header.
 part_dir    = $(dir $(wildcard parts/*/part$(1).h))
 part_obj    = $(patsubst %.c,$(BUILD)/%.o,$(wildcard $(call part_dir,$(1))*.c))
 paren      := (
 part_fns    = $(shell sed -n 's/^[a-z_]* [*]*\([a-z_0-9]*\)[$(paren)].*/\1/p' $(wildcard parts/*/part$(1).h))
-seam_obj    = $(addprefix $(BUILD)/tests/seam/$(1)/,seam.o $(2).o seam_part$(3).o)
+seam_obj    = $(addprefix $(BUILD)/grader/seam/$(1)/,seam.o $(2).o seam_part$(3).o)
 
 # ld --wrap redirects only calls the linker resolves: link-time optimisation resolves calls inside its
 # unit first and would bypass the wrappers, so the split binaries need LTO=0 (the grader's builds) or SAN=1.
 split_lto_off = $(or $(filter 1,$(SAN)),$(filter 0,$(strip $(LTO))))
 split_refuse  = $(if $(split_lto_off),,@echo "ERROR: $@ needs LTO=0 (ld --wrap misses calls that LTO resolves)"; exit 1)
 
-$(BUILD)/tests/seam/subject/%.o: tests/seam/%.c
+$(BUILD)/grader/seam/subject/%.o: grader/seam/%.c
 	$(say) CC "$< (subject)"
 	@mkdir -p $(dir $@)
 	$(Q)$(CC) $(CPPFLAGS) $(shell pkg-config --cflags $(TPKGS)) $(CFLAGS) -DPL_SEAM_SUBJECT -c -o $@ $<
-$(BUILD)/tests/seam/judge/%.o: tests/seam/%.c
+$(BUILD)/grader/seam/judge/%.o: grader/seam/%.c
 	$(say) CC "$< (judge)"
 	@mkdir -p $(dir $@)
 	$(Q)$(CC) $(CPPFLAGS) $(shell pkg-config --cflags $(TPKGS)) $(CFLAGS) -DPL_SEAM_JUDGE -c -o $@ $<

@@ -2,7 +2,7 @@
  * N's functions answer from the subject's records ($PL_SEAM_FD, else stdin). Nothing read is trusted:
  * every length is bounded before it is used, and anything wrong fails the running test. */
 #include "seam.h"
-#include "../common/test.h"
+#include "../../tests/common/test.h"
 #include "../../framework/todo.h"
 #include <errno.h>
 #include <pthread.h>
