@@ -8,7 +8,7 @@
  *
  * Modules: grade_cases.c (grading/cases.json), grade_run.c (children with limits and timeouts),
  * grade_part.c (build, suite, cases of one part), grade_judge.c (a submission's suite, split into
- * subject and judge processes per test: tests/seam/seam.h), grade_report.c (table, results.json,
+ * subject and judge processes per test: grader/seam/seam.h), grade_report.c (table, results.json,
  * HTML). */
 #ifndef PL_GRADE_H
 #define PL_GRADE_H
@@ -128,6 +128,14 @@ typedef struct {
     grade_part_result parts[GRADE_NUM_PARTS];
     int num_parts;
 } grade_result;
+
+/* ---- the score (grade_score.c: the one place points are computed) ---------------------------- */
+
+/* Part p's unit, case and total points in r, from its verdicts: the tests run and failed (none
+ * count when r->suite_reason says the suite could not be judged) and each case's pass. */
+void grade_score_part(const grade_part_spec *p, grade_part_result *r);
+/* The whole grading's points, and its maximum in *max. */
+double grade_score_total(const grade_result *r, double *max);
 
 /* ---- running children ---------------------------------------------------------------------- */
 
@@ -260,10 +268,11 @@ typedef struct {
 void grade_part(const grade_env *env, const grade_spec *spec, const grade_part_spec *p, grade_part_result *r);
 /* Fresh scratch for part `part`: work/partN (the grader's: logs) and work/partN/renders (the child's). */
 bool grade_part_dirs(const grade_env *env, int part);
-/* Scores the cmocka XML files in dir: points times the share of tests passed, or zero with a reason
- * in r->suite_reason when the results are missing or malformed, or hold other than `expected` tests
- * (the suite stopped early, or the files are not its own), or disagree with the exit status. */
-void grade_suite_score(const char *dir, int expected, double points, int status, grade_part_result *r);
+/* Reads the cmocka XML files in dir into r's tests run and failed (grade_score_part makes points of
+ * them), or leaves a reason in r->suite_reason when the results are missing or malformed, or hold
+ * other than `expected` tests (the suite stopped early, or the files are not its own), or disagree
+ * with the exit status. */
+void grade_suite_results(const char *dir, int expected, int status, grade_part_result *r);
 /* The split suite (grade_judge.c): each of part p's tests run as the subject (tree's
  * bin/subject-partN: the submission's code, contained) piped into the judge (the course's
  * bin/judge-partN under env->root, trusted, no student code), scored from the judge's results only. */

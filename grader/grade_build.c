@@ -185,18 +185,27 @@ static bool lay_out_sources(const char *course, const char *submitted, const cha
 
 /* ---- compile ------------------------------------------------------------------------------- */
 
+/* Whether the compiler's log says it ran out of memory (cc1 reports it; the kernel's kill is a signal). */
+static bool out_of_memory(const char *log)
+{
+    char tail[4096];
+    grade_log_tail(log, 20, tail, sizeof tail);
+    return strstr(tail, "out of memory") || strstr(tail, "memory exhausted") || strstr(tail, "Killed signal");
+}
+
 /* The build's verdict when a step failed, in the grader's words: what limit it ran past, or that
  * it does not compile (the compiler's own lines for the part's files are shown beside it). */
 static void build_verdict(const grade_run_result *rr, int n, const char *step, const char *name, double limit,
-                          grade_part_result *r)
+                          const char *log, grade_part_result *r)
 {
-    if (rr->timed_out) grade_msg(r->suite_reason, sizeof r->suite_reason, "part %d's %s of %s ran past %.0f s", n, step, name, limit);
+    if (rr->timed_out) grade_msg(r->suite_reason, sizeof r->suite_reason, "part %d's build ran past %.0f s: the %s of %s",
+                                 n, limit, step, name);
     else if (rr->output_cut)
-        grade_msg(r->suite_reason, sizeof r->suite_reason, "part %d's %s of %s printed more than %d KiB", n, step, name,
-                  GRADE_LOG_MAX / 1024);
-    else if (!rr->exited)
-        grade_msg(r->suite_reason, sizeof r->suite_reason, "part %d's %s of %s was stopped: it ran past its CPU time or "
-                  "memory (%ld MiB)", n, step, name, GRADE_COMPILER_MEMORY >> 20);
+        grade_msg(r->suite_reason, sizeof r->suite_reason, "part %d's build printed more than %d KiB: the %s of %s", n,
+                  GRADE_LOG_MAX / 1024, step, name);
+    else if (out_of_memory(log) || !rr->exited)
+        grade_msg(r->suite_reason, sizeof r->suite_reason, "part %d's build ran past its memory limit (%ld MiB) or its "
+                  "CPU time: the %s of %s", n, GRADE_COMPILER_MEMORY >> 20, step, name);
     else grade_msg(r->suite_reason, sizeof r->suite_reason, "part %d does not %s: %s", n, step, name);
 }
 
@@ -244,7 +253,7 @@ static bool compile_all(const grade_env *env, int n, const char *folder, const g
         grade_run_result rr = grade_run(argv, &o);
         append_log(log, r->build_log);
         if (!rr.exited || rr.status != 0) {
-            build_verdict(&rr, n, "compile", m->names[i], GRADE_COMPILE_SECONDS, r);
+            build_verdict(&rr, n, "compile", m->names[i], GRADE_COMPILE_SECONDS, log, r);
             ok = false;
         }
     }
@@ -404,7 +413,7 @@ bool grade_build_submission(const grade_env *env, int n, const char *tree, grade
         grade_run_result rr = {.exited = true, .status = 1};
         if (!link_program(course, tree, folder, &m, programs[k], log, &rr)) {
             append_log(log, r->build_log);
-            build_verdict(&rr, n, "link", programs[k], GRADE_LINK_SECONDS, r);
+            build_verdict(&rr, n, "link", programs[k], GRADE_LINK_SECONDS, log, r);
             ok = false;
         }
     }

@@ -339,7 +339,6 @@ static void judge(const grade_env *env, const grade_spec *spec, int part, const 
         }
         c->pass = figures && c->v.pass;
         c->chance_failure = figures && !c->v.pass && !c->v.deterministic && c->v.bad_pixels == 0;
-        c->score = c->pass ? k->points : 0.0;
         if (!c->pass && !k->hidden) point_at_pixels(env, k, &cand, refimg, c);  /* a hidden case: no pixels */
         write_pictures(env, part, c, &cand, refimg);
     }

@@ -1,4 +1,4 @@
-/* Grader machinery: not part of any assignment. The split suite of one part (tests/seam/seam.h says
+/* Grader machinery: not part of any assignment. The split suite of one part (grader/seam/seam.h says
  * how the two halves work): for each test, the subject runs the submission's code, contained, and
  * writes its calls' answers to a pipe; the judge, the course's binary with no student code in it,
  * runs the same test on those answers. Only the judge's results count: what the subject prints,
@@ -155,10 +155,4 @@ void grade_judge_suite(const grade_env *env, const char *tree, const grade_part_
         }
         run_test(env, tree, judge, p->part, list.names[k], dir, k, r);
     }
-    if (r->suite_reason[0]) {
-        r->tests_run = r->tests_failed = 0;
-        r->failures[0] = '\0';
-        r->unit_score = 0;
-    } else
-        r->unit_score = p->unit_points * (double)(r->tests_run - r->tests_failed) / r->tests_run;
 }

@@ -86,7 +86,7 @@ void grade_log_tail(const char *path, int lines, char *out, size_t size)
 
 /* ---- the suite: verdicts from cmocka's XML files, one per test group ------------------------- */
 
-void grade_suite_score(const char *dir, int expected, double points, int status, grade_part_result *r)
+void grade_suite_results(const char *dir, int expected, int status, grade_part_result *r)
 {
     r->tests_run = r->tests_failed = 0;
     r->failures[0] = '\0';
@@ -108,13 +108,6 @@ void grade_suite_score(const char *dir, int expected, double points, int status,
         grade_msg(r->suite_reason, sizeof r->suite_reason, "the suite exited with status 1 but reported no failure");
     else if (status != 0 && status != 1)
         grade_msg(r->suite_reason, sizeof r->suite_reason, "the suite exited with status %d", status);
-    if (r->suite_reason[0]) {
-        r->tests_run = r->tests_failed = 0;
-        r->failures[0] = '\0';
-        r->unit_score = 0;
-    }
-    else
-        r->unit_score = points * (double)(r->tests_run - r->tests_failed) / r->tests_run;
 }
 
 static void run_suite(const grade_env *env, const char *tree, const grade_part_spec *p, grade_part_result *r)
@@ -142,7 +135,7 @@ static void run_suite(const grade_env *env, const char *tree, const grade_part_s
         grade_run_describe(&rr, r->suite_reason, sizeof r->suite_reason);
         return;
     }
-    grade_suite_score(dir, p->unit_tests, p->unit_points, rr.status, r);
+    grade_suite_results(dir, p->unit_tests, rr.status, r);
 }
 
 /* ---- one part -------------------------------------------------------------------------------- */
@@ -155,45 +148,17 @@ bool grade_part_dirs(const grade_env *env, int part)
     return grade_guard_child_dir(dir, &env->sandbox, false) && chmod(dir, 0700) == 0;
 }
 
-/* Test machinery: PL_GRADE_SWEEP="PROBE ROOT..." runs bin/grade-probe's sweep in the part's tree,
- * as its code runs, once the part is built (tests/grader/sandbox.sh); the staff log says what it
- * found. PL_SWEEP_NEEDLES is handed to it, and to nothing else. */
-static void sweep_hook(const grade_env *env, const char *tree, int part)
-{
-    const char *spec = getenv("PL_GRADE_SWEEP"), *needles = getenv("PL_SWEEP_NEEDLES");
-    if (!spec || !needles) return;
-    char copy[4096], log[4200], needle_env[65536], tail[512], *argv[32];
-    int n = 0;
-    grade_path(copy, sizeof copy, "%s", spec);
-    for (char *save = NULL, *t = strtok_r(copy, " ", &save); t && n < 30; t = strtok_r(NULL, " ", &save)) {
-        argv[n++] = t;
-        if (n == 1) argv[n++] = "sweep";
-    }
-    argv[n] = NULL;
-    grade_path(log, sizeof log, "%s/part%d/sweep.log", env->work, part);
-    grade_path(needle_env, sizeof needle_env, "PL_SWEEP_NEEDLES=%s", needles);
-    char *envv[] = {needle_env, NULL};
-    grade_run_opts o = {.wall_seconds = GRADE_SUITE_SECONDS, .cwd = tree, .log_path = log, .log_max = GRADE_LOG_MAX,
-                        .env = envv, .untrusted = env->submission != NULL};
-    grade_run_result rr = grade_run(argv, &o);
-    grade_log_tail(log, 3, tail, sizeof tail);
-    fprintf(stderr, "grade: part %d: sweep as student code: exit %d: %s\n", part, rr.exited ? rr.status : -1, tail);
-}
-
 /* The part's cases, listed in r with their points before anything runs (every case is in the
  * results whatever happens). */
 static void list_cases(const grade_env *env, const grade_part_spec *p, grade_part_result *r)
 {
     memset(r, 0, sizeof *r);
     r->part = p->part;
-    r->unit_max = p->unit_points;
-    r->max_score = p->unit_points;
     for (int i = 0; i < p->num_cases; i++) {
         if (env->public_only && p->cases[i].hidden) continue;
         grade_case_result *c = &r->cases[r->num_cases++];
         memset(c, 0, sizeof *c);
         c->spec = &p->cases[i];
-        r->max_score += p->cases[i].points;
     }
 }
 
@@ -225,7 +190,6 @@ void grade_part(const grade_env *env, const grade_spec *spec, const grade_part_s
     if (env->submission) grade_path(tree, sizeof tree, "%s/part%d", env->sandbox_dir, p->part);
     else grade_path(tree, sizeof tree, "%s", env->root);
     if (ready(env, tree, p->part, r)) {
-        sweep_hook(env, tree, p->part);
         /* A submission's verdicts come from the course's judge (grade_judge.c), never from a process
          * its code ran in; a student's own tree runs its suite whole, faster and theirs to trust. */
         if (env->submission) grade_judge_suite(env, tree, p, r);
@@ -236,6 +200,5 @@ void grade_part(const grade_env *env, const grade_spec *spec, const grade_part_s
     grade_path(suite, sizeof suite, "%s/part%d-suite", env->sandbox_dir, p->part);
     grade_tree_remove(suite);
     if (env->submission) grade_tree_remove(tree);
-    r->score = r->unit_score;
-    for (int i = 0; i < r->num_cases; i++) r->score += r->cases[i].score;
+    grade_score_part(p, r);
 }

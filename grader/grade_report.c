@@ -227,7 +227,7 @@ static void print_trace_pixels(const grade_result *r, FILE *out)
 /* A line per part (unit tests passed, cases matched, score), the total, and the pixels to trace. */
 void grade_print_table(const grade_result *r, FILE *out)
 {
-    double total = 0, max = 0;
+    double max, total = grade_score_total(r, &max);
     fprintf(out, "%-5s  %-12s  %-24s  %s\n", "part", "unit tests", "image cases", "score");
     for (int i = 0; i < r->num_parts; i++) {
         const grade_part_result *p = &r->parts[i];
@@ -238,8 +238,6 @@ void grade_print_table(const grade_result *r, FILE *out)
         else snprintf(unit, sizeof unit, "%d/%d passed", p->tests_run - p->tests_failed, p->tests_run);
         fprintf(out, "%-5d  %-12s  %2d/%-2d matched            %5.1f / %.1f\n", p->part, unit, passed, p->num_cases,
                 p->score, p->max_score);
-        total += p->score;
-        max += p->max_score;
     }
     fprintf(out, "total%52.1f / %.1f   (seed %llu, %.0f s)\n", total, max, (unsigned long long)r->seed,
             run_seconds(r));
@@ -288,12 +286,11 @@ static bool append_entry(json_t *tests, json_t *entry)
 pl_status grade_write_results_json(const grade_result *r, const char *path, pl_diag *diag)
 {
     json_t *tests = json_array();
-    double total = 0;
+    double max, total = grade_score_total(r, &max);
     bool complete = tests != NULL;
     for (int i = 0; i < r->num_parts; i++) {
         const grade_part_result *p = &r->parts[i];
         char name[128], text[sizeof p->build_output + 1024];
-        total += p->score;
         snprintf(name, sizeof name, "Part %d: unit tests", p->part);
         /* Unit tests: why nothing was earned (with the compiler's last lines, the student's own
          * files only: grade_diag.c), or how many passed and the failures' messages. */

@@ -134,7 +134,9 @@ static void confine(const grade_run_opts *o)
      * where it sees everything read-only but its output, and /tmp, /var/tmp, /dev/shm of its own. */
     if (sandbox.isolated) {
         sandbox_isolate();
-        if (!sandbox_private_view(sandbox.dir, o->writable, GRADE_TMP_BYTES) || (o->cwd && chdir(o->cwd) != 0))
+        /* The sandbox's folder stays in view (else the stage's own folder: a test's scratch). */
+        if (!sandbox_private_view(sandbox.dir ? sandbox.dir : o->cwd, o->writable, GRADE_TMP_BYTES) ||
+            (o->cwd && chdir(o->cwd) != 0))
             _exit(126);
     }
     if (sandbox.as_other_user) {

@@ -52,7 +52,8 @@ static long file_size(const char *path)
 static int run_untrusted(const char *script, const char *log)
 {
     char *argv[] = {"sh", "-c", (char *)script, NULL};
-    grade_run_opts o = {.wall_seconds = 30, .log_path = log, .log_max = 4096, .untrusted = true, .compiler = true};
+    grade_run_opts o = {.wall_seconds = 30, .cwd = scratch, .log_path = log, .log_max = 4096, .untrusted = true,
+                        .compiler = true};
     grade_run_result r = grade_run(argv, &o);
     return r.exited ? r.status : -1;
 }
@@ -111,13 +112,21 @@ static void write_suite_xml(const char *dir, const char *name, int tests, int fa
     assert_int_equal(fclose(f), 0);
 }
 
-static void score_dir(const char *name, grade_part_result *r)
+/* The suite's results in dir, scored as grade_part scores them (10 unit points, no case). */
+static void score_results(const char *dir, int status, grade_part_result *r)
 {
+    grade_part_spec spec = {.part = 1, .unit_points = 10.0, .unit_tests = 28};
     memset(r, 0, sizeof *r);
     r->part = 1;
+    grade_suite_results(dir, 28, status, r);
+    grade_score_part(&spec, r);
+}
+
+static void score_dir(const char *name, grade_part_result *r)
+{
     char dir[256];
     snprintf(dir, sizeof dir, "%s/%s", scratch, name);
-    grade_suite_score(dir, 28, 10.0, 0, r);
+    score_results(dir, 0, r);
 }
 
 static void test_suite_score__only_a_suite_run_to_its_end(void **state)
@@ -130,9 +139,7 @@ static void test_suite_score__only_a_suite_run_to_its_end(void **state)
     assert_int_equal(mkdir(dir, 0755), 0);
     write_suite_xml(dir, "a", 20, 1);
     write_suite_xml(dir, "b", 8, 0);
-    memset(&r, 0, sizeof r);
-    r.part = 1;
-    grade_suite_score(dir, 28, 10.0, 1, &r);
+    score_results(dir, 1, &r);
     assert_string_equal(r.suite_reason, "");
     assert_true(r.unit_score > 9.64 && r.unit_score < 9.65);
 
