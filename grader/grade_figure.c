@@ -1,6 +1,10 @@
 /* Grader machinery: not part of any assignment. Figures shown to a student: grade_figure.h. */
 #include "grade_figure.h"
+#include <ctype.h>
 #include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
 
 double grade_figure(double x, int digits, double lo, double hi)
 {
@@ -21,4 +25,52 @@ long grade_figure_count(long count, long pixels)
 int grade_figure_pixel(int coordinate, int size)
 {
     return coordinate < 0 ? 0 : coordinate >= size ? (size > 0 ? size - 1 : 0) : coordinate;
+}
+
+/* Appends text (n bytes) to out if it fits whole; false when it does not. */
+static bool append(char *out, size_t size, size_t *used, const char *text, size_t n)
+{
+    if (*used + n + 1 > size) return false;
+    memcpy(out + *used, text, n);
+    *used += n;
+    out[*used] = '\0';
+    return true;
+}
+
+void grade_figure_text(const char *in, char *out, size_t size)
+{
+    size_t used = 0;
+    out[0] = '\0';
+    for (const char *p = in; *p;) {
+        /* A number starts at a digit that does not continue a name ("part1", "vec3") or a number. */
+        bool starts = isdigit((unsigned char)*p) &&
+                      (p == in || !(isalnum((unsigned char)p[-1]) || p[-1] == '_' || p[-1] == '.'));
+        if (!starts) {
+            size_t n = 1;
+            while ((p[n] & 0xC0) == 0x80) n++;  /* a whole character, never half of one */
+            if (!append(out, size, &used, p, n)) return;
+            p += n;
+            continue;
+        }
+        char shown[48];
+        const char *end;
+        if (p[0] == '0' && (p[1] == 'x' || p[1] == 'X')) {
+            end = p + 2;
+            while (isxdigit((unsigned char)*end)) end++;
+            if (end - p > 6) snprintf(shown, sizeof shown, "0x...");
+            else snprintf(shown, sizeof shown, "%.*s", (int)(end - p), p);
+        }
+        else {
+            char *stop;
+            double x = strtod(p, &stop);
+            end = stop;
+            size_t whole = strspn(p, "0123456789");
+            bool wide = (size_t)(end - p) != whole || whole > 4;
+            if (wide) snprintf(shown, sizeof shown, "%.*g", GRADE_FIGURE_DIGITS,
+                               grade_figure(x, GRADE_FIGURE_DIGITS, -1e300, 1e300));
+            else snprintf(shown, sizeof shown, "%.*s", (int)(end - p), p);
+        }
+        if (!append(out, size, &used, shown, strlen(shown))) return;
+        p = end;
+    }
 }

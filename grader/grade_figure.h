@@ -9,6 +9,7 @@
 #define PL_GRADE_FIGURE_H
 
 #include <stdbool.h>
+#include <stddef.h>
 
 #define GRADE_FIGURE_DIGITS 3         /* significant digits of a public case's figure */
 #define GRADE_FIGURE_COARSE_DIGITS 2  /* of a hidden case's (its mean ratio alone) */
@@ -37,5 +38,12 @@ long grade_figure_count(long count, long pixels);
 
 /* A pixel coordinate the candidate's image decides, clamped into [0, size - 1]. */
 int grade_figure_pixel(int coordinate, int size);
+
+/* A message of the course's tests about the candidate's answers (a failed unit test's "expected
+ * 0.318310, got 0.999999"), copied into out (size >= 1, always NUL-terminated, cut at a character
+ * boundary): every number in it with a fraction or an exponent, and every whole number of more than
+ * 4 digits, rounded to GRADE_FIGURE_DIGITS significant digits; a hexadecimal one of more than 4
+ * digits shown as "0x...". Line numbers, test names and the like keep their digits. */
+void grade_figure_text(const char *in, char *out, size_t size);
 
 #endif

@@ -2,6 +2,7 @@
  * (grade_suite.h). The files are written by student code: read as hostile (no links, a size cap, no
  * DTD, no network), and anything the suite would not write makes the whole suite unreadable. */
 #include "grade_suite.h"
+#include "grade_figure.h"
 #include "grade_guard.h"
 #include <dirent.h>
 #include <libxml/parser.h>
@@ -36,7 +37,10 @@ static void add_failure(grade_part_result *r, xmlNodePtr t, xmlNodePtr v)
 {
     xmlChar *name = xmlGetProp(t, (const xmlChar *)"name");
     xmlChar *msg = is_element(v, "skipped") ? NULL : xmlNodeGetContent(v);
-    char *text = msg ? (char *)msg : (char *)"skipped: a skipped test is not a passed one";
+    char rounded[MESSAGE_MAX + 64];
+    /* The message is the course's test's, but its numbers are the candidate's answers: rounded. */
+    grade_figure_text(msg ? (char *)msg : "", rounded, sizeof rounded);
+    char *text = msg ? rounded : (char *)"skipped: a skipped test is not a passed one";
     /* cmocka ends every failure with "<file>:<line>: error: Failure!": keep the place. */
     char *tail = strstr(text, ": error: Failure!");
     if (tail) *tail = '\0';

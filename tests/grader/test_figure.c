@@ -38,6 +38,22 @@ static void test_figure__rounded_to_three_digits_and_clamped(void **state)
     assert_int_equal(grade_figure_pixel(42, 160), 42);
 }
 
+/* A unit test's message about the candidate's answers: its numbers rounded, its places kept. */
+static void test_figure__a_test_message_shows_rounded_numbers(void **state)
+{
+    (void)state;
+    char out[256];
+    grade_figure_text("tests/part3/test_bsdf.c:123: bsdf_f: wrong: expected 0.318309886, got 0.12345678901234 "
+                      "(tolerance 1e-05)", out, sizeof out);
+    assert_string_equal(out, "tests/part3/test_bsdf.c:123: bsdf_f: wrong: expected 0.318, got 0.123 (tolerance 1e-05)");
+    /* Wide whole numbers and hexadecimal ones carry bytes too; names with digits stay as they are. */
+    grade_figure_text("part2 visited 1234567 nodes of vec3 table, flags 0x1122334455667788 or 0x5", out, sizeof out);
+    assert_string_equal(out, "part2 visited 1.23e+06 nodes of vec3 table, flags 0x... or 0x5");
+    /* Cut at a character, never inside one, and never past the buffer. */
+    grade_figure_text("\xc3\xa9t\xc3\xa9 1.23456", out, 4);
+    assert_string_equal(out, "\xc3\xa9t");
+}
+
 /* results.json's text of one case: its "output". */
 static char *case_output(const char *path, int index)
 {
@@ -105,6 +121,7 @@ int figure_tests(void)
 {
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(test_figure__rounded_to_three_digits_and_clamped),
+        cmocka_unit_test(test_figure__a_test_message_shows_rounded_numbers),
         cmocka_unit_test_setup_teardown(test_report__figures_rounded_and_a_hidden_case_coarse, scratch_setup,
                                         scratch_teardown),
     };
