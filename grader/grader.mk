@@ -39,11 +39,12 @@ $(GRADE_RECIPES): FORCE
 	   echo '$(call grade_link,$(BIN)/subject-part$(n),$(foreach f,$(call part_fns,$(n)),-Wl$(comma)--wrap=$(f)) $(call suite_obj,part$(n)) $(COMMON_OBJ) $(LIB_OBJ) $(call seam_obj,subject,record,$(n)),$(shell pkg-config --libs $(TPKGS)))';) \
 	 } >$@.tmp && mv $@.tmp $@
 
-# The sandbox's self-test: tries what the filter forbids, and sweeps folders for secret bytes.
-$(BIN)/grade-probe: $(BUILD)/grader/probe_main.o
+# The sandbox's self-test: tries what the filter forbids, and sweeps folders for secret bytes, as a
+# stage of a grading is confined (it links the grader's library for that).
+$(BIN)/grade-probe: $(BUILD)/grader/probe_main.o $(GRADER_OBJ) $(GRADER_FRAMEWORK_OBJ)
 	$(say) LD $@
 	@mkdir -p $(dir $@)
-	$(Q)$(CC) $(LDFLAGS) -o $@ $^ $(LDLIBS)
+	$(Q)$(CC) $(LDFLAGS) -o $@ $^ $(LDLIBS) $(GRADER_LIBS)
 
 # The grader's suite (make test-grader) tests its modules, all but main, so it links them; it runs
 # bin/grade itself once (a clean run, leak detection on under SAN=1) and bin/grade-probe under the

@@ -11,6 +11,12 @@
  *                              in PL_SWEEP_NEEDLES (hex, comma-separated): prints each needle
  *                              found and where ("FOUND secret K in PATH", K counted from 0) and
  *                              exits 1, else prints how much it read and exits 0. A ROOT may be a file.
+ *   grade-probe stage build|run SANDBOX ROOT...
+ *                              as root: runs `grade-probe sweep ROOT...` (PL_SWEEP_NEEDLES passed
+ *                              on) confined as the grader confines that stage (grade_run.c: the
+ *                              build's compiler, or a suite's or a render's code), with SANDBOX as
+ *                              the sandbox's folder, and prints what it printed; exits as it did.
+ *                              tests/grader/sandbox.sh runs it while a real grading is under way.
  * It is the student's view of the machine: it runs under the same filter, user and limits. */
 #include <dirent.h>
 #include <errno.h>
@@ -29,6 +35,7 @@
 #include <sys/wait.h>
 #include <time.h>
 #include <unistd.h>
+#include "grade.h"
 #include "sandbox.h"
 
 static int failures;
@@ -154,6 +161,52 @@ static void sweep(const char *dir, int depth, int *found)
     if (d) closedir(d);
 }
 
+/* grade-probe stage build|run SANDBOX ROOT...: the sweep, confined as that stage of a grading is. */
+static int as_stage(int argc, char **argv)
+{
+    static char *args[64], needle_env[1 << 20], self[4096], log_dir[] = "/tmp/pathlab-probe.XXXXXX", log[64];
+    ssize_t n = readlink("/proc/self/exe", self, sizeof self - 1);
+    const char *given = getenv("PL_SWEEP_NEEDLES");
+    if (n <= 0 || !given || argc > 60 || geteuid() != 0 || !mkdtemp(log_dir)) {
+        fprintf(stderr, "grade-probe stage: run as root, with PL_SWEEP_NEEDLES, at most 56 roots\n");
+        return 2;
+    }
+    self[n] = '\0';
+    /* The probe runs from a copy in the sandbox's folder: the one place sure to be in the stage's
+     * view and reachable by its user (a course tree's bin/ is closed once a grading ran in it). */
+    char copy[4200], command[3 * 4200 + 64];
+    snprintf(copy, sizeof copy, "%s/grade-probe.%d", argv[3], (int)getpid());
+    snprintf(command, sizeof command, "cp '%s' '%s' && chmod 755 '%s'", self, copy, copy);
+    if (system(command) != 0) {
+        fprintf(stderr, "grade-probe stage: cannot copy itself into %s\n", argv[3]);
+        return 2;
+    }
+    snprintf(needle_env, sizeof needle_env, "PL_SWEEP_NEEDLES=%s", given);
+    snprintf(log, sizeof log, "%s/sweep.log", log_dir);
+    int k = 0;
+    args[k++] = copy;
+    args[k++] = "sweep";
+    for (int i = 4; i < argc; i++) args[k++] = argv[i];
+    args[k] = NULL;
+    bool build = !strcmp(argv[2], "build");
+    grade_sandbox s = grade_sandbox_probe();
+    grade_sandbox_keep(&s, argv[3]);
+    char *envv[] = {needle_env, NULL};
+    grade_run_opts o = {.wall_seconds = 600, .cwd = argv[3], .log_path = log, .log_max = 1 << 20, .env = envv,
+                        .untrusted = true, .compiler = build, .writable = build ? argv[3] : NULL};
+    grade_run_result r = grade_run(args, &o);
+    char in_force[512], line[1024];
+    grade_sandbox_in_force(&s, in_force, sizeof in_force);
+    printf("stage %s: %s\n", argv[2], in_force);
+    FILE *f = fopen(log, "r");
+    while (f && fgets(line, sizeof line, f)) fputs(line, stdout);
+    if (f) fclose(f);
+    remove(log);
+    rmdir(log_dir);
+    remove(copy);
+    return r.exited ? r.status : 3;
+}
+
 int main(int argc, char **argv)
 {
     setvbuf(stdout, NULL, _IOLBF, 0);
@@ -161,6 +214,8 @@ int main(int argc, char **argv)
         try_forbidden();
         return failures ? 1 : 0;
     }
+    if (argc >= 4 && !strcmp(argv[1], "stage") && (!strcmp(argv[2], "build") || !strcmp(argv[2], "run")))
+        return as_stage(argc, argv);
     if (argc < 3 || strcmp(argv[1], "sweep") || !getenv("PL_SWEEP_NEEDLES") || !parse_needles(getenv("PL_SWEEP_NEEDLES"))) {
         fprintf(stderr, "usage: grade-probe forbidden | PL_SWEEP_NEEDLES=hex,... grade-probe sweep ROOT...\n");
         return 2;

@@ -14,8 +14,8 @@
 #    symbolic link in place of a file, or a function that replaces a library's (cmocka's assert)
 #    each scores zero for the part, the message naming it.
 # 7. As root: nothing secret is in reach of student code. bin/grade-probe sweeps the file system as
-#    student code runs (the sandbox's user, filter and limits, from the part's tree, while part 3 is
-#    graded) for byte sequences of every part's solution, every reference EXR and every hidden case
+#    student code runs (confined as the build's compiler, then as a suite's or a render's code, with
+#    the grading's sandbox folder, while part 3 is graded) for byte sequences of every part's solution, every reference EXR and every hidden case
 #    and scene, and finds none; the same sweep run on a folder holding one of them finds it. It
 #    sweeps the course's tree, the grader's output and sandbox folders and the usual shared places
 #    (/var/tmp, /dev/shm, /home, /root, /etc, /opt, /srv), not all of /: on a shared machine other
@@ -157,23 +157,42 @@ elif [ "$(id -u)" = 0 ]; then
     if setpriv --reuid=nobody --regid=nogroup --clear-groups "$bait/grade-probe" sweep "$bait" >"$out/bait.log" 2>&1; then
         rm -rf "$bait"; fail "the sweep does not find a hidden case in plain sight ($out/bait.log)"
     fi
-    # A stubbed submission (the graded part earns nothing, the sweep is what matters), graded with
-    # the sweep hook, its sandbox folder under a TMPDIR of its own.
+    # A stubbed submission (the graded part earns nothing, the sweep is what matters), graded in the
+    # background, its sandbox folder under a TMPDIR of its own. Once part 3's tree is built (its
+    # suite and renders are then under way, for a minute), the probe sweeps as each untrusted stage
+    # is confined: the build's compiler and the code of a suite or a render (bin/grade-probe stage).
     rm -rf "$out/sub" && mkdir -p "$out/sub"
     for f in parts/*/*; do mkdir -p "$out/sub/$(dirname "$f")"; done
     for f in parts/*/*.c parts/*/*.h; do "$strip" "$f" "$out/sub/$f" || fail "cannot strip $f"; done
     tmpbase=$(mktemp -d /tmp/pathlab-sweep.XXXXXX); chmod 711 "$tmpbase"
-    roots="$PWD $PWD/$out $tmpbase /var/tmp /dev/shm /home /root /etc /opt /srv"
-    TMPDIR=$tmpbase PL_GRADE_SWEEP="$bait/grade-probe $roots" timeout 600 \
-        bin/grade --submission "$out/sub" --parts 3 --seed 1 --out "$out/swept" >"$out/swept.log" 2>&1 || true
+    roots="$PWD $PWD/$out $tmpbase /tmp /var/tmp /dev/shm /home /root /etc /opt /srv"
+    TMPDIR=$tmpbase timeout 600 bin/grade --submission "$out/sub" --parts 3 --seed 1 --out "$out/swept" \
+        >"$out/swept.log" 2>&1 &
+    grading=$!
+    sandbox=
+    for i in $(seq 1200); do
+        sandbox=$(ls -d "$tmpbase"/pathlab-sandbox.*/part3/bin/subject-part3 2>/dev/null | head -n 1)
+        [ -n "$sandbox" ] && break
+        kill -0 $grading 2>/dev/null || break
+        sleep 0.1
+    done
+    sandbox=${sandbox%/part3/bin/subject-part3}
+    : >"$out/sweep-result"
+    if [ -n "$sandbox" ]; then
+        for stage in build run; do
+            st=0; bin/grade-probe stage $stage "$sandbox" $roots >"$out/sweep-$stage.log" 2>&1 || st=$?
+            echo "$stage: exit $st: $(tail -n 1 "$out/sweep-$stage.log")" >>"$out/sweep-result"
+        done
+    fi
+    wait $grading || true
     unset PL_SWEEP_NEEDLES
     rm -rf "$bait" "$tmpbase"
-    grep 'sweep as student code' "$out/swept.log" >"$out/sweep-result" || fail "the sweep did not run ($out/swept.log)"
-    grep -q 'exit 0: swept [0-9]* files' "$out/sweep-result" ||
-        fail "student code can read a secret: $(cat "$out/sweep-result") (see $out/swept/work/part3/sweep.log)"
-    echo "  as student code, a sweep of $(sed 's/.*swept \([0-9]*\) files.*/\1/' "$out/sweep-result") files finds none of $count secrets"
+    [ -n "$sandbox" ] || fail "part 3's tree never appeared: the sweep did not run ($out/swept.log)"
+    [ "$(grep -c 'exit 0: swept [0-9]* files' "$out/sweep-result")" = 2 ] ||
+        fail "student code can read a secret: $(cat "$out/sweep-result") (see $out/sweep-*.log)"
+    echo "  as each stage's code, while part 3 is graded: $(sed 's/: exit 0: swept \([0-9]*\) files.*/ \1 files/' "$out/sweep-result" | paste -sd, -) swept, none of $count secrets found"
     # The PID and mount namespaces where the machine gives them (a container may refuse): named either way.
-    grep -Eq 'protections in force: student code as user nobody; network namespace; (PID and mount namespaces \(own /proc\)|no PID or mount namespace); seccomp' "$out/swept.log" ||
+    grep -Eq 'protections in force: student code as user nobody; network namespace; (PID and mount namespaces|no PID or mount namespace)[^;]*; seccomp' "$out/swept.log" ||
         fail "the staff log does not name the protections in force ($out/swept.log)"
     echo "  the staff log names the protections in force"
 fi
