@@ -17,6 +17,9 @@
 #                a line of a hidden scene
 #   no-parts, linked-part, timeout   run_autograder's own fallbacks: an upload without parts/, a
 #                part folder that is a symbolic link to the solution, a grader out of time
+#   make-function-name, compile-private-tmp   the build stage: a file named like a make function is
+#                refused; a file planted in the shared /tmp is out of the compile's view
+# Afterwards no file of the sandbox's user may be left in /tmp, /var/tmp or /dev/shm.
 # Settings: AUTOGRADER_TEST_JOBS (2) cases at once; AUTOGRADER_TEST_SEED (12345) the grader's seed
 # (fixed: a correct part fails a case about once in a thousand seeds); AUTOGRADER_TEST_ONLY (a
 # regular expression of case names); AUTOGRADER_TEST_KEEP=1 keeps the temporary root.
@@ -261,6 +264,44 @@ case_timeout() {  # the grader out of time: the fallback, valid, score 0
     finish timeout
 }
 
+# Attacks on the build stage (issue 29's first class). A file *named* like a make function ran a
+# shell when the build went through make: with part 1 solved and parts 2..5 stubs, that shell
+# planted the course's objects and the whole course scored full marks. Now a name outside
+# [a-z0-9_]+.c/.h is refused before anything reads the part, and a stubbed part earns nothing.
+case_make_function_name() {
+    r=$(new_root make-function-name); mkdir -p "$r/submission/parts"
+    cp -a "$repo/parts/part1_raygen" "$r/submission/parts/"
+    cp -a "$repo/release/student/parts/part2_bvh" "$r/submission/parts/"
+    : >"$r/submission/parts/part1_raygen/x\$(shell cp -r ..\$(subst ,,)build pathlab-stash).c"
+    grade make-function-name 1,2
+    read_results make-function-name; summary=
+    graded_by_grader || problems="$problems not the grader's results;"
+    expect_part 1 0 0
+    expect_part 2 0 0
+    grep -q 'only files named with a-z, 0-9 and _' "$r/results/results.json" || problems="$problems no refusal naming the rule;"
+    finish make-function-name
+}
+
+# The compile sees the machine read-only, with a /tmp of its own: a file planted in the shared /tmp,
+# readable by everyone, is not there for an #include (a build stage that could read it could also
+# have written there for a later stage to find).
+case_compile_private_tmp() {
+    r=$(new_root compile-private-tmp); solution_parts "$r/submission"
+    planted=$(mktemp /tmp/pathlab-planted.XXXXXX) && chmod 644 "$planted" && echo 'int pl_planted;' >"$planted"
+    printf '#include "%s"\n' "$planted" >>"$r/submission/parts/part5_adaptive/adaptive.c"
+    grade compile-private-tmp 5
+    rm -f "$planted"
+    read_results compile-private-tmp; summary=
+    if [ -n "$(awk '$1 == "part" && $2 == 5' <<<"$parsed")" ] && grep -q 'No such file or directory' "$r/results/results.json"; then
+        expect_part 5 0 0
+    elif grep -q 'no PID or mount namespace' "$r/run.log"; then
+        summary="(this machine gives no mount namespace: the shared /tmp is in view, as the staff log says)"
+    else
+        problems="$problems the compile read a file planted in the shared /tmp;"
+    fi
+    finish compile-private-tmp
+}
+
 # The cases, longest first so that JOBS of them keep the cores busy to the end.
 {
     echo "case_adversary $repo/course/autograder/adversarial/loops-forever.c"
@@ -274,6 +315,8 @@ case_timeout() {  # the grader out of time: the fallback, valid, score 0
     done
     echo case_no_parts
     echo case_linked_part
+    echo case_make_function_name
+    echo case_compile_private_tmp
     echo case_timeout
 } >"$tmp/cases.txt"
 
@@ -300,8 +343,11 @@ done
 for d in "$tmp"/cases/*/; do
     [ -f "$d/verdict" ] || { echo "FAIL  $(basename "$d"): the case did not finish"; failed=$((failed + 1)); }
 done
-# Nothing outside the sandbox touched: the system() adversary's target, had it run.
+# Nothing outside the sandbox touched: the system() adversary's target, had it run, and nothing the
+# sandbox's user made in the shared temporary folders outlives the gradings.
 [ -e /tmp/stolen ] && { echo "FAIL  /tmp/stolen exists: student code ran a shell command"; failed=$((failed + 1)); }
+left=$(find /tmp /var/tmp /dev/shm -xdev -user nobody 2>/dev/null | head -n 5)
+[ -z "$left" ] || { echo "FAIL  files of the sandbox's user outlived the gradings: $left"; failed=$((failed + 1)); }
 echo
 say "$passed passed, $failed failed, $(( $(date +%s) - start )) s (seed $SEED, $JOBS at once)"
 if [ "$failed" != 0 ]; then
