@@ -13,14 +13,16 @@
  *              /tmp (grade_run.c); everywhere, nothing secret is readable by its user.
  *   take out   only <name>.o and <name>.d for each submitted <name>.c come out, regular files under
  *              the size limit, copied by the grader into a tree the sandbox's user cannot write.
+ *   inspect    the objects against the allow-list (grade_inspect.c) before anything reads them as
+ *              a program: machine code only, the symbols a part may use, no constructor, no syscall.
  *   link       as the grader, bounded, from the course's prebuilt objects of everything else (the
  *              framework's always: a submission cannot change a framework object) and those objects.
  *
  * The tree (env->sandbox_dir/part<n>) then holds what the part's suite and renders run from, the
- * other parts' objects closed to the sandbox's user; grade_part.c inspects the part's objects
- * (grade_inspect.c) before any of its code runs. */
+ * other parts' objects closed to the sandbox's user. */
 #include "grade_build.h"
 #include "grade_diag.h"
+#include "grade_inspect.h"
 #include "grade_tree.h"
 #include "../framework/file.h"
 #include "../framework/utf8.h"
@@ -404,6 +406,12 @@ bool grade_build_submission(const grade_env *env, int n, const char *tree, grade
     grade_path(to, sizeof to, "%s/parts/%s", tree, folder);
     for (int i = 0; ok && i < m.count; i++)  /* the sources the inspection names (grade_inspect.c) */
         if (m.names[i][strlen(m.names[i]) - 1] == 'c') ok = copy_file(submitted, to, m.names[i], GRADE_SOURCE_BYTES);
+    /* The objects against the allow-list, before the linker reads them as the grader. */
+    char program[4300], work[4300], why[sizeof r->suite_reason];
+    grade_path(program, sizeof program, "%s/bin/test-part%d", course, n);
+    grade_path(work, sizeof work, "%s/part%d", env->work, n);
+    if (ok && !grade_inspect_part(tree, folder, program, work, true, why, sizeof why))
+        ok = (grade_msg(r->suite_reason, sizeof r->suite_reason, "%s", why), false);
     char programs[3][32];
     snprintf(programs[0], sizeof programs[0], "bin/pathtracer");
     snprintf(programs[1], sizeof programs[1], "bin/test-part%d", n);

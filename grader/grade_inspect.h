@@ -5,12 +5,13 @@
 #include <stdbool.h>
 #include <stddef.h>
 
-/* Inspects the objects the build made from the .c files of parts/<folder> in the built tree (built
- * without LTO), with its logs in work (a folder the child cannot write). True when every object
- * keeps to the allow-list; otherwise false with why = "parts/<folder>/<file>: <what>". untrusted:
- * run the inspecting tools contained, as the build was. */
-bool grade_inspect_part(const char *tree, const char *folder, const char *work, bool untrusted, char *why,
-                        size_t size);
+/* Inspects the objects the build made from the .c files of parts/<folder> in the tree (built
+ * without LTO), before anything is linked from them, with its logs in work (a folder the child
+ * cannot write); `program` is the course's test program of the part, whose libraries (and theirs)
+ * a part may not redefine. True when every object keeps to the allow-list; otherwise false with
+ * why = "parts/<folder>/<file>: <what>". untrusted: run the inspecting tools contained. */
+bool grade_inspect_part(const char *tree, const char *folder, const char *program, const char *work, bool untrusted,
+                        char *why, size_t size);
 
 /* True when part code may refer to name: the allow-list (grade_allow.c), not counting the parts'
  * own functions, which grade_inspect_part adds. */

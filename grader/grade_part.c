@@ -162,19 +162,16 @@ static void list_cases(const grade_env *env, const grade_part_spec *p, grade_par
     }
 }
 
-/* Built, and (a submission's) keeping to the allow-list before any of it runs; else the reason is
- * in r->suite_reason and every case's. */
+/* Built (a submission's inspected against the allow-list before any of it is linked: grade_build.c);
+ * else the reason is in r->suite_reason and every case's. */
 static bool ready(const grade_env *env, const char *tree, int part, grade_part_result *r)
 {
-    char dir[4096], folder[256], why[sizeof r->suite_reason];
+    char dir[4096];
     grade_path(dir, sizeof dir, "%s/part%d", env->work, part);
     if (!grade_part_dirs(env, part)) grade_msg(r->suite_reason, sizeof r->suite_reason, "cannot create %s", dir);
     r->built = !r->suite_reason[0] &&
                (env->submission ? grade_build_submission(env, part, tree, r) : build_own_tree(env, part, r));
     if (!r->built && !r->suite_reason[0]) grade_msg(r->suite_reason, sizeof r->suite_reason, "the part does not build");
-    if (r->built && env->submission && grade_part_folder(env->root, part, folder, sizeof folder) &&
-        !grade_inspect_part(tree, folder, dir, true, why, sizeof why))
-        grade_msg(r->suite_reason, sizeof r->suite_reason, "%s", why);
     for (int i = 0; r->suite_reason[0] && i < r->num_cases; i++)
         snprintf(r->cases[i].reason, sizeof r->cases[i].reason, "%s", r->suite_reason);
     return !r->suite_reason[0];

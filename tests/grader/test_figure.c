@@ -43,9 +43,9 @@ static void test_figure__a_test_message_shows_rounded_numbers(void **state)
 {
     (void)state;
     char out[256];
-    grade_figure_text("tests/part3/test_bsdf.c:123: bsdf_f: wrong: expected 0.318309886, got 0.12345678901234 "
+    grade_figure_text("tests/part3/test_direct.c:123: bsdf_f: wrong: expected 0.318309886, got 0.12345678901234 "
                       "(tolerance 1e-05)", out, sizeof out);
-    assert_string_equal(out, "tests/part3/test_bsdf.c:123: bsdf_f: wrong: expected 0.318, got 0.123 (tolerance 1e-05)");
+    assert_string_equal(out, "tests/part3/test_direct.c:123: bsdf_f: wrong: expected 0.318, got 0.123 (tolerance 1e-05)");
     /* Wide whole numbers and hexadecimal ones carry bytes too; names with digits stay as they are. */
     grade_figure_text("part2 visited 1234567 nodes of vec3 table, flags 0x1122334455667788 or 0x5", out, sizeof out);
     assert_string_equal(out, "part2 visited 1.23e+06 nodes of vec3 table, flags 0x... or 0x5");
