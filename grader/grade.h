@@ -1,15 +1,9 @@
 /* Grader machinery: not part of any assignment.
- * bin/grade: grades a submission part by part. For each part N it builds a
- * tree from the submission's part N and the solution's other parts, runs part N's unit-test suite
- * (verdicts read from cmocka's XML files, never from the console; a submission's from the judge's
- * only) and renders part N's image cases,
- * each judged against its reference by grader/verdict.c. In a student's own tree (--cumulative) it
- * builds the tree as it is and grades the public cases, so a student sees the verdicts first.
- *
- * Modules: grade_cases.c (grading/cases.json), grade_run.c (children with limits and timeouts),
- * grade_part.c (build, suite, cases of one part), grade_judge.c (a submission's suite, split into
- * subject and judge processes per test: grader/seam/seam.h), grade_report.c (table, results.json,
- * HTML). */
+ * bin/grade grades parts one at a time: a submission's part among the course's other parts (the
+ * autograder), or a student's own tree as it is (make grade, public cases). grader/README.md maps
+ * the pipeline, spec -> plan -> build -> run -> verdicts -> score -> report, module by module, and
+ * says what each stage trusts. This header holds what the stages share: the cases, the results, the
+ * one scoring function, the children's runner and, in one block, every limit. */
 #ifndef PL_GRADE_H
 #define PL_GRADE_H
 
@@ -277,8 +271,7 @@ void grade_suite_results(const char *dir, int expected, int status, grade_part_r
  * bin/subject-partN: the submission's code, contained) piped into the judge (the course's
  * bin/judge-partN under env->root, trusted, no student code), scored from the judge's results only. */
 void grade_judge_suite(const grade_env *env, const char *tree, const grade_part_spec *p, grade_part_result *r);
-/* The last `lines` lines of the log at path, less make's progress lines, at most size - 1 bytes ("" when unreadable). */
-void grade_log_tail(const char *path, int lines, char *out, size_t size);
+
 
 /* ---- reports --------------------------------------------------------------------------------- */
 

@@ -10,6 +10,8 @@
 #include "grade.h"
 #include "grade_diag.h"
 #include "../framework/file.h"
+#include <fcntl.h>
+#include <unistd.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -91,4 +93,46 @@ void grade_diagnostics(const char *log, const char *folder, int max_lines, char 
     if (used > 0) out[used - 1] = '\0';
     make_printable(out);
     free(text);
+}
+
+/* ---- the end of a log ----------------------------------------------------------------------- */
+
+/* make's quiet progress lines ("  CC     framework/rng.c"): no help in finding the error. */
+static bool progress_line(const char *line)
+{
+    return !strncmp(line, "  CC ", 5) || !strncmp(line, "  LD ", 5);
+}
+
+void grade_log_tail(const char *path, int lines, char *out, size_t size)
+{
+    out[0] = '\0';
+    int fd = path ? open(path, O_RDONLY | O_NOFOLLOW | O_CLOEXEC) : -1;
+    char window[65536];  /* the end of the log, where the error is */
+    off_t end = fd >= 0 ? lseek(fd, 0, SEEK_END) : 0, start = end > (off_t)sizeof window - 1 ? end - (off_t)sizeof window + 1 : 0;
+    ssize_t n = fd >= 0 && size > 1 ? pread(fd, window, (size_t)(end - start), start) : -1;
+    if (fd >= 0) close(fd);
+    if (n <= 0) return;
+    window[n] = '\0';
+    /* Walk back over whole lines (less a first line the window cut) until `lines` are kept or the
+     * next would not fit; then copy them out in order. */
+    char *first = start > 0 && strchr(window, '\n') ? strchr(window, '\n') + 1 : window;
+    char *kept[256];
+    int count = 0;
+    size_t used = 0;
+    for (char *p = window + n; p > first && count < lines && count < 256;) {
+        while (p > first && p[-1] == '\n') *--p = '\0';
+        char *line = p;
+        while (line > first && line[-1] != '\n') line--;
+        if (line == p) break;
+        if (!progress_line(line)) {
+            if (used + strlen(line) + 1 >= size) break;
+            used += strlen(line) + 1;
+            kept[count++] = line;
+        }
+        p = line;
+    }
+    for (int i = count - 1; i >= 0; i--) {
+        strcat(out, kept[i]);
+        if (i > 0) strcat(out, "\n");
+    }
 }

@@ -10,4 +10,8 @@
  * bad byte becomes '?'), into out ("" when none, or the log is unreadable). */
 void grade_diagnostics(const char *log, const char *folder, int max_lines, char *out, size_t size);
 
+/* The last `lines` lines of the log at path, less make's progress lines, at most size - 1 bytes ("" when
+ * unreadable): a child's own end, for the staff log or a limit's traces. */
+void grade_log_tail(const char *path, int lines, char *out, size_t size);
+
 #endif
