@@ -165,6 +165,10 @@ double grade_score_total(const grade_result *r, double *max);
                                             these and short names, so buffers of 4096 always fit */
 #define GRADE_FILM_MAX ((long)128 << 20) /* a streamed film: 136 bytes a pixel, far above any case */
 #define GRADE_MAX_TESTS 256              /* tests in one suite: the course's largest has ~40 */
+#define GRADE_SUITE_XML_MAX (4L << 20)   /* a group's results file: far more than 100 tests need */
+/* -- what the grader shows */
+#define GRADE_DIAG_LINES 40              /* the compiler's lines about the student's own files */
+#define GRADE_MESSAGE_MAX 700            /* bytes of one failed test's message */
 
 /* Formatting into fixed buffers (grade_fmt.c). grade_path: a path, never cut: false (and a line on
  * stderr) when it does not fit, with out emptied; the caller gives up on what the path was for.

@@ -34,7 +34,6 @@
 #include <sys/stat.h>
 #include <unistd.h>
 
-#define BUILD_TAIL_LINES 40   /* of the compiler's lines about the student's files, shown */
 #define RECIPE_WORDS 1024     /* words of one recipe line: a link names ~150 objects */
 
 /* ---- the manifest -------------------------------------------------------------------------- */
@@ -425,6 +424,6 @@ bool grade_build_submission(const grade_env *env, int n, const char *tree, grade
             ok = false;
         }
     }
-    if (!ok) grade_diagnostics(r->build_log, folder, BUILD_TAIL_LINES, r->build_output, sizeof r->build_output);
+    if (!ok) grade_diagnostics(r->build_log, folder, GRADE_DIAG_LINES, r->build_output, sizeof r->build_output);
     return ok;
 }

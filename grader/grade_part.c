@@ -19,7 +19,6 @@
 #include <string.h>
 #include <sys/stat.h>
 
-#define BUILD_TAIL_LINES 40       /* of a failed build's output, shown in the report */
 
 /* A student's own tree (make grade): built by its own make, as they build it, with the course's
  * warnings whatever they exported and no sanitizer, so `make grade` and `make` share every object.
@@ -38,7 +37,7 @@ static bool build_own_tree(const grade_env *env, int n, grade_part_result *r)
     if (!ok) {
         char folder[256] = "";
         grade_part_folder(env->root, n, folder, sizeof folder);
-        grade_diagnostics(r->build_log, folder, BUILD_TAIL_LINES, r->build_output, sizeof r->build_output);
+        grade_diagnostics(r->build_log, folder, GRADE_DIAG_LINES, r->build_output, sizeof r->build_output);
         if (!rr.exited) grade_run_describe(&rr, r->suite_reason, sizeof r->suite_reason);
     }
     return ok;

@@ -12,7 +12,6 @@
 #include <string.h>
 #include <unistd.h>
 
-#define MESSAGE_MAX 700  /* bytes of one failure's message shown */
 
 static bool is_element(xmlNodePtr n, const char *name)
 {
@@ -37,7 +36,7 @@ static void add_failure(grade_part_result *r, xmlNodePtr t, xmlNodePtr v)
 {
     xmlChar *name = xmlGetProp(t, (const xmlChar *)"name");
     xmlChar *msg = is_element(v, "skipped") ? NULL : xmlNodeGetContent(v);
-    char rounded[MESSAGE_MAX + 64];
+    char rounded[GRADE_MESSAGE_MAX + 64];
     /* The message is the course's test's, but its numbers are the candidate's answers: rounded. */
     grade_figure_text(msg ? (char *)msg : "", rounded, sizeof rounded);
     char *text = msg ? rounded : (char *)"skipped: a skipped test is not a passed one";
@@ -45,8 +44,8 @@ static void add_failure(grade_part_result *r, xmlNodePtr t, xmlNodePtr v)
     char *tail = strstr(text, ": error: Failure!");
     if (tail) *tail = '\0';
     size_t cut = strlen(text);
-    if (cut > MESSAGE_MAX) {
-        cut = MESSAGE_MAX;
+    if (cut > GRADE_MESSAGE_MAX) {
+        cut = GRADE_MESSAGE_MAX;
         while (cut > 0 && ((unsigned char)text[cut] & 0xc0) == 0x80) cut--;  /* never inside a character */
     }
     size_t len = strlen(r->failures);

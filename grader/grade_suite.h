@@ -5,7 +5,6 @@
 
 #include "grade.h"
 
-#define GRADE_SUITE_XML_MAX (4L << 20)  /* a group's results file: far more than 100 tests need */
 
 /* Adds to r->tests_run, r->tests_failed and r->failures the tests of every file in dir, and accepts
  * only what the suite of part r->part writes: files named "part<N>: <group>.xml" whose one
