@@ -46,6 +46,13 @@ static bool source_name(const char *name)
     return strspn(name, "abcdefghijklmnopqrstuvwxyz0123456789_") == n - 2;
 }
 
+/* Whether name ends like C code (.c or .h, any case): a file the student meant to be built. */
+static bool looks_like_code(const char *name)
+{
+    size_t n = strlen(name);
+    return n >= 2 && name[n - 2] == '.' && strchr("cChH", name[n - 1]);
+}
+
 /* A name as the student may see it again: their own, but only when it is short printable ASCII. */
 static const char *shown_name(const char *name)
 {
@@ -55,34 +62,51 @@ static const char *shown_name(const char *name)
     return n <= 80 ? name : "a file whose name is over 80 characters";
 }
 
+/* One entry of the part's folder: taken into m, passed over (*ignored: never read, never named to a
+ * tool), or refused with why. Anything that ends like code and is not a plain file with a plain
+ * name is refused, so a student never loses a file silently; everything else (direct.c.orig,
+ * notes.txt, a folder, a hidden file) is no code and is passed over. */
+static bool manifest_entry(const char *dir, const char *folder, const char *name, grade_manifest *m, bool *ignored,
+                           char *why, size_t size)
+{
+    char path[4400];
+    struct stat st;
+    bool code = looks_like_code(name) && name[0] != '.';
+    *ignored = false;
+    if (!grade_path(path, sizeof path, "%s/%s", dir, name) || lstat(path, &st) != 0)
+        return grade_msg(why, size, "parts/%s/%s cannot be read", folder, shown_name(name)), false;
+    if (!code) return *ignored = true;
+    if (!S_ISREG(st.st_mode))
+        return grade_msg(why, size, "parts/%s/%s is %s: submit the file itself", folder, shown_name(name),
+                         S_ISDIR(st.st_mode) ? "a folder" : S_ISLNK(st.st_mode) ? "a symbolic link" : "a special file"),
+               false;
+    if (!source_name(name))
+        return grade_msg(why, size, "parts/%s/%s: only files named with a-z, 0-9 and _ and ending in .c or .h (at most "
+                                    "%d characters) are built; rename it", folder, shown_name(name), GRADE_SOURCE_NAME),
+               false;
+    if (st.st_size > GRADE_SOURCE_BYTES)
+        return grade_msg(why, size, "parts/%s/%s is over %ld KiB: a part's file is far smaller", folder, name,
+                         GRADE_SOURCE_BYTES >> 10), false;
+    if (m->count == GRADE_SOURCE_FILES)
+        return grade_msg(why, size, "parts/%s holds over %d .c and .h files", folder, GRADE_SOURCE_FILES), false;
+    snprintf(m->names[m->count++], sizeof m->names[0], "%s", name);
+    return true;
+}
+
 bool grade_manifest_read(const char *dir, const char *folder, grade_manifest *m, char *why, size_t size)
 {
     m->count = 0;
     DIR *d = opendir(dir);
     if (!d) return grade_msg(why, size, "the submission has no parts/%s folder", folder), false;
     bool ok = true;
+    int passed_over = 0;
     for (struct dirent *e; ok && (e = readdir(d));) {
-        if (e->d_name[0] == '.') continue;  /* ., .., and hidden files: never read */
-        char path[4400];
-        struct stat st;
-        if (!grade_path(path, sizeof path, "%s/%s", dir, e->d_name) || lstat(path, &st) != 0)
-            ok = (grade_msg(why, size, "parts/%s/%s cannot be read", folder, shown_name(e->d_name)), false);
-        else if (!S_ISREG(st.st_mode))
-            ok = (grade_msg(why, size, "parts/%s/%s is %s: a part's folder holds only its .c and .h files", folder,
-                            shown_name(e->d_name), S_ISDIR(st.st_mode) ? "a folder" : S_ISLNK(st.st_mode)
-                                                                          ? "a symbolic link" : "a special file"), false);
-        else if (!source_name(e->d_name))
-            ok = (grade_msg(why, size, "parts/%s/%s: only files named with a-z, 0-9 and _ and ending in .c or .h (at "
-                                       "most %d characters) are built; rename or remove it", folder,
-                            shown_name(e->d_name), GRADE_SOURCE_NAME), false);
-        else if (st.st_size > GRADE_SOURCE_BYTES)
-            ok = (grade_msg(why, size, "parts/%s/%s is over %ld KiB: a part's file is far smaller", folder, e->d_name,
-                            GRADE_SOURCE_BYTES >> 10), false);
-        else if (m->count == GRADE_SOURCE_FILES)
-            ok = (grade_msg(why, size, "parts/%s holds over %d files", folder, GRADE_SOURCE_FILES), false);
-        else
-            snprintf(m->names[m->count++], sizeof m->names[0], "%s", e->d_name);
+        if (!strcmp(e->d_name, ".") || !strcmp(e->d_name, "..")) continue;
+        bool ignored;
+        ok = manifest_entry(dir, folder, e->d_name, m, &ignored, why, size);
+        passed_over += ignored;
     }
+    if (passed_over) fprintf(stderr, "grade: parts/%s: %d entries that are not C code passed over\n", folder, passed_over);
     closedir(d);
     /* Text, read as data: UTF-8 and no NUL byte (a compiler would read on past a NUL). */
     for (int i = 0; ok && i < m->count; i++) {

@@ -8,15 +8,16 @@
 
 /* A part's submitted files, checked before anything reads them as code: regular files named
  * [a-z0-9_]+ then .c or .h (at most GRADE_SOURCE_NAME characters), at most GRADE_SOURCE_FILES of
- * them, each at most GRADE_SOURCE_BYTES of UTF-8 text without NUL bytes. Names that start with a
- * dot (.DS_Store, an editor's swap file) are passed over, never read. */
+ * them, each at most GRADE_SOURCE_BYTES of UTF-8 text without NUL bytes. An entry that ends in .c
+ * or .h any other way (another name, a link, a folder) is refused; the others (a patch's .orig, a
+ * notes file, .DS_Store) are no code, and are passed over, never read or named to any tool. */
 typedef struct {
     char names[GRADE_SOURCE_FILES][GRADE_SOURCE_NAME + 1];
     int count;
 } grade_manifest;
 
 /* The manifest of dir (the submission's parts/<folder>); false with why, in the grader's words and
- * naming the file, when anything there is not a file the build takes. */
+ * naming the file, when something there that ends like code is not a file the build takes. */
 bool grade_manifest_read(const char *dir, const char *folder, grade_manifest *m, char *why, size_t size);
 
 /* The graded build's recipes (grader/grader.mk writes them in the course's tree, before any student

@@ -5,6 +5,7 @@ int split_tests(void);
 int readers_tests(void);  /* references, suite results, results.json read as hostile */
 int allow_tests(void);  /* the allow-list, the PL_PART_API marks and the handout agree */
 int figure_tests(void);  /* what reaches the student: figures rounded, hidden cases coarse */
+int manifest_tests(void);  /* a submitted part's folder, read as data before anything builds it */
 
 int main(void)
 {
@@ -14,5 +15,6 @@ int main(void)
     failed += readers_tests();
     failed += allow_tests();
     failed += figure_tests();
+    failed += manifest_tests();
     return failed != 0;
 }
