@@ -125,15 +125,33 @@ void spawn_light_leave(light *l)
     l->leave_per_m = SPAWN_SAFETY * gamma_n(8) * (n.x + n.y + n.z);
 }
 
+/* How far short of a point or spot light at y a shadow ray of length dist ends, along the ray.
+ * A point light has no surface of its own, but a scene may put one through it (CS184's CBempty.dae
+ * hides its point light inside a non-emissive quad at the same height), and a segment that ends
+ * at y meets that surface at t = 1, inside the rounding. Across any surface through y the rounding
+ * is bounded as for an area light's quad: a few u of |y| (y and the surface's corners) plus a few
+ * u of the segment's length (its direction and part 1's differences). Along the ray that distance
+ * grows as 1 / sin of the angle between the ray and the surface, whose orientation the light does
+ * not know: divide by SPAWN_GRAZING_SIN, the shallowest angle at which a shadow ray must clear it.
+ * At most half the segment, so that a point all but at the light still gets a segment that points
+ * at it. */
+static inline float point_light_leave(vec3 y, float dist)
+{
+    vec3 a = vec3_abs(y);
+    float bound = SPAWN_SAFETY * gamma_n(8) * (a.x + a.y + a.z + 3.0f * dist);
+    return fminf(bound / SPAWN_GRAZING_SIN, 0.5f * dist);
+}
+
 ray spawn_ray_to_light(const ray *from, const hit *h, const light *l, const light_sample *ls)
 {
     if (!isfinite(ls->dist)) return spawn_ray(from, h, ls->wi);  /* directional, ambient */
 
     /* The far end: the sampled point itself, moved off an area light's surface towards p (the
-     * side it emits to: light_sample_L samples only lights p sees the front of); a point or spot
-     * light has no surface to leave. */
+     * side it emits to: light_sample_L samples only lights p sees the front of), or back along
+     * the segment from a point or spot light, clear of whatever surface passes through it. */
     vec3 y = ls->point;
     if (l->kind == LIGHT_AREA) y = vec3_add(y, vec3_scale(l->direction, l->leave_base + ls->dist * l->leave_per_m));
+    else y = vec3_sub(y, vec3_scale(ls->wi, point_light_leave(y, ls->dist)));
 
     /* The near end as for any ray leaving the surface; the segment runs from one to the other.
      * Unnormalised: t = 1 is the far end, and no square root or division is spent on it. */
