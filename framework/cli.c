@@ -62,7 +62,10 @@ void cli_print_usage(FILE *f, const char *prog)
             "  -h, --help  this text\n"
             "  --seed N          seed of every random stream (0)\n"
             "  --normals         shade by surface normal (parts 1 and 2)\n"
-            "  --cs184-camera    CS184's framing: orbit the scene centre along the file's view direction\n"
+            "  --camera literal|cs184  the file's camera as written, or CS184's framing (an orbit on the\n"
+            "                    scene's bounds along the file camera's direction). Default: cs184 for a\n"
+            "                    file in the course's profile (CGL extensions, not pathlab's own), else literal\n"
+            "  --cs184-camera    the same as --camera cs184\n"
             "  --no-bvh          intersect by linear scan even when part 2 is implemented\n"
             "  --no-rr           no Russian roulette: every path runs to -m bounces (part 4)\n"
             "  --leaf-size N     BVH max primitives per leaf (4)\n"
@@ -195,7 +198,14 @@ static int parse_long_flag(int argc, char **argv, int i, options *o, pl_status *
     int taken = 0;
     if (!strcmp(a, "--seed")) *s = parse_u64(a, VALUE(1), &o->seed, d), taken = 1;
     else if (!strcmp(a, "--normals")) o->normals = true;
-    else if (!strcmp(a, "--cs184-camera")) o->cs184_framing = true;
+    else if (!strcmp(a, "--cs184-camera")) o->framing = FRAMING_CS184;  /* the older spelling, kept */
+    else if (!strcmp(a, "--camera")) {
+        const char *v = VALUE(1);
+        if (v && !strcmp(v, "literal")) o->framing = FRAMING_LITERAL;
+        else if (v && !strcmp(v, "cs184")) o->framing = FRAMING_CS184;
+        else *s = pl_fail(d, PL_ERR_INVALID, "--camera: expected literal or cs184, got '%s'", v ? v : "nothing");
+        taken = 1;
+    }
     else if (!strcmp(a, "--no-bvh")) o->linear_scan = true;
     else if (!strcmp(a, "--no-rr")) o->no_roulette = true;
     else if (!strcmp(a, "--leaf-size")) *s = parse_int(a, VALUE(1), 1, 255, &o->max_leaf_size, d), taken = 1;
@@ -328,4 +338,21 @@ pl_status cli_parse(int argc, char **argv, options *out, cli_action *action, pl_
     if (!o.command_line) return pl_fail(d, PL_ERR_NOMEM, "out of memory");
     *out = o;
     return PL_OK;
+}
+
+/* ---- what the run says about the scene --------------------------------------------------------- */
+
+void cli_framing_line(const options *o, const scene *s, char *buf, size_t size)
+{
+    bool cs184 = camera_uses_cs184_framing(s, o);
+    const char *why = o->framing != FRAMING_AUTO ? "as asked"
+                      : cs184                    ? "the file is in the course's profile"
+                      : o->camera_file           ? "the -c file's camera"
+                                                 : "the file is not in the course's profile";
+    if (cs184)
+        snprintf(buf, size, "camera: CS184's framing, an orbit on the scene's bounds along the file camera's direction "
+                            "(%s); --camera literal for the file's own camera", why);
+    else
+        snprintf(buf, size, "camera: %s, as written (%s); --camera cs184 for CS184's framing",
+                 s->has_camera ? "the file's camera" : "no camera in the file, the default view", why);
 }

@@ -15,4 +15,11 @@ pl_status cli_parse(int argc, char **argv, options *out, cli_action *action, pl_
 void cli_free(options *o);
 void cli_print_usage(FILE *f, const char *prog);
 
+/* ---- what the run says about the scene, once it is loaded ---------------------------------- */
+struct scene;
+
+/* The status line naming the camera's framing and the option that gives the other, without a
+ * newline, into buf: "camera: CS184's framing (...); --camera literal for the file's own". */
+void cli_framing_line(const options *o, const struct scene *s, char *buf, size_t size);
+
 #endif
