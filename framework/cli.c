@@ -50,8 +50,8 @@ void cli_print_usage(FILE *f, const char *prog)
             "  -m N        max ray depth: 0 emission only, 1 direct light, ... (1)\n"
             "  -o 0|1      1: add up all bounces; 0: only the bounce at depth -m (1)\n"
             "  -e FILE     environment map (not supported yet)\n"
-            "  -b R        lens radius (0, or the -c file's)\n"
-            "  -d D        focal distance (4.7, or the -c file's)\n"
+            "  -b R        lens radius (0, or the -c file's; accepted, not used yet: the thin lens is a later part)\n"
+            "  -d D        focal distance (4.7, or the -c file's; likewise not used yet)\n"
             "  -f FILE     write the render: .png (tone-mapped), .hdr or .exr (linear), plus FILE.json\n"
             "  -r W H      image size in pixels (800 600)\n"
             "  -c FILE     CS184 camera settings file\n"
@@ -341,6 +341,42 @@ pl_status cli_parse(int argc, char **argv, options *out, cli_action *action, pl_
 }
 
 /* ---- what the run says about the scene --------------------------------------------------------- */
+
+/* Whether any primitive of s has an emissive material (something a camera or bounce ray can see). */
+static bool has_emitters(const scene *s)
+{
+    for (int i = 0; i < scene_prim_count(s); i++) {
+        int m = i < s->num_triangles ? s->triangles[i].material : s->spheres[i - s->num_triangles].material;
+        if (m >= 0 && m < s->num_materials && rgb_max(s->materials[m].Le) > 0.0f) return true;
+    }
+    return false;
+}
+
+int cli_warn_noops(const options *o, const scene *s, pl_diag *d)
+{
+    int said = 0;
+    /* No lights: light sampling has nothing to sample. Shading by normals needs none. */
+    if (s->num_lights == 0 && !o->normals) {
+        const char *name = s->path[0] ? s->path : "the scene";
+        if (!has_emitters(s))
+            pl_warn(d, "%s has no lights: the image will be black (it has no <light> and nothing emissive)", name);
+        else
+            pl_warn(d, "%s has no lights: the image will be black but for its emitters seen directly, and what "
+                       "-H or bounces (-m 2 and more) gather from them; light sampling has nothing to sample", name);
+        said++;
+    }
+    /* -b / -d: CS184's flags, parsed and checked, but no part uses a thin lens yet. */
+    if (o->lens_radius_given || o->focal_distance_given) {
+        char given[96] = "";
+        if (o->lens_radius_given) snprintf(given, sizeof given, "-b %g", (double)o->lens_radius);
+        if (o->focal_distance_given)
+            snprintf(given + strlen(given), sizeof given - strlen(given), "%s-d %g", o->lens_radius_given ? " and " : "",
+                     (double)o->focal_distance);
+        pl_warn(d, "%s accepted but not used yet: the thin lens is a later part, so this render is a pinhole camera's", given);
+        said++;
+    }
+    return said;
+}
 
 void cli_framing_line(const options *o, const scene *s, char *buf, size_t size)
 {

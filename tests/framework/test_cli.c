@@ -1,5 +1,5 @@
 /* Test machinery: not part of any assignment. Command-line parsing: CS184's flags and defaults;
- * what a run says about its scene and flags (cli_framing_line). */
+ * what a run says about its scene and flags (cli_warn_noops, cli_framing_line). */
 #include "../common/test.h"
 #include "../../framework/cli.h"
 #include "../../framework/dae.h"
@@ -128,6 +128,33 @@ static void test_cli__camera_option_selects_the_framing(void **state)
 
 /* ---- what a run says -------------------------------------------------------------------------- */
 
+typedef struct {
+    int count;
+    char all[4096];  /* every message, one per line */
+} warn_log;
+
+static void collect_warning(void *user, const char *msg)
+{
+    warn_log *w = user;
+    w->count++;
+    size_t used = strlen(w->all);
+    snprintf(w->all + used, sizeof w->all - used, "%s\n", msg);
+}
+
+/* The warnings cli_warn_noops gives for the command line args and the scene s. */
+static warn_log noops(const char **args, const scene *s)
+{
+    warn_log w;
+    memset(&w, 0, sizeof w);
+    pl_diag d = {{0}, 0, collect_warning, &w};
+    options o;
+    assert_int_equal(PL_OK, parse(&o, &d, args));
+    int said = cli_warn_noops(&o, s, &d);
+    assert_int_equal(w.count, said);
+    cli_free(&o);
+    return w;
+}
+
 /* A diffuse floor, and a point light over it unless lit is false; named like a file. */
 static void floor_scene(scene *s, bool lit, bool emissive)
 {
@@ -145,6 +172,45 @@ static void floor_scene(scene *s, bool lit, bool emissive)
         assert_true(scene_add_light(s, l) >= 0);
     }
     snprintf(s->path, sizeof s->path, "CBspheres_unlit.dae");
+}
+
+/* No lights: one line naming the file; not when the scene is lit, nor under --normals. */
+static void test_cli_warn_noops__a_scene_without_lights_says_its_image_is_black(void **state)
+{
+    scene s;
+    floor_scene(&s, false, false);
+    warn_log w = noops((const char *[]){"s.dae", NULL}, &s);
+    assert_int_equal(1, w.count);
+    assert_non_null(strstr(w.all, "CBspheres_unlit.dae has no lights: the image will be black"));
+    assert_int_equal(0, noops((const char *[]){"--normals", "s.dae", NULL}, &s).count);
+    scene_free(&s);
+
+    floor_scene(&s, false, true);  /* emitters but no lights: black but for them */
+    w = noops((const char *[]){"s.dae", NULL}, &s);
+    assert_int_equal(1, w.count);
+    assert_non_null(strstr(w.all, "CBspheres_unlit.dae has no lights: the image will be black but for its emitters"));
+    scene_free(&s);
+
+    floor_scene(&s, true, false);
+    assert_int_equal(0, noops((const char *[]){"s.dae", NULL}, &s).count);
+    scene_free(&s);
+}
+
+/* -b / -d: accepted, and said to be unused, in one line whichever of them is given. */
+static void test_cli_warn_noops__lens_flags_say_they_are_not_used_yet(void **state)
+{
+    scene s;
+    floor_scene(&s, true, false);
+    warn_log w = noops((const char *[]){"-b", "0.3", "-d", "2.0", "s.dae", NULL}, &s);
+    assert_int_equal(1, w.count);
+    assert_non_null(strstr(w.all, "-b 0.3 and -d 2 accepted but not used yet: the thin lens is a later part"));
+    w = noops((const char *[]){"-d", "2.5", "s.dae", NULL}, &s);
+    assert_int_equal(1, w.count);
+    assert_non_null(strstr(w.all, "-d 2.5 accepted but not used yet"));
+    scene_free(&s);
+    floor_scene(&s, false, false);  /* both at once: two lines, one each */
+    assert_int_equal(2, noops((const char *[]){"-b", "0.3", "s.dae", NULL}, &s).count);
+    scene_free(&s);
 }
 
 /* The status line names the framing in use and the option that gives the other. */
@@ -188,6 +254,8 @@ int cli_tests(void)
         cmocka_unit_test(test_cli__bad_values_are_named),
         cmocka_unit_test(test_cli__help_wins),
         cmocka_unit_test(test_cli__camera_option_selects_the_framing),
+        cmocka_unit_test(test_cli_warn_noops__a_scene_without_lights_says_its_image_is_black),
+        cmocka_unit_test(test_cli_warn_noops__lens_flags_say_they_are_not_used_yet),
         cmocka_unit_test(test_cli_framing_line__names_the_framing_and_the_other),
     };
     return cmocka_run_group_tests_name("cli", tests, NULL, NULL);
