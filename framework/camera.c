@@ -136,10 +136,18 @@ void camera_apply_lens_flags(camera *c, const options *o)
     if (o->focal_distance_given) c->focal_distance = o->focal_distance;
 }
 
+bool camera_uses_cs184_framing(const scene *s, const options *o)
+{
+    if (o->framing != FRAMING_AUTO) return o->framing == FRAMING_CS184;
+    /* The course's files put their cameras where only CS184's framing makes sense (the Cornell
+     * boxes' at floor height); pathlab's own scenes, and a -c file's camera, mean theirs. */
+    return s->course_profile && !o->camera_file;
+}
+
 camera camera_for_render(const scene *s, const options *o)
 {
     camera c = s->has_camera ? s->camera : camera_default_framing(scene_bounds(s));
-    if (o->cs184_framing)
+    if (camera_uses_cs184_framing(s, o))
         c = camera_cs184_framing(&c, scene_bounds(s), o->width, o->height);
     else
         camera_set_aspect(&c, (float)o->width / (float)o->height);

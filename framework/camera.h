@@ -5,8 +5,9 @@
  *
  * How a render's camera comes about (camera_for_render): the scene's camera (from its file, or
  * replaced by a -c settings file), or the default framing when the scene has none; then either
- * CS184's orbit framing (--cs184-camera) or the image's aspect ratio; then the -b / -d lens flags,
- * only when they were given. */
+ * CS184's orbit framing (camera_uses_cs184_framing: --camera cs184, or by default a file in the
+ * course's profile) or the image's aspect ratio; then the -b / -d lens flags, only when they were
+ * given. */
 #ifndef PL_CAMERA_H
 #define PL_CAMERA_H
 
@@ -65,8 +66,13 @@ camera camera_cs184_framing(const camera *c, aabb bounds, int width, int height)
  * so a -c settings file's lens survives when they are not. */
 void camera_apply_lens_flags(camera *c, const options *o);
 
-/* The camera a render of s uses under options o (the order in the comment at the top). */
+/* Whether a render of s under o frames it CS184's way: --camera cs184 says so, --camera literal
+ * says not, and by default a file in the course's profile (scene.course_profile, dae.h) is, unless
+ * a -c settings file gives the camera (CS184 takes that camera as it is too). */
 struct scene;
+bool camera_uses_cs184_framing(const struct scene *s, const options *o);
+
+/* The camera a render of s uses under options o (the order in the comment at the top). */
 camera camera_for_render(const struct scene *s, const options *o);
 
 #endif

@@ -50,8 +50,8 @@ void cli_print_usage(FILE *f, const char *prog)
             "  -m N        max ray depth: 0 emission only, 1 direct light, ... (1)\n"
             "  -o 0|1      1: add up all bounces; 0: only the bounce at depth -m (1)\n"
             "  -e FILE     environment map (not supported yet)\n"
-            "  -b R        lens radius (0, or the -c file's)\n"
-            "  -d D        focal distance (4.7, or the -c file's)\n"
+            "  -b R        lens radius (0, or the -c file's; accepted, not used yet: the thin lens is a later part)\n"
+            "  -d D        focal distance (4.7, or the -c file's; likewise not used yet)\n"
             "  -f FILE     write the render: .png (tone-mapped), .hdr or .exr (linear), plus FILE.json\n"
             "  -r W H      image size in pixels (800 600)\n"
             "  -c FILE     CS184 camera settings file\n"
@@ -62,7 +62,10 @@ void cli_print_usage(FILE *f, const char *prog)
             "  -h, --help  this text\n"
             "  --seed N          seed of every random stream (0)\n"
             "  --normals         shade by surface normal (parts 1 and 2)\n"
-            "  --cs184-camera    CS184's framing: orbit the scene centre along the file's view direction\n"
+            "  --camera literal|cs184  the file's camera as written, or CS184's framing (an orbit on the\n"
+            "                    scene's bounds along the file camera's direction). Default: cs184 for a\n"
+            "                    file in the course's profile (CGL extensions, not pathlab's own), else literal\n"
+            "  --cs184-camera    the same as --camera cs184\n"
             "  --no-bvh          intersect by linear scan even when part 2 is implemented\n"
             "  --no-rr           no Russian roulette: every path runs to -m bounces (part 4)\n"
             "  --leaf-size N     BVH max primitives per leaf (4)\n"
@@ -195,7 +198,14 @@ static int parse_long_flag(int argc, char **argv, int i, options *o, pl_status *
     int taken = 0;
     if (!strcmp(a, "--seed")) *s = parse_u64(a, VALUE(1), &o->seed, d), taken = 1;
     else if (!strcmp(a, "--normals")) o->normals = true;
-    else if (!strcmp(a, "--cs184-camera")) o->cs184_framing = true;
+    else if (!strcmp(a, "--cs184-camera")) o->framing = FRAMING_CS184;  /* the older spelling, kept */
+    else if (!strcmp(a, "--camera")) {
+        const char *v = VALUE(1);
+        if (v && !strcmp(v, "literal")) o->framing = FRAMING_LITERAL;
+        else if (v && !strcmp(v, "cs184")) o->framing = FRAMING_CS184;
+        else *s = pl_fail(d, PL_ERR_INVALID, "--camera: expected literal or cs184, got '%s'", v ? v : "nothing");
+        taken = 1;
+    }
     else if (!strcmp(a, "--no-bvh")) o->linear_scan = true;
     else if (!strcmp(a, "--no-rr")) o->no_roulette = true;
     else if (!strcmp(a, "--leaf-size")) *s = parse_int(a, VALUE(1), 1, 255, &o->max_leaf_size, d), taken = 1;
@@ -328,4 +338,57 @@ pl_status cli_parse(int argc, char **argv, options *out, cli_action *action, pl_
     if (!o.command_line) return pl_fail(d, PL_ERR_NOMEM, "out of memory");
     *out = o;
     return PL_OK;
+}
+
+/* ---- what the run says about the scene --------------------------------------------------------- */
+
+/* Whether any primitive of s has an emissive material (something a camera or bounce ray can see). */
+static bool has_emitters(const scene *s)
+{
+    for (int i = 0; i < scene_prim_count(s); i++) {
+        int m = i < s->num_triangles ? s->triangles[i].material : s->spheres[i - s->num_triangles].material;
+        if (m >= 0 && m < s->num_materials && rgb_max(s->materials[m].Le) > 0.0f) return true;
+    }
+    return false;
+}
+
+int cli_warn_noops(const options *o, const scene *s, pl_diag *d)
+{
+    int said = 0;
+    /* No lights: light sampling has nothing to sample. Shading by normals needs none. */
+    if (s->num_lights == 0 && !o->normals) {
+        const char *name = s->path[0] ? s->path : "the scene";
+        if (!has_emitters(s))
+            pl_warn(d, "%s has no lights: the image will be black (it has no <light> and nothing emissive)", name);
+        else
+            pl_warn(d, "%s has no lights: the image will be black but for its emitters seen directly, and what "
+                       "-H or bounces (-m 2 and more) gather from them; light sampling has nothing to sample", name);
+        said++;
+    }
+    /* -b / -d: CS184's flags, parsed and checked, but no part uses a thin lens yet. */
+    if (o->lens_radius_given || o->focal_distance_given) {
+        char given[96] = "";
+        if (o->lens_radius_given) snprintf(given, sizeof given, "-b %g", (double)o->lens_radius);
+        if (o->focal_distance_given)
+            snprintf(given + strlen(given), sizeof given - strlen(given), "%s-d %g", o->lens_radius_given ? " and " : "",
+                     (double)o->focal_distance);
+        pl_warn(d, "%s accepted but not used yet: the thin lens is a later part, so this render is a pinhole camera's", given);
+        said++;
+    }
+    return said;
+}
+
+void cli_framing_line(const options *o, const scene *s, char *buf, size_t size)
+{
+    bool cs184 = camera_uses_cs184_framing(s, o);
+    const char *why = o->framing != FRAMING_AUTO ? "as asked"
+                      : cs184                    ? "the file is in the course's profile"
+                      : o->camera_file           ? "the -c file's camera"
+                                                 : "the file is not in the course's profile";
+    if (cs184)
+        snprintf(buf, size, "camera: CS184's framing, an orbit on the scene's bounds along the file camera's direction "
+                            "(%s); --camera literal for the file's own camera", why);
+    else
+        snprintf(buf, size, "camera: %s, as written (%s); --camera cs184 for CS184's framing",
+                 s->has_camera ? "the file's camera" : "no camera in the file, the default view", why);
 }

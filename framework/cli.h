@@ -15,4 +15,17 @@ pl_status cli_parse(int argc, char **argv, options *out, cli_action *action, pl_
 void cli_free(options *o);
 void cli_print_usage(FILE *f, const char *prog);
 
+/* ---- what the run says about the scene, once it is loaded ---------------------------------- */
+struct scene;
+
+/* Options and a scene that render without complaint yet do less than they seem to ask, each said
+ * once through d (one "warning: ..." line on stderr by default): a scene with no lights (named by
+ * its file), -b / -d (accepted for CS184's command line; the thin lens is a later part). Returns
+ * how many warnings it gave. */
+int cli_warn_noops(const options *o, const struct scene *s, pl_diag *d);
+
+/* The status line naming the camera's framing and the option that gives the other, without a
+ * newline, into buf: "camera: CS184's framing (...); --camera literal for the file's own". */
+void cli_framing_line(const options *o, const struct scene *s, char *buf, size_t size);
+
 #endif

@@ -234,6 +234,44 @@ static pl_status visit_node(dae_ctx *c, const xmlNode *node, mat4 parent, int de
     return st;
 }
 
+/* ---- the course's profile ------------------------------------------------------------------ */
+
+/* Any <technique profile="CGL"> in the document: CS184's extensions. Walked without recursion (a
+ * hostile file may nest deeply), following parent links back up. */
+static bool uses_cgl(const xmlNode *root)
+{
+    const xmlNode *n = root;
+    while (n) {
+        if (n->type == XML_ELEMENT_NODE && dae_is(n, "technique")) {
+            const char *profile = dae_attr(n, "profile");
+            if (profile && strcmp(profile, "CGL") == 0) return true;
+        }
+        if (n->children) { n = n->children; continue; }
+        while (n && n != root && !n->next) n = n->parent;
+        if (!n || n == root) break;
+        n = n->next;
+    }
+    return false;
+}
+
+/* Whether <asset><contributor> names pathlab (as author or authoring tool): pathlab's own scenes
+ * are written in CS184's dialect, CGL and all, but their cameras are placed to be taken literally,
+ * and they say whose they are there. */
+static bool names_pathlab(const xmlNode *root)
+{
+    for (const xmlNode *who = dae_first(dae_child(root, "asset")); who; who = dae_next(who)) {
+        if (!dae_is(who, "contributor")) continue;
+        for (const xmlNode *e = dae_first(who); e; e = dae_next(e)) {
+            if (!dae_is(e, "author") && !dae_is(e, "authoring_tool")) continue;
+            xmlChar *text = xmlNodeGetContent(e);
+            bool ours = text && strstr((const char *)text, "pathlab");
+            xmlFree(text);
+            if (ours) return true;
+        }
+    }
+    return false;
+}
+
 /* The whole document: its root, its up axis and id index, then the visual scene's node tree. */
 static pl_status load_document(dae_ctx *c)
 {
@@ -243,6 +281,8 @@ static pl_status load_document(dae_ctx *c)
     pl_status st = read_up_axis(c, root);
     if (!st) st = dae_index_build(c);
     if (st) return st;
+    /* A course file (CS184's extensions, not one of pathlab's own) is framed as the course frames it. */
+    c->out->course_profile = uses_cgl(root) && !names_pathlab(root);
 
     /* What loads but is not honoured is said once, so a scene never differs silently. */
     const xmlNode *animations = dae_child(root, "library_animations");

@@ -2,7 +2,10 @@
  * scenes/README.md describes the dialect. Z_UP files are turned into pathlab's Y-up world
  * by (x, y, z) -> (-x, z, y), applied before every node transform, as CS184 does.
  * A malformed file is rejected with "path:line: <element>: what was expected" in diag; features
- * that are valid but unsupported load with one warning per feature. */
+ * that are valid but unsupported load with one warning per feature.
+ * The course's profile: a file that uses CS184's CGL extensions and whose <asset><contributor>
+ * does not name pathlab (as the course's Blender exports do not, and pathlab's own scenes do) sets
+ * scene.course_profile, and is framed by default as CS184's application frames it (camera.h). */
 #ifndef PL_DAE_H
 #define PL_DAE_H
 

@@ -180,6 +180,15 @@ static int run(const options *o, const char *prog)
         output_free(&out);
         return code;
     }
+    /* What the scene and flags do not do that they might seem to, on stderr; which framing the
+     * camera uses, on the status lines (not in a trace, whose output is the pixel's story alone). */
+    cli_warn_noops(o, &s, &diag);
+    if (!o->quiet && !o->trace) {
+        char line[256];
+        cli_framing_line(o, &s, line, sizeof line);
+        printf("[pathlab] %s\n", line);
+        fflush(stdout);
+    }
     double load_seconds = clock_seconds() - t0;
     frame fr = {0};
     heatmap heat = {0};

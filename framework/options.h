@@ -6,6 +6,13 @@
 #include <stdbool.h>
 #include <stdint.h>
 
+/* How the scene's camera frames the render (--camera). */
+typedef enum {
+    FRAMING_AUTO = 0,  /* CS184's for a file in the course's profile (dae.h), else the file's camera */
+    FRAMING_LITERAL,   /* --camera literal: the file's camera as written */
+    FRAMING_CS184      /* --camera cs184 (or --cs184-camera): CS184's orbit on the scene's bounds */
+} camera_framing;
+
 typedef struct {
     int spp;                  /* -s: camera rays per pixel (1) */
     int light_samples;        /* -l: samples per area light (1) */
@@ -29,7 +36,7 @@ typedef struct {
     int sample_begin;         /* --samples A:B: render samples A..B-1 of -s N (0 0 = all) */
     int sample_end;
     bool normals;             /* --normals: shade by surface normal (parts 1 and 2) */
-    bool cs184_framing;       /* --cs184-camera: CS184's orbit framing instead of the file's camera */
+    camera_framing framing;   /* --camera literal|cs184 (--cs184-camera = cs184): FRAMING_AUTO by default */
     bool linear_scan;         /* --no-bvh: skip part 2, intersect by linear scan */
     int max_leaf_size;        /* --leaf-size: BVH max primitives per leaf (4) */
     long max_primitives;      /* --max-primitives: the most triangles + spheres a scene may hold (2,000,000) */

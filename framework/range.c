@@ -51,7 +51,8 @@ static void image_flags(const options *o, char *out, size_t size)
                      o->light_samples, o->max_depth, o->accumulate ? 1 : 0, o->lens_radius, o->focal_distance,
                      o->width, o->height, o->seed, o->max_leaf_size);
     const struct { bool on; const char *flag; } flags[] = {
-        {o->hemisphere, " -H"}, {o->normals, " --normals"}, {o->cs184_framing, " --cs184-camera"},
+        {o->hemisphere, " -H"}, {o->normals, " --normals"}, {o->framing == FRAMING_CS184, " --cs184-camera"},
+        {o->framing == FRAMING_LITERAL, " --camera literal"},
         {o->linear_scan, " --no-bvh"}, {o->no_roulette, " --no-rr"}};
     for (size_t i = 0; i < sizeof flags / sizeof flags[0]; i++)
         if (flags[i].on && n >= 0 && (size_t)n < size) n += snprintf(out + n, size - (size_t)n, "%s", flags[i].flag);

@@ -76,6 +76,8 @@ typedef struct scene {
     struct { int triangles, spheres, materials, lights; } capacity;  /* room allocated (scene_add_*) */
     camera camera;       /* the file's (camera.h), or a -c settings file's */
     bool has_camera;     /* false: camera_default_framing frames the bounds */
+    bool course_profile; /* the file is in CS184's course profile (dae.h): by default its camera is
+                            framed as CS184's application frames it (camera_uses_cs184_framing) */
     char path[512];      /* the file it came from ("" for code-built scenes) */
 } scene;
 

@@ -125,20 +125,41 @@ void spawn_light_leave(light *l)
     l->leave_per_m = SPAWN_SAFETY * gamma_n(8) * (n.x + n.y + n.z);
 }
 
+/* How far short of a point or spot light at y a shadow ray of length dist ends, along the ray.
+ * A point light has no surface of its own, but a scene may put one through it (CS184's CBempty.dae
+ * hides its point light inside a non-emissive quad at the same height), and a segment that ends
+ * at y meets that surface at t = 1, inside the rounding. Across any surface through y the rounding
+ * is bounded as for an area light's quad: a few u of |y| (y and the surface's corners) plus a few
+ * u of the segment's length (its direction and part 1's differences). Along the ray that distance
+ * grows as 1 / sin of the angle between the ray and the surface, whose orientation the light does
+ * not know: divide by SPAWN_GRAZING_SIN, the shallowest angle at which a shadow ray must clear it.
+ * Returned as the fraction of the segment to drop, at most half of it (a point all but at the
+ * light keeps a segment), and at least 4800 u, so 1 minus it is a float below 1. */
+static inline float point_light_leave(vec3 y, float dist)
+{
+    vec3 a = vec3_abs(y);
+    float bound = SPAWN_SAFETY * gamma_n(8) * (a.x + a.y + a.z + 3.0f * dist);
+    return fminf(bound / (SPAWN_GRAZING_SIN * dist), 0.5f);
+}
+
 ray spawn_ray_to_light(const ray *from, const hit *h, const light *l, const light_sample *ls)
 {
     if (!isfinite(ls->dist)) return spawn_ray(from, h, ls->wi);  /* directional, ambient */
 
     /* The far end: the sampled point itself, moved off an area light's surface towards p (the
-     * side it emits to: light_sample_L samples only lights p sees the front of); a point or spot
-     * light has no surface to leave. */
+     * side it emits to: light_sample_L samples only lights p sees the front of). A point or spot
+     * light keeps its position as the far point, and the segment stops short of it instead
+     * (max_t below): the ray's direction is then the one it always was, and only an occluder
+     * within the margin of the light sees a different verdict. */
     vec3 y = ls->point;
+    float max_t = 1.0f;
     if (l->kind == LIGHT_AREA) y = vec3_add(y, vec3_scale(l->direction, l->leave_base + ls->dist * l->leave_per_m));
+    else max_t = 1.0f - point_light_leave(y, ls->dist);
 
     /* The near end as for any ray leaving the surface; the segment runs from one to the other.
-     * Unnormalised: t = 1 is the far end, and no square root or division is spent on it. */
+     * Unnormalised: t = 1 is the far point, and no square root or division is spent on it. */
     vec3 o = offset_point(h, ls->wi);
-    ray r = ray_make(o, vec3_sub(y, o), FLT_MIN, 1.0f);
+    ray r = ray_make(o, vec3_sub(y, o), FLT_MIN, max_t);
     r.depth = from->depth + 1;
     return r;
 }

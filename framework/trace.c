@@ -375,8 +375,9 @@ bool trace_occluded(const render_ctx *ctx, const ray *r)
     bool blocked = accel_occluded(ctx->accel, r);
     json_t *j = json_pack("{s:o, s:o, s:o, s:o, s:b}", "origin", jvec(r->o), "direction", jvec(r->d), "min_t",
                           jnum(r->min_t), "max_t", jnum(r->max_t), "occluded", blocked);
-    /* A shadow ray towards a point is a segment (spawn_ray_to_light: t in (0, 1], an unnormalised
-     * direction): shown by its two ends and its length, which is what a student can check. */
+    /* A shadow ray towards a light at a finite distance (point, spot, area) is a segment
+     * (spawn_ray_to_light: t in (0, 1], an unnormalised direction) whose far end stops just short
+     * of the light: shown by its two ends and its length, which is what a student can check. */
     if (isfinite(r->max_t)) {
         vec3 end = vec3_add(r->o, vec3_scale(r->d, r->max_t));
         emit(t, "shadow_ray", j, "shadow ray from " V3 " to " V3 " (length %.6g): %s", XYZ(r->o), XYZ(end),

@@ -5,6 +5,7 @@
 #include "../../framework/camera_file.h"
 #include "../../framework/cli.h"
 #include "../../framework/scene.h"
+#include "../../framework/dae.h"
 #include <stdio.h>
 #include <stdlib.h>
 
@@ -71,12 +72,94 @@ static void test_camera_for_render__keeps_the_settings_files_lens_unless_flags_a
     scene_free(&s);
 }
 
+/* ---- framing a course file ---------------------------------------------------------------------- */
+
+/* How many of the 8 corners of b lie in front of c and inside its frame (the fovs it renders with);
+ * *below, how many of them in the lower half of the frame. */
+static int corners_in_frame(const camera *c, aabb b, int *below)
+{
+    vec3 right = mat4_dir(c->camera_to_world, vec3_make(1, 0, 0)), up = mat4_dir(c->camera_to_world, vec3_make(0, 1, 0));
+    vec3 back = mat4_dir(c->camera_to_world, vec3_make(0, 0, 1));
+    float tx = tanf(c->hfov * 0.5f * (float)M_PI / 180.0f), ty = tanf(c->vfov * 0.5f * (float)M_PI / 180.0f);
+    int inside = 0;
+    *below = 0;
+    for (int k = 0; k < 8; k++) {
+        vec3 p = vec3_make(k & 1 ? b.max.x : b.min.x, k & 2 ? b.max.y : b.min.y, k & 4 ? b.max.z : b.min.z);
+        vec3 d = vec3_sub(p, c->position);
+        float depth = -vec3_dot(d, back);  /* along the view direction */
+        if (depth > 0.0f && fabsf(vec3_dot(d, right)) <= tx * depth && fabsf(vec3_dot(d, up)) <= ty * depth) {
+            inside++;
+            if (vec3_dot(d, up) < -1e-3f * depth) (*below)++;
+        }
+    }
+    return inside;
+}
+
+static options options_with(camera_framing framing)
+{
+    options o = options_default();
+    o.framing = framing;
+    return o;
+}
+
+/* A course-profile Cornell box whose camera sits at floor height (like CS184's CBempty.dae): by
+ * default the whole box is in the frame and fills both its halves (CS184's framing); --camera
+ * literal keeps the file's camera, under which the box sits in the upper half, the lower half of
+ * the frame left black. */
+static void test_camera_for_render__frames_a_course_file_as_cs184_by_default(void **state)
+{
+    (void)state;
+    scene s;
+    pl_diag d = pl_diag_default();
+    assert_int_equal(PL_OK, dae_load("tests/data/valid/cs184_cbempty_like.dae", &s, &d));
+    assert_true(s.course_profile);
+    aabb b = scene_bounds(&s);
+    options o = options_default();
+    assert_true(camera_uses_cs184_framing(&s, &o));
+    camera c = camera_for_render(&s, &o);
+    int below;
+    assert_int_equal(8, corners_in_frame(&c, b, &below));
+    assert_int_equal(4, below);  /* centred: the orbit's target is the bounds' centre */
+    camera literal = camera_for_render(&s, (o = options_with(FRAMING_LITERAL), &o));
+    assert_vec3_near(vec3_make(0, 0, 3.1f), literal.position, 1e-6f);  /* the file's, at floor height */
+    assert_vec3_near(s.camera.position, literal.position, 0);
+    corners_in_frame(&literal, b, &below);
+    assert_int_equal(0, below);
+    /* (At another -r CS184's framing keeps the pixel scale: 160x120 is the centre fifth of the view.) */
+    /* A -c settings file's camera is taken as it is, as CS184 takes it. */
+    o = options_default();
+    o.camera_file = "x.cam";
+    assert_false(camera_uses_cs184_framing(&s, &o));
+    scene_free(&s);
+}
+
+/* pathlab's own scenes are written in CS184's dialect too, but their cameras are meant literally:
+ * none of them is in the course's profile, so no reference or grading case changes framing. */
+static void test_camera_for_render__keeps_pathlabs_own_scenes_literal(void **state)
+{
+    (void)state;
+    static const char *own[] = {"scenes/cornell_empty.dae", "scenes/cornell_spheres.dae", "scenes/cornell_bunny.dae",
+                                "scenes/cornell_grazing.dae", "scenes/lights_point_dir.dae", "scenes/analytic/furnace.dae"};
+    for (size_t k = 0; k < sizeof own / sizeof own[0]; k++) {
+        scene s;
+        pl_diag d = pl_diag_default();
+        assert_int_equal(PL_OK, dae_load(own[k], &s, &d));
+        options o = options_default();
+        if (s.course_profile || camera_uses_cs184_framing(&s, &o)) fail_msg("%s is taken for a course file", own[k]);
+        camera c = camera_for_render(&s, &o);
+        assert_vec3_near(s.camera.position, c.position, 0);
+        scene_free(&s);
+    }
+}
+
 int camera_tests(void)
 {
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(test_camera_set_aspect__the_free_fov_follows_the_fixed_one),
         cmocka_unit_test(test_camera_default_framing__looks_at_the_centre_from_plus_z),
         cmocka_unit_test(test_camera_for_render__keeps_the_settings_files_lens_unless_flags_are_given),
+        cmocka_unit_test(test_camera_for_render__frames_a_course_file_as_cs184_by_default),
+        cmocka_unit_test(test_camera_for_render__keeps_pathlabs_own_scenes_literal),
     };
     return cmocka_run_group_tests_name("camera", tests, NULL, NULL);
 }

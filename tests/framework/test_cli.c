@@ -1,6 +1,8 @@
-/* Test machinery: not part of any assignment. Command-line parsing: CS184's flags and defaults. */
+/* Test machinery: not part of any assignment. Command-line parsing: CS184's flags and defaults;
+ * what a run says about its scene and flags (cli_warn_noops, cli_framing_line). */
 #include "../common/test.h"
 #include "../../framework/cli.h"
+#include "../../framework/dae.h"
 #include <string.h>
 
 /* Parses a NULL-terminated list of arguments (after the program name). */
@@ -36,6 +38,7 @@ static void test_cli__defaults_are_cs184s(void **state)
     assert_false(o.focal_distance_given);
     assert_false(o.adaptive);
     assert_false(o.hemisphere);
+    assert_int_equal(FRAMING_AUTO, o.framing);  /* decided by the scene's profile (camera.h) */
     assert_string_equal("s.dae", o.scene_path);
     cli_free(&o);
 }
@@ -63,7 +66,8 @@ static void test_cli__every_flag_is_read(void **state)
     assert_true(o.adaptive);
     assert_int_equal(16, o.adaptive_batch);
     assert_float_near(0.1, o.adaptive_tol, 1e-6);
-    assert_true(o.hemisphere && o.normals && o.cs184_framing && o.linear_scan && o.no_roulette && o.verbose);
+    assert_true(o.hemisphere && o.normals && o.linear_scan && o.no_roulette && o.verbose);
+    assert_int_equal(FRAMING_CS184, o.framing);
     assert_int_equal(99, (int)o.seed);
     assert_int_equal(8, o.max_leaf_size);
     assert_int_equal(300, o.max_primitives);
@@ -98,6 +102,138 @@ static void test_cli__bad_values_are_named(void **state)
     expect_error((const char *[]){NULL}, "expected a scene file");
     expect_error((const char *[]){"a.dae", "b.dae", NULL}, "expected one scene file");
     expect_error((const char *[]){"-e", "sky.exr", "s.dae", NULL}, "not supported yet");
+    expect_error((const char *[]){"--camera", "orbit", "s.dae", NULL}, "--camera: expected literal or cs184, got 'orbit'");
+    expect_error((const char *[]){"s.dae", "--camera", NULL}, "--camera: expected literal or cs184, got 'nothing'");
+}
+
+/* --camera literal|cs184, --cs184-camera as a synonym of cs184; the last one given wins. */
+static void test_cli__camera_option_selects_the_framing(void **state)
+{
+    static const struct { const char *args[4]; camera_framing want; } cases[] = {
+        {{"--camera", "literal", "s.dae", NULL}, FRAMING_LITERAL},
+        {{"--camera", "cs184", "s.dae", NULL}, FRAMING_CS184},
+        {{"--cs184-camera", "s.dae", NULL}, FRAMING_CS184},
+        {{"--cs184-camera", "--camera", "literal", "s.dae"}, FRAMING_LITERAL},
+    };
+    for (size_t k = 0; k < sizeof cases / sizeof cases[0]; k++) {
+        const char *args[5] = {0};
+        memcpy(args, cases[k].args, sizeof cases[k].args);
+        options o;
+        pl_diag d = pl_diag_default();
+        assert_int_equal(PL_OK, parse(&o, &d, args));
+        assert_int_equal(cases[k].want, o.framing);
+        cli_free(&o);
+    }
+}
+
+/* ---- what a run says -------------------------------------------------------------------------- */
+
+typedef struct {
+    int count;
+    char all[4096];  /* every message, one per line */
+} warn_log;
+
+static void collect_warning(void *user, const char *msg)
+{
+    warn_log *w = user;
+    w->count++;
+    size_t used = strlen(w->all);
+    snprintf(w->all + used, sizeof w->all - used, "%s\n", msg);
+}
+
+/* The warnings cli_warn_noops gives for the command line args and the scene s. */
+static warn_log noops(const char **args, const scene *s)
+{
+    warn_log w;
+    memset(&w, 0, sizeof w);
+    pl_diag d = {{0}, 0, collect_warning, &w};
+    options o;
+    assert_int_equal(PL_OK, parse(&o, &d, args));
+    int said = cli_warn_noops(&o, s, &d);
+    assert_int_equal(w.count, said);
+    cli_free(&o);
+    return w;
+}
+
+/* A diffuse floor, and a point light over it unless lit is false; named like a file. */
+static void floor_scene(scene *s, bool lit, bool emissive)
+{
+    memset(s, 0, sizeof *s);
+    int m = scene_add_material(s, material_make(rgb_gray(0.5f), rgb_gray(emissive ? 1.0f : 0.0f)));
+    assert_true(m >= 0);
+    assert_true(scene_add_triangle(s, triangle_make(vec3_make(-1, 0, -1), vec3_make(1, 0, -1), vec3_make(0, 0, 1), m)) >= 0);
+    if (lit) {
+        light l;
+        memset(&l, 0, sizeof l);
+        l.kind = LIGHT_POINT;
+        l.radiance = rgb_gray(1.0f);
+        l.position = vec3_make(0, 1, 0);
+        l.attenuation[0] = 1.0f;
+        assert_true(scene_add_light(s, l) >= 0);
+    }
+    snprintf(s->path, sizeof s->path, "CBspheres_unlit.dae");
+}
+
+/* No lights: one line naming the file; not when the scene is lit, nor under --normals. */
+static void test_cli_warn_noops__a_scene_without_lights_says_its_image_is_black(void **state)
+{
+    scene s;
+    floor_scene(&s, false, false);
+    warn_log w = noops((const char *[]){"s.dae", NULL}, &s);
+    assert_int_equal(1, w.count);
+    assert_non_null(strstr(w.all, "CBspheres_unlit.dae has no lights: the image will be black"));
+    assert_int_equal(0, noops((const char *[]){"--normals", "s.dae", NULL}, &s).count);
+    scene_free(&s);
+
+    floor_scene(&s, false, true);  /* emitters but no lights: black but for them */
+    w = noops((const char *[]){"s.dae", NULL}, &s);
+    assert_int_equal(1, w.count);
+    assert_non_null(strstr(w.all, "CBspheres_unlit.dae has no lights: the image will be black but for its emitters"));
+    scene_free(&s);
+
+    floor_scene(&s, true, false);
+    assert_int_equal(0, noops((const char *[]){"s.dae", NULL}, &s).count);
+    scene_free(&s);
+}
+
+/* -b / -d: accepted, and said to be unused, in one line whichever of them is given. */
+static void test_cli_warn_noops__lens_flags_say_they_are_not_used_yet(void **state)
+{
+    scene s;
+    floor_scene(&s, true, false);
+    warn_log w = noops((const char *[]){"-b", "0.3", "-d", "2.0", "s.dae", NULL}, &s);
+    assert_int_equal(1, w.count);
+    assert_non_null(strstr(w.all, "-b 0.3 and -d 2 accepted but not used yet: the thin lens is a later part"));
+    w = noops((const char *[]){"-d", "2.5", "s.dae", NULL}, &s);
+    assert_int_equal(1, w.count);
+    assert_non_null(strstr(w.all, "-d 2.5 accepted but not used yet"));
+    scene_free(&s);
+    floor_scene(&s, false, false);  /* both at once: two lines, one each */
+    assert_int_equal(2, noops((const char *[]){"-b", "0.3", "s.dae", NULL}, &s).count);
+    scene_free(&s);
+}
+
+/* The status line names the framing in use and the option that gives the other. */
+static void test_cli_framing_line__names_the_framing_and_the_other(void **state)
+{
+    scene s;
+    floor_scene(&s, true, false);
+    s.has_camera = true;
+    options o = options_default();
+    char line[256];
+    cli_framing_line(&o, &s, line, sizeof line);
+    assert_non_null(strstr(line, "camera: the file's camera, as written"));
+    assert_non_null(strstr(line, "--camera cs184"));
+    s.course_profile = true;
+    cli_framing_line(&o, &s, line, sizeof line);
+    assert_non_null(strstr(line, "camera: CS184's framing"));
+    assert_non_null(strstr(line, "course's profile"));
+    assert_non_null(strstr(line, "--camera literal"));
+    o.framing = FRAMING_LITERAL;
+    cli_framing_line(&o, &s, line, sizeof line);
+    assert_non_null(strstr(line, "as asked"));
+    assert_non_null(strstr(line, "--camera cs184"));
+    scene_free(&s);
 }
 
 static void test_cli__help_wins(void **state)
@@ -117,6 +253,10 @@ int cli_tests(void)
         cmocka_unit_test(test_cli__every_flag_is_read),
         cmocka_unit_test(test_cli__bad_values_are_named),
         cmocka_unit_test(test_cli__help_wins),
+        cmocka_unit_test(test_cli__camera_option_selects_the_framing),
+        cmocka_unit_test(test_cli_warn_noops__a_scene_without_lights_says_its_image_is_black),
+        cmocka_unit_test(test_cli_warn_noops__lens_flags_say_they_are_not_used_yet),
+        cmocka_unit_test(test_cli_framing_line__names_the_framing_and_the_other),
     };
     return cmocka_run_group_tests_name("cli", tests, NULL, NULL);
 }

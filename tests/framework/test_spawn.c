@@ -3,7 +3,8 @@
  * again, for a million random hits on spheres and triangles from 1e-3 to 1e3 in size, placed up
  * to 1e4 from the origin, leaving at random angles down to 89.9 degrees from the normal; a shadow
  * ray towards an area light sample stops short of the emissive quad at the light but not of an
- * occluder before it. Both are exact counts (no statistics); the seed is fixed and printed
+ * occluder before it, and one towards a point or spot light inside a quad through it stops short
+ * of that quad (at angles above SPAWN_GRAZING_SIN to it) but not of an occluder. Both are exact counts (no statistics); the seed is fixed and printed
  * (PL_TEST_SEED changes it). Each test also counts what rays from the raw hit point do on the
  * same hits, so a test that could not fail would show. Parts 1's intersection routines answer
  * (through scene_prim_intersect): in a tree where part 1 is a stub, the tests skip. */
@@ -236,12 +237,122 @@ static void test_spawn_ray_to_light__stops_short_of_the_light_not_of_an_occluder
     assert_true(t.raw_reached > 0);  /* the trials reach the cases that need the offsets */
 }
 
+/* ---- towards a point or spot light inside a surface ----------------------------------------- */
+
+typedef struct {
+    long samples, reached_quad, raw_reached, missed_occluder;
+    long reached_by_sin[4];  /* reached_quad by sin of the ray to the quad: < 1e-3, < 1e-2, < 1e-1, above */
+    char first[256];
+} point_tally;
+
+/* A random point or spot light inside a non-emissive quad (prims 0, 1) whose plane passes through
+ * it, as CS184's CBempty.dae puts its point light, a floor facing it (prim 2) and a hit on that
+ * floor from the light's side, from straight below to far off to the side. The spot points at the
+ * floor with a cone of 90 degrees. False when the floor was missed. */
+static bool point_light_in_quad(scene *s, rng *g, light_kind kind, light *l, vec3 *quad_n, ray *r, hit *h)
+{
+    float size = log_uniform(g, -3.0f, 3.0f);
+    frame f = frame_from_normal(sample_uniform_sphere(rng_uniform2(g)));
+    vec3 c = random_place(g);
+    vec3 eu = vec3_scale(f.s, size * (0.2f + rng_uniform(g))), ev = vec3_scale(f.t, size * (0.2f + rng_uniform(g)));
+    vec3 hu = vec3_scale(eu, 0.5f), hv = vec3_scale(ev, 0.5f);
+    vec3 c00 = vec3_sub(vec3_sub(c, hu), hv), c10 = vec3_sub(vec3_add(c, hu), hv);
+    vec3 c11 = vec3_add(vec3_add(c, hu), hv), c01 = vec3_add(vec3_sub(c, hu), hv);
+    s->triangles[0] = triangle_make(c00, c10, c11, 0), s->triangles[1] = triangle_make(c00, c11, c01, 0);
+    memset(l, 0, sizeof *l);
+    l->kind = kind;
+    l->radiance = rgb_gray(1.0f);
+    l->position = vec3_add(c, vec3_add(vec3_scale(eu, 0.9f * (rng_uniform(g) - 0.5f)), vec3_scale(ev, 0.9f * (rng_uniform(g) - 0.5f))));
+    l->direction = vec3_neg(f.n);
+    l->attenuation[0] = 1.0f;
+    l->falloff_deg = 90.0f;
+    *quad_n = f.n;
+    vec3 below = vec3_sub(l->position, vec3_scale(f.n, size * log_uniform(g, -2.0f, 1.0f)));
+    vec3 side = vec3_scale(frame_to_world(&f, vec3_make(rng_uniform(g) - 0.5f, rng_uniform(g) - 0.5f, 0)), size * log_uniform(g, -1.0f, 2.0f));
+    vec3 at = vec3_add(below, side), fs = vec3_scale(f.s, 300.0f * size), ft = vec3_scale(f.t, 300.0f * size);
+    s->triangles[2] = triangle_make(vec3_sub(at, fs), vec3_add(at, ft), vec3_add(at, vec3_sub(fs, ft)), 0);
+    *r = ray_make(vec3_add(at, vec3_scale(f.n, size)), vec3_neg(f.n), 0.0f, INFINITY);
+    return hit_prim(s, 2, r, h);
+}
+
+static void point_trial(scene *s, rng *g, light_kind kind, point_tally *t)
+{
+    light l;
+    vec3 quad_n;
+    ray r;
+    hit h;
+    light_sample ls;
+    if (!point_light_in_quad(s, g, kind, &l, &quad_n, &r, &h) || !light_sample_L(&l, h.p, rng_uniform2(g), &ls)) return;
+    float place = fmaxf(fabsf(h.p.x), fmaxf(fabsf(h.p.y), fabsf(h.p.z)));
+    if (ls.dist < 1e-3f * place) return;  /* as for area lights: where floats resolve the segment */
+    t->samples++;
+    ray shadow = spawn_ray_to_light(&r, &h, &l, &ls), raw = ray_make(h.p, ls.wi, EPS_F, ls.dist - EPS_F);
+    hit any;
+    float sin_quad = fabsf(vec3_dot(ls.wi, quad_n));
+    for (int prim = 0; prim < 3; prim++) {
+        ray probe = shadow, raw_probe = raw;
+        if (scene_prim_intersect(s, prim, &raw_probe, &any)) t->raw_reached++;
+        if (!scene_prim_intersect(s, prim, &probe, &any)) continue;
+        t->reached_by_sin[sin_quad < 1e-3f ? 0 : sin_quad < 1e-2f ? 1 : sin_quad < 1e-1f ? 2 : 3]++;
+        if (sin_quad < SPAWN_GRAZING_SIN) continue;  /* shallower than the contract: counted, not failed */
+        if (t->reached_quad++ == 0)
+            snprintf(t->first, sizeof t->first, "prim %d at t = %g of max_t %g; light at (%g, %g, %g), dist %g, sin %g",
+                     prim, any.t, shadow.max_t, l.position.x, l.position.y, l.position.z, ls.dist, sin_quad);
+    }
+    frame across = frame_from_normal(ls.wi);
+    vec3 mid = vec3_add(shadow.o, vec3_scale(shadow.d, 0.5f * shadow.max_t));
+    vec3 a = vec3_scale(across.s, ls.dist), b = vec3_scale(across.t, ls.dist);
+    s->triangles[3] = triangle_make(vec3_sub(mid, a), vec3_add(mid, b), vec3_add(mid, vec3_sub(a, b)), 0);
+    if (!scene_prim_intersect(s, 3, &shadow, &any)) t->missed_occluder++;
+}
+
+static void check_point_light_in_quad(light_kind kind, const char *what, uint64_t seed)
+{
+    scene s;
+    bool solved = one_of_each(&s);
+    for (int i = 0; i < 3; i++) scene_add_triangle(&s, s.triangles[0]);
+    if (!solved) {
+        scene_free(&s);
+        skip();
+    }
+    mc_print_seed(what, seed);
+    rng g = rng_seeded(seed, 0);
+    point_tally t = {0};
+    while (t.samples < 200000) point_trial(&s, &g, kind, &t);
+    scene_free(&s);
+    printf("  %s: %ld samples: rays from the raw hit point to dist - EPS_F reached the quad or the floor %ld times, "
+           "spawned rays %ld times at sin >= SPAWN_GRAZING_SIN to the quad (at any angle, by sin: <1e-3 %ld, <1e-2 %ld, "
+           "<1e-1 %ld, above %ld); spawned rays missed the occluder %ld times\n",
+           what, t.samples, t.raw_reached, t.reached_quad, t.reached_by_sin[0], t.reached_by_sin[1], t.reached_by_sin[2],
+           t.reached_by_sin[3], t.missed_occluder);
+    if (t.reached_quad > 0) {
+        print_error("%s: %ld of %ld shadow rays reached the quad around the light or their own floor; the first: %s\n",
+                    what, t.reached_quad, t.samples, t.first);
+        fail();
+    }
+    assert_int_equal(0, t.missed_occluder);
+    assert_true(t.raw_reached > 0);
+}
+#define check_point_light_in_quad(...) PL_AT(check_point_light_in_quad(__VA_ARGS__))
+
+static void test_spawn_ray_to_light__stops_short_of_a_quad_around_a_point_light(void **state)
+{
+    check_point_light_in_quad(LIGHT_POINT, "point light in a quad", SEED + 3);
+}
+
+static void test_spawn_ray_to_light__stops_short_of_a_quad_around_a_spot_light(void **state)
+{
+    check_point_light_in_quad(LIGHT_SPOT, "spot light in a quad", SEED + 4);
+}
+
 int spawn_tests(void)
 {
     const struct CMUnitTest tests[] = {
         cmocka_unit_test_setup(test_spawn_ray__never_hits_its_own_sphere, test_setup),
         cmocka_unit_test_setup(test_spawn_ray__never_hits_its_own_triangle, test_setup),
         cmocka_unit_test_setup(test_spawn_ray_to_light__stops_short_of_the_light_not_of_an_occluder, test_setup),
+        cmocka_unit_test_setup(test_spawn_ray_to_light__stops_short_of_a_quad_around_a_point_light, test_setup),
+        cmocka_unit_test_setup(test_spawn_ray_to_light__stops_short_of_a_quad_around_a_spot_light, test_setup),
     };
     return cmocka_run_group_tests_name("framework: leaving a surface (spawn.c)", tests, NULL, NULL);
 }

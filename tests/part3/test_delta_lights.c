@@ -4,6 +4,8 @@
  * diffuse floor: rho / pi * E, with E = I cos / d^2 for the point and E = irradiance * cos for the
  * directional light, exact (no randomness reaches a delta light's sample), at -l 1, 4 and 16.
  * Caught: a delta light divided by the light-sample count, or summed over it without dividing.
+ * A point or spot light inside a non-emissive quad at its own height (CS184's CBempty.dae) lights
+ * the floor exactly as without the quad: the shadow ray (spawn_ray_to_light) stops short of it.
  * No statistics: no alpha. */
 #include <stdio.h>
 #include <string.h>
@@ -66,11 +68,56 @@ static void test_delta_lights__directional_light_ignores_light_samples(void **st
     tiny_world_free(&w);
 }
 
+/* The light of tiny_scene_point_over_plane inside a non-emissive 0.6 x 0.6 m quad through it,
+ * turned into a spot light pointing down (a 80 degree cone, no falloff inside) when spot is set:
+ * the floor gets what it gets without the quad, at -l 1, at points under the quad and far off to
+ * the side. Exact: no randomness reaches a delta light's sample. */
+static void check_light_inside_quad(bool spot)
+{
+    tiny_world w;
+    tiny_world_begin(&w);
+    assert_true(tiny_scene_point_over_plane(&w.s, RHO, 5.0f, 1.5f, NULL));
+    int grey = scene_add_material(&w.s, material_make(rgb_gray(0.5f), rgb_gray(0.0f)));
+    assert_true(grey >= 0 && tiny_add_quad(&w.s, vec3_make(0, 1.5f, 0), vec3_make(0.6f, 0, 0), vec3_make(0, 0, 0.6f),
+                                           vec3_make(0, -1, 0), grey));
+    if (spot) {
+        w.s.lights[0].kind = LIGHT_SPOT;
+        w.s.lights[0].direction = vec3_make(0, -1, 0);
+        w.s.lights[0].falloff_deg = 80.0f;
+        w.s.lights[0].falloff_exp = 0.0f;
+    }
+    assert_int_equal(PL_OK, tiny_world_finish(&w));
+    static const float at[][2] = {{0.0f, 0.0f}, {0.7f, -0.4f}, {0.1f, 0.2f}, {3.0f, 1.0f}};
+    for (size_t k = 0; k < sizeof at / sizeof at[0]; k++) {
+        double expected = tiny_point_over_plane_direct(RHO, 5.0, 1.5, NULL, at[k][0], at[k][1]);
+        double got = direct_at(&w, 1, at[k][0], at[k][1]);
+        if (!(fabs(got - expected) <= 1e-4 * expected))
+            fail_msg("wrong: a %s light inside a quad at its own height gives %.6g at floor point (%g, 0, %g), expected "
+                     "%.6g as without the quad (%.3g x): its shadow ray must stop short of the light",
+                     spot ? "spot" : "point", got, (double)at[k][0], (double)at[k][1], expected, got / expected);
+    }
+    tiny_world_free(&w);
+}
+
+static void test_delta_lights__point_light_inside_a_quad_lights_as_without_it(void **state)
+{
+    (void)state;
+    check_light_inside_quad(false);
+}
+
+static void test_delta_lights__spot_light_inside_a_quad_lights_as_without_it(void **state)
+{
+    (void)state;
+    check_light_inside_quad(true);
+}
+
 int delta_light_tests(void)
 {
     const struct CMUnitTest tests[] = {
         cmocka_unit_test_setup(test_delta_lights__point_light_ignores_light_samples, test_setup),
         cmocka_unit_test_setup(test_delta_lights__directional_light_ignores_light_samples, test_setup),
+        cmocka_unit_test_setup(test_delta_lights__point_light_inside_a_quad_lights_as_without_it, test_setup),
+        cmocka_unit_test_setup(test_delta_lights__spot_light_inside_a_quad_lights_as_without_it, test_setup),
     };
     return cmocka_run_group_tests_name("part3: delta lights at several light samples", tests, NULL, NULL);
 }
