@@ -21,7 +21,7 @@ tree="$work/tree"
 problems=0
 stages=" ${SPLIT_CHECK_STAGES:-solution stubs attacks} "
 mkdir -p "$tree"
-(cd "$root" && cp -a Makefile framework parts tests scenes third_party "$tree"/)
+(cd "$root" && cp -a Makefile framework grader parts tests scenes third_party "$tree"/)
 
 build() {
     make -C "$tree" -j2 --no-print-directory LTO=0 WERROR=1 SAN=0 "$@" > "$work/build.log" 2>&1 && return 0
