@@ -240,6 +240,11 @@ typedef struct {
 
 /* Runs argv as a child in its own process group; never reads what it prints except into the log. */
 grade_run_result grade_run(char *const argv[], const grade_run_opts *o);
+/* Runs the n jobs (argv[i] with o[i]) two at a time, the machine's cores, each in a helper process
+ * of its own that adopts its job's orphans (so a job's clean-up never touches the other), and fills
+ * r[i]. Only jobs without a capture: a build's compiles and links. */
+#define GRADE_JOBS 2
+void grade_run_jobs(int n, char *const *const argv[], const grade_run_opts o[], grade_run_result r[]);
 /* grade_run with pipe ends for the split suite (grade_judge.c): in_fd > 0 becomes the child's stdin
  * (else /dev/null), fd3 > 0 its fd 3. */
 grade_run_result grade_run_piped(char *const argv[], const grade_run_opts *o, int in_fd, int fd3);

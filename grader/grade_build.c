@@ -245,7 +245,14 @@ static void append_log(const char *from, const char *to)
     free(data);
 }
 
-/* Each submitted .c compiled alone into scratch/out, confined; false with the verdict in r. */
+/* One compile: its argument vector (the recipes' words and its own paths) and its log. */
+typedef struct {
+    char obj[4400], dep[4400], source[4400], log[4400], name[GRADE_SOURCE_NAME + 1];
+    char *argv[RECIPE_WORDS + 16];
+} compile_job;
+
+/* Each submitted .c compiled alone into scratch/out, confined, two at a time; false with the
+ * verdict in r (the first file that failed, in the manifest's order). */
 static bool compile_all(const grade_env *env, int n, const char *folder, const grade_manifest *m, const char *scratch,
                         grade_part_result *r)
 {
@@ -254,36 +261,48 @@ static bool compile_all(const grade_env *env, int n, const char *folder, const g
     grade_path(src, sizeof src, "%s/src", scratch);
     grade_path(out, sizeof out, "%s/out", scratch);
     grade_path(tmpdir, sizeof tmpdir, "TMPDIR=%s", out);
-    recipe cc, flags;
-    bool ok = recipe_read(course, "cc", &cc) && cc.num_words == 1 && recipe_read(course, "compile", &flags);
+    recipe cc = {0}, flags = {0};
+    compile_job *jobs = calloc(GRADE_SOURCE_FILES, sizeof *jobs);
+    char *const *argvs[GRADE_SOURCE_FILES] = {0};
+    grade_run_opts opts[GRADE_SOURCE_FILES] = {{0}};
+    grade_run_result results[GRADE_SOURCE_FILES];
+    char *envv[] = {tmpdir, NULL};
+    bool ok = jobs && recipe_read(course, "cc", &cc) && cc.num_words == 1 && recipe_read(course, "compile", &flags);
     if (!ok) grade_msg(r->suite_reason, sizeof r->suite_reason, "the course's build recipes are missing (%s): the "
                        "course's problem, please tell the staff", GRADE_RECIPES);
+    int count = 0;
     for (int i = 0; ok && i < m->count; i++) {
         size_t len = strlen(m->names[i]);
         if (m->names[i][len - 1] != 'c') continue;
-        char obj[4400], dep[4400], source[4400], log[4400], *argv[RECIPE_WORDS + 16];
-        grade_path(obj, sizeof obj, "%s/%.*s.o", out, (int)len - 2, m->names[i]);
-        grade_path(dep, sizeof dep, "%s/%.*s.d", out, (int)len - 2, m->names[i]);
-        grade_path(source, sizeof source, "parts/%s/%s", folder, m->names[i]);
-        grade_path(log, sizeof log, "%s/part%d/compile-%s.log", env->work, n, m->names[i]);
+        compile_job *j = &jobs[count];
+        snprintf(j->name, sizeof j->name, "%s", m->names[i]);
+        grade_path(j->obj, sizeof j->obj, "%s/%.*s.o", out, (int)len - 2, m->names[i]);
+        grade_path(j->dep, sizeof j->dep, "%s/%.*s.d", out, (int)len - 2, m->names[i]);
+        grade_path(j->source, sizeof j->source, "parts/%s/%s", folder, m->names[i]);
+        grade_path(j->log, sizeof j->log, "%s/part%d/compile-%s.log", env->work, n, m->names[i]);
         int argc = 0;
-        argv[argc++] = cc.words[0];
-        for (int w = 0; w < flags.num_words; w++) argv[argc++] = flags.words[w];
-        char *tail[] = {"-MMD", "-MF", dep, "-c", "-o", obj, source, NULL};
-        for (int w = 0; tail[w]; w++) argv[argc++] = tail[w];
-        argv[argc] = NULL;
-        char *envv[] = {tmpdir, NULL};
-        grade_run_opts o = {.wall_seconds = GRADE_COMPILE_SECONDS, .cwd = src, .log_path = log, .log_max = GRADE_LOG_MAX,
-                            .env = envv, .untrusted = env->submission != NULL, .compiler = true, .writable = out};
-        grade_run_result rr = grade_run(argv, &o);
-        append_log(log, r->build_log);
-        if (!rr.exited || rr.status != 0) {
-            build_verdict(&rr, n, "compile", m->names[i], GRADE_COMPILE_SECONDS, log, r);
+        j->argv[argc++] = cc.words[0];
+        for (int w = 0; w < flags.num_words; w++) j->argv[argc++] = flags.words[w];
+        char *tail[] = {"-MMD", "-MF", j->dep, "-c", "-o", j->obj, j->source, NULL};
+        for (int w = 0; tail[w]; w++) j->argv[argc++] = tail[w];
+        j->argv[argc] = NULL;
+        argvs[count] = j->argv;
+        opts[count] = (grade_run_opts){.wall_seconds = GRADE_COMPILE_SECONDS, .cwd = src, .log_path = j->log,
+                                       .log_max = GRADE_LOG_MAX, .env = envv, .untrusted = env->submission != NULL,
+                                       .compiler = true, .writable = out};
+        count++;
+    }
+    if (ok) grade_run_jobs(count, argvs, opts, results);
+    for (int k = 0; ok && k < count; k++) {
+        append_log(jobs[k].log, r->build_log);
+        if (!results[k].exited || results[k].status != 0) {
+            build_verdict(&results[k], n, "compile", jobs[k].name, GRADE_COMPILE_SECONDS, jobs[k].log, r);
             ok = false;
         }
     }
     free(cc.text);
     free(flags.text);
+    free(jobs);
     return ok;
 }
 
@@ -352,46 +371,39 @@ static bool lay_out_tree(const char *course, const char *folder, const char *tre
     return true;
 }
 
-/* The link line of program `bin` with part <folder>'s course objects replaced by the submission's,
- * run in the tree as the grader, bounded: it reads objects a confined compiler wrote. */
-static bool link_program(const char *course, const char *tree, const char *folder, const grade_manifest *m,
-                         const char *bin, const char *log, grade_run_result *rr)
-{
-    char key[128], own[300], objs[GRADE_SOURCE_FILES][GRADE_SOURCE_NAME + 128];
-    snprintf(key, sizeof key, "link %s", bin);
+/* One link: program `bin`'s recipe with part <folder>'s course objects replaced by the
+ * submission's, run in the tree as the grader, bounded: it reads objects a confined compiler wrote. */
+typedef struct {
     recipe cc, line;
-    bool ok = recipe_read(course, "cc", &cc) && recipe_read(course, key, &line);
+    char objs[GRADE_SOURCE_FILES][GRADE_SOURCE_NAME + 128], log[4400];
     char *argv[RECIPE_WORDS + GRADE_SOURCE_FILES + 2];
+} link_job;
+
+static bool link_job_make(const char *course, const char *folder, const grade_manifest *m, const char *bin,
+                          link_job *j)
+{
+    char key[128], own[300];
+    snprintf(key, sizeof key, "link %s", bin);
+    bool ok = recipe_read(course, "cc", &j->cc) && recipe_read(course, key, &j->line);
     int argc = 0;
-    if (ok) {
-        grade_path(own, sizeof own, GRADE_OBJECTS "/parts/%s/", folder);
-        argv[argc++] = cc.words[0];
-        bool placed = false;
-        for (int w = 0; w < line.num_words; w++) {
-            if (strncmp(line.words[w], own, strlen(own))) {
-                argv[argc++] = line.words[w];
-                continue;
-            }
-            for (int i = 0; !placed && i < m->count; i++) {
-                size_t len = strlen(m->names[i]);
-                if (m->names[i][len - 1] != 'c') continue;
-                snprintf(objs[i], sizeof objs[i], "%s%.*s.o", own, (int)len - 2, m->names[i]);
-                argv[argc++] = objs[i];
-            }
-            placed = true;
+    bool placed = false;
+    grade_path(own, sizeof own, GRADE_OBJECTS "/parts/%s/", folder);
+    if (ok) j->argv[argc++] = j->cc.words[0];
+    for (int w = 0; ok && w < j->line.num_words; w++) {
+        if (strncmp(j->line.words[w], own, strlen(own))) {
+            j->argv[argc++] = j->line.words[w];
+            continue;
         }
-        argv[argc] = NULL;
-        ok = placed;
+        for (int i = 0; !placed && i < m->count; i++) {
+            size_t len = strlen(m->names[i]);
+            if (m->names[i][len - 1] != 'c') continue;
+            snprintf(j->objs[i], sizeof j->objs[i], "%s%.*s.o", own, (int)len - 2, m->names[i]);
+            j->argv[argc++] = j->objs[i];
+        }
+        placed = true;
     }
-    if (ok) {
-        grade_run_opts o = {.wall_seconds = GRADE_LINK_SECONDS, .cwd = tree, .log_path = log,
-                            .log_max = GRADE_LOG_MAX, .bounded = true};
-        *rr = grade_run(argv, &o);
-        ok = rr->exited && rr->status == 0;
-    }
-    free(cc.text);
-    free(line.text);
-    return ok;
+    j->argv[argc] = NULL;
+    return ok && placed;
 }
 
 bool grade_build_submission(const grade_env *env, int n, const char *tree, grade_part_result *r)
@@ -431,23 +443,38 @@ bool grade_build_submission(const grade_env *env, int n, const char *tree, grade
         if (m.names[i][strlen(m.names[i]) - 1] == 'c') ok = copy_file(submitted, to, m.names[i], GRADE_SOURCE_BYTES);
     /* The objects against the allow-list, before the linker reads them as the grader. */
     char program[4300], work[4300], why[sizeof r->suite_reason];
-    grade_path(program, sizeof program, "%s/bin/test-part%d", course, n);
+    grade_path(program, sizeof program, "%s/bin/subject-part%d", course, n);
     grade_path(work, sizeof work, "%s/part%d", env->work, n);
     if (ok && !grade_inspect_part(tree, folder, program, work, true, why, sizeof why))
         ok = (grade_msg(r->suite_reason, sizeof r->suite_reason, "%s", why), false);
-    char programs[3][32];
-    snprintf(programs[0], sizeof programs[0], "bin/pathtracer");
-    snprintf(programs[1], sizeof programs[1], "bin/test-part%d", n);
-    snprintf(programs[2], sizeof programs[2], "bin/subject-part%d", n);  /* the split suite's half (grade_judge.c) */
-    grade_path(log, sizeof log, "%s/part%d/link.log", env->work, n);
-    for (int k = 0; ok && k < 3; k++) {
-        grade_run_result rr = {.exited = true, .status = 1};
-        if (!link_program(course, tree, folder, &m, programs[k], log, &rr)) {
-            append_log(log, r->build_log);
-            build_verdict(&rr, n, "link", programs[k], GRADE_LINK_SECONDS, log, r);
+    /* The renderer and the split suite's subject (grade_judge.c), side by side: a submission's
+     * suite never runs whole, so its test-part<n> is not linked. */
+    static const char *const programs[] = {"bin/pathtracer", "bin/subject-part%d"};
+    link_job *links = ok ? calloc(2, sizeof *links) : NULL;
+    char *const *argvs[2] = {0};
+    grade_run_opts opts[2] = {{0}};
+    grade_run_result results[2];
+    for (int k = 0; ok && k < 2; k++) {
+        char bin[64];
+        snprintf(bin, sizeof bin, programs[k], n);
+        grade_path(links[k].log, sizeof links[k].log, "%s/part%d/link-%d.log", env->work, n, k);
+        if (!link_job_make(course, folder, &m, bin, &links[k]))
+            ok = (grade_msg(r->suite_reason, sizeof r->suite_reason, "the course's build recipes have no link of %s: the "
+                            "course's problem, please tell the staff", bin), false);
+        argvs[k] = links[k].argv;
+        opts[k] = (grade_run_opts){.wall_seconds = GRADE_LINK_SECONDS, .cwd = tree, .log_path = links[k].log,
+                                   .log_max = GRADE_LOG_MAX, .bounded = true};
+    }
+    if (ok) grade_run_jobs(2, argvs, opts, results);
+    for (int k = 0; ok && k < 2; k++) {
+        append_log(links[k].log, r->build_log);
+        if (!results[k].exited || results[k].status != 0) {
+            build_verdict(&results[k], n, "link", k ? "the suite" : "the renderer", GRADE_LINK_SECONDS, links[k].log, r);
             ok = false;
         }
     }
+    for (int k = 0; links && k < 2; k++) free(links[k].cc.text), free(links[k].line.text);
+    free(links);
     if (!ok) grade_diagnostics(r->build_log, folder, GRADE_DIAG_LINES, r->build_output, sizeof r->build_output);
     return ok;
 }

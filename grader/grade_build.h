@@ -26,8 +26,8 @@ bool grade_manifest_read(const char *dir, const char *folder, grade_manifest *m,
 
 /* Builds part n of env->submission into `tree` (the caller's: a new folder in env->sandbox_dir):
  * each submitted .c compiled alone, confined, into an object; the objects taken out, and linked as
- * the grader with the course's own objects of everything else into bin/pathtracer, bin/test-part<n>
- * and bin/subject-part<n>. False with r->suite_reason (and the compiler's lines about the student's
+ * the grader with the course's own objects of everything else into bin/pathtracer and
+ * bin/subject-part<n>. False with r->suite_reason (and the compiler's lines about the student's
  * own files in r->build_output) when the part is refused, does not compile or does not link. */
 bool grade_build_submission(const grade_env *env, int n, const char *tree, grade_part_result *r);
 

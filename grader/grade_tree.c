@@ -53,25 +53,30 @@ bool grade_tree_course_build(const grade_env *env, const char *parts, char *why,
         char *cp[] = {"cp", "-a", from, course, NULL};
         if (stat(from, &st) == 0 && !run_quiet(cp, log)) return grade_msg(why, size, "cannot copy %s", from), false;
     }
-    /* Objects `bin/grade --prebuild` made when the image was set up (setup.sh): copied with their
-     * times, make finds them newer than the sources and only links (a source edited since is rebuilt). */
-    char prebuilt[4200], self[4200];
-    struct stat st;
-    grade_path(prebuilt, sizeof prebuilt, "%s/" GRADE_PREBUILD "/course/build", env->root);
+    /* Objects and programs `bin/grade --prebuild` made when the image was set up (setup.sh): copied
+     * with their times, make finds them newer than the sources and does nothing (a source edited
+     * since is rebuilt, and what depends on it relinked). */
+    char self[4200];
     grade_path(self, sizeof self, "%s/" GRADE_PREBUILD, env->root);
-    char *seed[] = {"cp", "-a", prebuilt, course, NULL};
-    if (strcmp(self, env->work) && stat(prebuilt, &st) == 0 && S_ISDIR(st.st_mode) && !run_quiet(seed, log))
-        return grade_msg(why, size, "cannot copy %s", prebuilt), false;
-    /* The renderer, the recipes, and the suites of the parts to grade only, whole and split. */
-    char programs[3 * GRADE_NUM_PARTS][32];
-    char *make[16 + 3 * GRADE_NUM_PARTS] = {"make", "-C", course, GRADE_MAKE_ARGS, "bin/pathtracer",
+    for (int k = 0; k < 2 && strcmp(self, env->work); k++) {
+        char prebuilt[4300];
+        struct stat st;
+        grade_path(prebuilt, sizeof prebuilt, "%s/course/%s", self, k ? "bin" : "build");
+        char *seed[] = {"cp", "-a", prebuilt, course, NULL};
+        if (stat(prebuilt, &st) == 0 && S_ISDIR(st.st_mode) && !run_quiet(seed, log))
+            return grade_msg(why, size, "cannot copy %s", prebuilt), false;
+    }
+    /* The renderer, the recipes, and the split suites of the parts to grade only: each part's
+     * subject (whose objects a submission's link reuses) and judge. */
+    char programs[2 * GRADE_NUM_PARTS][32];
+    char *make[16 + 2 * GRADE_NUM_PARTS] = {"make", "-C", course, GRADE_MAKE_ARGS, "bin/pathtracer",
                                             GRADE_OBJECTS "/grade-recipes.txt"};
     int argc = 10;  /* after make -C course, the 5 arguments, bin/pathtracer and the recipes */
-    static const char *const per_part[] = {"bin/test-part%d", "bin/subject-part%d", "bin/judge-part%d"};
+    static const char *const per_part[] = {"bin/subject-part%d", "bin/judge-part%d"};
     for (int k = 1; k <= GRADE_NUM_PARTS; k++)
-        for (int j = 0; j < 3 && strchr(parts, '0' + k); j++) {
-            snprintf(programs[3 * (k - 1) + j], sizeof programs[0], per_part[j], k);
-            make[argc++] = programs[3 * (k - 1) + j];
+        for (int j = 0; j < 2 && strchr(parts, '0' + k); j++) {
+            snprintf(programs[2 * (k - 1) + j], sizeof programs[0], per_part[j], k);
+            make[argc++] = programs[2 * (k - 1) + j];
         }
     make[argc] = NULL;
     grade_run_opts o = {.wall_seconds = GRADE_COURSE_BUILD_SECONDS, .log_path = log, .log_max = GRADE_LOG_MAX};
