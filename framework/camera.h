@@ -16,6 +16,7 @@
 #include "mat4.h"
 #include "aabb.h"
 #include "options.h"
+#include <stddef.h>
 
 /* CS184's lens when nothing sets one: a pinhole (radius 0) focused at 4.7 m (its -d default). */
 #define CAMERA_DEFAULT_LENS_RADIUS 0.0f
@@ -71,6 +72,9 @@ void camera_apply_lens_flags(camera *c, const options *o);
  * a -c settings file gives the camera (CS184 takes that camera as it is too). */
 struct scene;
 bool camera_uses_cs184_framing(const struct scene *s, const options *o);
+/* The status line naming the camera's framing and the option that gives the other, without a
+ * newline, into buf: "camera: CS184's framing (...); --camera literal for the file's own". */
+void camera_framing_line(const options *o, const struct scene *s, char *buf, size_t size);
 
 /* The camera a render of s uses under options o (the order in the comment at the top). */
 camera camera_for_render(const struct scene *s, const options *o);

@@ -377,18 +377,3 @@ int cli_warn_noops(const options *o, const scene *s, pl_diag *d)
     }
     return said;
 }
-
-void cli_framing_line(const options *o, const scene *s, char *buf, size_t size)
-{
-    bool cs184 = camera_uses_cs184_framing(s, o);
-    const char *why = o->framing != FRAMING_AUTO ? "as asked"
-                      : cs184                    ? "the file is in the course's profile"
-                      : o->camera_file           ? "the -c file's camera"
-                                                 : "the file is not in the course's profile";
-    if (cs184)
-        snprintf(buf, size, "camera: CS184's framing, an orbit on the scene's bounds along the file camera's direction "
-                            "(%s); --camera literal for the file's own camera", why);
-    else
-        snprintf(buf, size, "camera: %s, as written (%s); --camera cs184 for CS184's framing",
-                 s->has_camera ? "the file's camera" : "no camera in the file, the default view", why);
-}

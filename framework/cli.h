@@ -24,8 +24,5 @@ struct scene;
  * how many warnings it gave. */
 int cli_warn_noops(const options *o, const struct scene *s, pl_diag *d);
 
-/* The status line naming the camera's framing and the option that gives the other, without a
- * newline, into buf: "camera: CS184's framing (...); --camera literal for the file's own". */
-void cli_framing_line(const options *o, const struct scene *s, char *buf, size_t size);
 
 #endif

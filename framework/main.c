@@ -8,6 +8,7 @@
  * student's BVH once part 2 is done), renders every pixel (render.c, which calls the parts), and
  * writes every file at once or none (output.c). Every step that can fail returns a pl_status with
  * a message in a pl_diag (status.h); this file turns the first one into the exit status. */
+#include "camera.h"
 #include "cli.h"
 #include "clock.h"
 #include "dae.h"
@@ -185,7 +186,7 @@ static int run(const options *o, const char *prog)
     cli_warn_noops(o, &s, &diag);
     if (!o->quiet && !o->trace) {
         char line[256];
-        cli_framing_line(o, &s, line, sizeof line);
+        camera_framing_line(o, &s, line, sizeof line);
         printf("[pathlab] %s\n", line);
         fflush(stdout);
     }

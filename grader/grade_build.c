@@ -89,7 +89,7 @@ static bool manifest_entry(const char *dir, const char *folder, const char *name
                          GRADE_SOURCE_BYTES >> 10), false;
     if (m->count == GRADE_SOURCE_FILES)
         return grade_msg(why, size, "parts/%s holds over %d .c and .h files", folder, GRADE_SOURCE_FILES), false;
-    snprintf(m->names[m->count++], sizeof m->names[0], "%s", name);
+    grade_path(m->names[m->count++], sizeof m->names[0], "%s", name);  /* fits: source_name bounds it */
     return true;
 }
 
@@ -397,7 +397,7 @@ static bool link_job_make(const char *course, const char *folder, const grade_ma
         for (int i = 0; !placed && i < m->count; i++) {
             size_t len = strlen(m->names[i]);
             if (m->names[i][len - 1] != 'c') continue;
-            snprintf(j->objs[i], sizeof j->objs[i], "%s%.*s.o", own, (int)len - 2, m->names[i]);
+            grade_path(j->objs[i], sizeof j->objs[i], "%s%.*s.o", own, (int)len - 2, m->names[i]);
             j->argv[argc++] = j->objs[i];
         }
         placed = true;

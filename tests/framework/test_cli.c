@@ -1,6 +1,7 @@
 /* Test machinery: not part of any assignment. Command-line parsing: CS184's flags and defaults;
- * what a run says about its scene and flags (cli_warn_noops, cli_framing_line). */
+ * what a run says about its scene and flags (cli_warn_noops, camera_framing_line). */
 #include "../common/test.h"
+#include "../../framework/camera.h"
 #include "../../framework/cli.h"
 #include "../../framework/dae.h"
 #include <string.h>
@@ -214,23 +215,23 @@ static void test_cli_warn_noops__lens_flags_say_they_are_not_used_yet(void **sta
 }
 
 /* The status line names the framing in use and the option that gives the other. */
-static void test_cli_framing_line__names_the_framing_and_the_other(void **state)
+static void test_camera_framing_line__names_the_framing_and_the_other(void **state)
 {
     scene s;
     floor_scene(&s, true, false);
     s.has_camera = true;
     options o = options_default();
     char line[256];
-    cli_framing_line(&o, &s, line, sizeof line);
+    camera_framing_line(&o, &s, line, sizeof line);
     assert_non_null(strstr(line, "camera: the file's camera, as written"));
     assert_non_null(strstr(line, "--camera cs184"));
     s.course_profile = true;
-    cli_framing_line(&o, &s, line, sizeof line);
+    camera_framing_line(&o, &s, line, sizeof line);
     assert_non_null(strstr(line, "camera: CS184's framing"));
     assert_non_null(strstr(line, "course's profile"));
     assert_non_null(strstr(line, "--camera literal"));
     o.framing = FRAMING_LITERAL;
-    cli_framing_line(&o, &s, line, sizeof line);
+    camera_framing_line(&o, &s, line, sizeof line);
     assert_non_null(strstr(line, "as asked"));
     assert_non_null(strstr(line, "--camera cs184"));
     scene_free(&s);
@@ -256,7 +257,7 @@ int cli_tests(void)
         cmocka_unit_test(test_cli__camera_option_selects_the_framing),
         cmocka_unit_test(test_cli_warn_noops__a_scene_without_lights_says_its_image_is_black),
         cmocka_unit_test(test_cli_warn_noops__lens_flags_say_they_are_not_used_yet),
-        cmocka_unit_test(test_cli_framing_line__names_the_framing_and_the_other),
+        cmocka_unit_test(test_camera_framing_line__names_the_framing_and_the_other),
     };
     return cmocka_run_group_tests_name("cli", tests, NULL, NULL);
 }
