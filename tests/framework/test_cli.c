@@ -1,6 +1,7 @@
 /* Test machinery: not part of any assignment. Command-line parsing: CS184's flags and defaults;
  * what a run says about its scene and flags (cli_warn_noops, camera_framing_line). */
 #include "../common/test.h"
+#include "../common/warn_log.h"
 #include "../../framework/camera.h"
 #include "../../framework/cli.h"
 #include "../../framework/dae.h"
@@ -129,25 +130,11 @@ static void test_cli__camera_option_selects_the_framing(void **state)
 
 /* ---- what a run says -------------------------------------------------------------------------- */
 
-typedef struct {
-    int count;
-    char all[4096];  /* every message, one per line */
-} warn_log;
-
-static void collect_warning(void *user, const char *msg)
-{
-    warn_log *w = user;
-    w->count++;
-    size_t used = strlen(w->all);
-    snprintf(w->all + used, sizeof w->all - used, "%s\n", msg);
-}
-
 /* The warnings cli_warn_noops gives for the command line args and the scene s. */
 static warn_log noops(const char **args, const scene *s)
 {
     warn_log w;
-    memset(&w, 0, sizeof w);
-    pl_diag d = {{0}, 0, collect_warning, &w};
+    pl_diag d = warn_log_diag(&w);
     options o;
     assert_int_equal(PL_OK, parse(&o, &d, args));
     int said = cli_warn_noops(&o, s, &d);

@@ -3,6 +3,7 @@
  * expected values in its first comment, plus small documents built here), and how every malformed
  * input is rejected (tests/data/broken: each file's first line says the status, line and message). */
 #include "../common/test.h"
+#include "../common/warn_log.h"
 #include <dirent.h>
 #include <math.h>
 #include <stdio.h>
@@ -17,39 +18,10 @@
 
 /* ---- helpers ----------------------------------------------------------------------------- */
 
-/* Collects warnings so a test can count them and look for a kind. */
-typedef struct {
-    int count;
-    char all[8192];  /* every message, one per line */
-} warn_log;
-
-static void collect_warning(void *user, const char *msg)
-{
-    warn_log *w = user;
-    w->count++;
-    size_t used = strlen(w->all);
-    snprintf(w->all + used, sizeof w->all - used, "%s\n", msg);
-}
-
-static pl_diag collector(warn_log *w)
-{
-    memset(w, 0, sizeof *w);
-    pl_diag d = {{0}, 0, collect_warning, w};
-    return d;
-}
-
-/* How many collected warnings contain needle. */
-static int warnings_about(const warn_log *w, const char *needle)
-{
-    int n = 0;
-    for (const char *s = w->all; (s = strstr(s, needle)); s += strlen(needle)) n++;
-    return n;
-}
-
 /* Loads a file that must load; fails the test with the loader's message otherwise. */
 static void load_ok(const char *path, scene *s, warn_log *w)
 {
-    pl_diag d = collector(w);
+    pl_diag d = warn_log_diag(w);
     pl_status st = dae_load(path, s, &d);
     if (st != PL_OK) fail_msg("%s: %s: %s", path, pl_status_name(st), d.error);
 }
@@ -85,7 +57,7 @@ static void load_document_ok(const char *up_axis, const char *libraries, const c
                              warn_log *w)
 {
     char *text = document(up_axis, libraries, nodes);
-    pl_diag d = collector(w);
+    pl_diag d = warn_log_diag(w);
     pl_status st = dae_load_memory(text, strlen(text), "inline.dae", s, &d);
     free(text);
     if (st != PL_OK) fail_msg("inline document: %s: %s", pl_status_name(st), d.error);
@@ -241,7 +213,7 @@ static void test_dae_load__every_broken_file_is_rejected_with_file_line_and_elem
         }
         scene s;
         warn_log w;
-        pl_diag d = collector(&w);
+        pl_diag d = warn_log_diag(&w);
         pl_status st = dae_load(path, &s, &d);
         snprintf(want, sizeof want, "%s:%ld: %s", path, line, message);
         if (st != expected || strncmp(d.error, want, strlen(want)) != 0) {
@@ -280,7 +252,7 @@ static void check_rejected(const char *text, size_t len, const char *name)
 {
     scene s;
     warn_log w;
-    pl_diag d = collector(&w);
+    pl_diag d = warn_log_diag(&w);
     pl_status st = dae_load_memory(text, len, name, &s, &d);
     if (st == PL_OK) fail_msg("%s (%zu bytes) loaded, but it is truncated", name, len);
     assert_int_equal(PL_ERR_PARSE, st);
@@ -317,7 +289,7 @@ static void test_dae_load__random_corruption_never_crashes(void **state)
         }
         scene s;
         warn_log w;
-        pl_diag d = collector(&w);
+        pl_diag d = warn_log_diag(&w);
         pl_status st = dae_load_memory(text, len, "corrupt.dae", &s, &d);
         if (st == PL_OK) {
             loaded++;
@@ -382,7 +354,7 @@ static void test_dae_load__large_mesh_loads_and_errors_keep_exact_lines(void **s
 
     scene s;
     warn_log w;
-    pl_diag d = collector(&w);
+    pl_diag d = warn_log_diag(&w);
     assert_int_equal(PL_OK, dae_load_memory(text, len, "grid.dae", &s, &d));
     assert_int_equal(2 * (side - 1) * (side - 1), s.num_triangles);
     assert_vec3_near(vec3_make(side - 1, 0, side - 1), s.triangles[s.num_triangles - 1].p2, 0);
@@ -633,7 +605,7 @@ static void test_dae_camera__yfov_only_fixes_the_vertical_fov(void **state)
     assert_float_near(56.3728, s.camera.hfov, 1e-3);
     assert_vec3_near(vec3_make(0, 1, 5), s.camera.position, EPS);  /* the first camera */
     assert_int_equal(1, w.count);
-    assert_int_equal(1, warnings_about(&w, "more than one camera"));
+    assert_int_equal(1, warn_log_count(&w, "more than one camera"));
     scene_free(&s);
 }
 
@@ -667,10 +639,10 @@ static void test_dae_materials__every_cgl_kind_loads_with_one_warning_per_kind(v
     for (int i = 1; i < 6; i++) assert_rgb_near(rgb_gray(0), m[i]->Le, EPS);
 
     assert_int_equal(4, w.count);
-    assert_int_equal(1, warnings_about(&w, "mirror materials are not supported yet"));
-    assert_int_equal(1, warnings_about(&w, "glass materials are not supported yet"));
-    assert_int_equal(1, warnings_about(&w, "refraction materials are not supported yet"));
-    assert_int_equal(1, warnings_about(&w, "microfacet materials are not supported yet"));
+    assert_int_equal(1, warn_log_count(&w, "mirror materials are not supported yet"));
+    assert_int_equal(1, warn_log_count(&w, "glass materials are not supported yet"));
+    assert_int_equal(1, warn_log_count(&w, "refraction materials are not supported yet"));
+    assert_int_equal(1, warn_log_count(&w, "microfacet materials are not supported yet"));
     assert_non_null(strstr(w.all, "materials.dae:"));  /* warnings are located too */
     scene_free(&s);
 }
@@ -723,10 +695,10 @@ static void test_dae_warnings__unsupported_features_warn_once_per_kind(void **st
     for (int i = 0; i < 2; i++) assert_rgb_near(rgb_gray(0.5f), s.materials[s.triangles[i].material].albedo, EPS);
     assert_int_equal(0, s.num_lights);
     assert_int_equal(4, w.count);
-    assert_int_equal(1, warnings_about(&w, "<environment> lights are not supported"));
-    assert_int_equal(1, warnings_about(&w, "textures are not supported"));
-    assert_int_equal(1, warnings_about(&w, "<instance_controller>) are not supported"));
-    assert_int_equal(1, warnings_about(&w, "animations are not supported"));
+    assert_int_equal(1, warn_log_count(&w, "<environment> lights are not supported"));
+    assert_int_equal(1, warn_log_count(&w, "textures are not supported"));
+    assert_int_equal(1, warn_log_count(&w, "<instance_controller>) are not supported"));
+    assert_int_equal(1, warn_log_count(&w, "animations are not supported"));
     scene_free(&s);
 }
 

@@ -180,6 +180,19 @@ static bool light_and_floor(scene *s, rng *g, light *l, ray *r, hit *h)
     return hit_prim(s, 2, r, h);
 }
 
+/* Whether the shadow ray still stops at an occluder put across its middle (triangle 3 of s, as wide
+ * as the segment is long): stopping short of the light must not stop short of what lies between. */
+static bool occluder_stops(scene *s, const ray *shadow, const light_sample *ls)
+{
+    frame across = frame_from_normal(ls->wi);
+    vec3 mid = vec3_add(shadow->o, vec3_scale(shadow->d, 0.5f * shadow->max_t));
+    vec3 a = vec3_scale(across.s, ls->dist), b = vec3_scale(across.t, ls->dist);
+    s->triangles[3] = triangle_make(vec3_sub(mid, a), vec3_add(mid, b), vec3_add(mid, vec3_sub(a, b)), 0);
+    ray r = *shadow;  /* the test narrows the ray's max_t */
+    hit any;
+    return scene_prim_intersect(s, 3, &r, &any);
+}
+
 /* One shadow ray from a floor hit to a light sample: it must reach neither the light's quad nor
  * the floor, and must stop at an occluder (prim 3) put across its middle. */
 static void light_trial(scene *s, rng *g, light_tally *t)
@@ -203,11 +216,7 @@ static void light_trial(scene *s, rng *g, light_tally *t)
             snprintf(t->first, sizeof t->first, "prim %d at t = %g of max_t %g; light at (%g, %g, %g), size %g, dist %g",
                      prim, any.t, shadow.max_t, l.position.x, l.position.y, l.position.z, vec3_length(l.edge_u), ls.dist);
     }
-    frame across = frame_from_normal(ls.wi);
-    vec3 mid = vec3_add(shadow.o, vec3_scale(shadow.d, 0.5f * shadow.max_t));
-    vec3 a = vec3_scale(across.s, ls.dist), b = vec3_scale(across.t, ls.dist);
-    s->triangles[3] = triangle_make(vec3_sub(mid, a), vec3_add(mid, b), vec3_add(mid, vec3_sub(a, b)), 0);
-    if (!scene_prim_intersect(s, 3, &shadow, &any)) t->missed_occluder++;
+    t->missed_occluder += !occluder_stops(s, &shadow, &ls);
 }
 
 static void test_spawn_ray_to_light__stops_short_of_the_light_not_of_an_occluder(void **state)
@@ -299,11 +308,7 @@ static void point_trial(scene *s, rng *g, light_kind kind, point_tally *t)
             snprintf(t->first, sizeof t->first, "prim %d at t = %g of max_t %g; light at (%g, %g, %g), dist %g, sin %g",
                      prim, any.t, shadow.max_t, l.position.x, l.position.y, l.position.z, ls.dist, sin_quad);
     }
-    frame across = frame_from_normal(ls.wi);
-    vec3 mid = vec3_add(shadow.o, vec3_scale(shadow.d, 0.5f * shadow.max_t));
-    vec3 a = vec3_scale(across.s, ls.dist), b = vec3_scale(across.t, ls.dist);
-    s->triangles[3] = triangle_make(vec3_sub(mid, a), vec3_add(mid, b), vec3_add(mid, vec3_sub(a, b)), 0);
-    if (!scene_prim_intersect(s, 3, &shadow, &any)) t->missed_occluder++;
+    t->missed_occluder += !occluder_stops(s, &shadow, &ls);
 }
 
 static void check_point_light_in_quad(light_kind kind, const char *what, uint64_t seed)
