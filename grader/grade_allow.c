@@ -48,7 +48,8 @@ static const char *const allowed_libc[] = {
     "stdout", "stderr", "__printf_chk", "__fprintf_chk", "__sprintf_chk", "__snprintf_chk", "__memcpy_chk",
     "__memset_chk", "__memmove_chk", "__assert_fail", "__stack_chk_fail", "_GLOBAL_OFFSET_TABLE_", NULL};
 
-/* From libm, each also in its float form (name + "f"). */
+/* From libm, each also in its float and long double forms (name + "f", name + "l"): pure maths in
+ * every precision (a part written in long double is as correct as one in float). */
 static const char *const allowed_libm[] = {
     "sqrt", "cbrt", "hypot", "exp", "exp2", "expm1", "log", "log2", "log10", "log1p", "pow", "sin", "cos", "tan",
     "asin", "acos", "atan", "atan2", "sinh", "cosh", "tanh", "fabs", "floor", "ceil", "round", "trunc", "fmod",
@@ -68,7 +69,7 @@ static bool libm_function(const char *s)
     if (n == 0 || n >= sizeof base) return false;
     if (in_list(allowed_libm, s)) return true;
     snprintf(base, sizeof base, "%.*s", (int)n - 1, s);
-    return s[n - 1] == 'f' && in_list(allowed_libm, base);
+    return (s[n - 1] == 'f' || s[n - 1] == 'l') && in_list(allowed_libm, base);
 }
 
 const char *const *grade_allowed_framework(void) { return allowed_framework; }
