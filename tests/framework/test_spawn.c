@@ -219,15 +219,22 @@ static void light_trial(scene *s, rng *g, light_tally *t)
     t->missed_occluder += !occluder_stops(s, &shadow, &ls);
 }
 
+/* one_of_each's scene with three more triangles, the room the light and occluder checks build in
+ * (triangles 1..3); the test is skipped where part 1 is not solved yet. */
+static void scene_with_room(scene *s)
+{
+    bool solved = one_of_each(s);
+    for (int i = 0; i < 3; i++) scene_add_triangle(s, s->triangles[0]);
+    if (!solved) {
+        scene_free(s);
+        skip();
+    }
+}
+
 static void test_spawn_ray_to_light__stops_short_of_the_light_not_of_an_occluder(void **state)
 {
     scene s;
-    bool solved = one_of_each(&s);
-    for (int i = 0; i < 3; i++) scene_add_triangle(&s, s.triangles[0]);
-    if (!solved) {
-        scene_free(&s);
-        skip();
-    }
+    scene_with_room(&s);
     uint64_t seed = SEED + 2;
     mc_print_seed("area light samples", seed);
     rng g = rng_seeded(seed, 0);
@@ -314,12 +321,7 @@ static void point_trial(scene *s, rng *g, light_kind kind, point_tally *t)
 static void check_point_light_in_quad(light_kind kind, const char *what, uint64_t seed)
 {
     scene s;
-    bool solved = one_of_each(&s);
-    for (int i = 0; i < 3; i++) scene_add_triangle(&s, s.triangles[0]);
-    if (!solved) {
-        scene_free(&s);
-        skip();
-    }
+    scene_with_room(&s);
     mc_print_seed(what, seed);
     rng g = rng_seeded(seed, 0);
     point_tally t = {0};
