@@ -406,6 +406,44 @@ static bool link_job_make(const char *course, const char *folder, const grade_ma
     return ok && placed;
 }
 
+/* The renderer and the split suite's subject (grade_judge.c), linked side by side in the tree; false
+ * with the verdict in r. A submission's suite never runs whole, so its test-part<n> is not linked. */
+static bool link_all(const grade_env *env, int n, const char *folder, const grade_manifest *m, const char *tree,
+                     grade_part_result *r)
+{
+    static const char *const programs[] = {"bin/pathtracer", "bin/subject-part%d"};
+    char course[4200];
+    grade_path(course, sizeof course, "%s/course", env->work);
+    link_job *links = calloc(2, sizeof *links);
+    char *const *argvs[2] = {0};
+    grade_run_opts opts[2] = {{0}};
+    grade_run_result results[2];
+    bool ok = links != NULL;
+    if (!ok) grade_msg(r->suite_reason, sizeof r->suite_reason, "the grader ran out of memory linking part %d", n);
+    for (int k = 0; ok && k < 2; k++) {
+        char bin[64];
+        snprintf(bin, sizeof bin, programs[k], n);
+        grade_path(links[k].log, sizeof links[k].log, "%s/part%d/link-%d.log", env->work, n, k);
+        if (!link_job_make(course, folder, m, bin, &links[k]))
+            ok = (grade_msg(r->suite_reason, sizeof r->suite_reason, "the course's build recipes have no link of %s: the "
+                            "course's problem, please tell the staff", bin), false);
+        argvs[k] = links[k].argv;
+        opts[k] = (grade_run_opts){.wall_seconds = GRADE_LINK_SECONDS, .cwd = tree, .log_path = links[k].log,
+                                   .log_max = GRADE_LOG_MAX, .bounded = true};
+    }
+    if (ok) grade_run_jobs(2, argvs, opts, results);
+    for (int k = 0; ok && k < 2; k++) {
+        append_log(links[k].log, r->build_log);
+        if (!results[k].exited || results[k].status != 0) {
+            build_verdict(&results[k], n, "link", k ? "the suite" : "the renderer", GRADE_LINK_SECONDS, links[k].log, r);
+            ok = false;
+        }
+    }
+    for (int k = 0; links && k < 2; k++) free(links[k].cc.text), free(links[k].line.text);
+    free(links);
+    return ok;
+}
+
 bool grade_build_submission(const grade_env *env, int n, const char *tree, grade_part_result *r)
 {
     char course[4200], folder[256], submitted[4400], scratch[4200], src[4300], out[4300], objects[4400], log[4200];
@@ -447,34 +485,7 @@ bool grade_build_submission(const grade_env *env, int n, const char *tree, grade
     grade_path(work, sizeof work, "%s/part%d", env->work, n);
     if (ok && !grade_inspect_part(tree, folder, program, work, true, why, sizeof why))
         ok = (grade_msg(r->suite_reason, sizeof r->suite_reason, "%s", why), false);
-    /* The renderer and the split suite's subject (grade_judge.c), side by side: a submission's
-     * suite never runs whole, so its test-part<n> is not linked. */
-    static const char *const programs[] = {"bin/pathtracer", "bin/subject-part%d"};
-    link_job *links = ok ? calloc(2, sizeof *links) : NULL;
-    char *const *argvs[2] = {0};
-    grade_run_opts opts[2] = {{0}};
-    grade_run_result results[2];
-    for (int k = 0; ok && k < 2; k++) {
-        char bin[64];
-        snprintf(bin, sizeof bin, programs[k], n);
-        grade_path(links[k].log, sizeof links[k].log, "%s/part%d/link-%d.log", env->work, n, k);
-        if (!link_job_make(course, folder, &m, bin, &links[k]))
-            ok = (grade_msg(r->suite_reason, sizeof r->suite_reason, "the course's build recipes have no link of %s: the "
-                            "course's problem, please tell the staff", bin), false);
-        argvs[k] = links[k].argv;
-        opts[k] = (grade_run_opts){.wall_seconds = GRADE_LINK_SECONDS, .cwd = tree, .log_path = links[k].log,
-                                   .log_max = GRADE_LOG_MAX, .bounded = true};
-    }
-    if (ok) grade_run_jobs(2, argvs, opts, results);
-    for (int k = 0; ok && k < 2; k++) {
-        append_log(links[k].log, r->build_log);
-        if (!results[k].exited || results[k].status != 0) {
-            build_verdict(&results[k], n, "link", k ? "the suite" : "the renderer", GRADE_LINK_SECONDS, links[k].log, r);
-            ok = false;
-        }
-    }
-    for (int k = 0; links && k < 2; k++) free(links[k].cc.text), free(links[k].line.text);
-    free(links);
+    ok = ok && link_all(env, n, folder, &m, tree, r);
     if (!ok) grade_diagnostics(r->build_log, folder, GRADE_DIAG_LINES, r->build_output, sizeof r->build_output);
     return ok;
 }
