@@ -20,6 +20,7 @@ static const scene_spec SCENES[] = {
     {"scenes/cornell_bunny.dae", 12 + 3674, 0, 1},
     {"scenes/lights_point_dir.dae", 20, 1, 2},
     {"scenes/cornell_grazing.dae", 12, 2, 1},  /* 100 m out: its own test below */
+    {"scenes/cornell_two_lights.dae", 14, 2, 2},  /* its own test below */
 };
 
 static void count_warning(void *user, const char *msg)
@@ -154,6 +155,39 @@ static void test_scenes__cornell_spheres_rest_on_the_floor_inside_the_box(void *
 /* The side-lit box (the grazing_direct case), 100 m from the origin along (1, 1, 1): moved back,
  * the light and its quad on the red wall facing +x, the quad reflecting nothing, both spheres on
  * the floor inside the box. */
+/* Two area lights of different sizes and radiance under the ceiling, each with an emissive quad of its
+ * own area and radiance in its plane (the part 3 cases that need more than one light). */
+static void test_scenes__cornell_two_lights_differ_and_each_has_its_quad(void **state)
+{
+    (void)state;
+    scene s;
+    load_scene("scenes/cornell_two_lights.dae", &s);
+    assert_int_equal(2, s.num_lights);
+    const light *big = &s.lights[0], *small = &s.lights[1];
+    assert_int_equal(LIGHT_AREA, big->kind);
+    assert_int_equal(LIGHT_AREA, small->kind);
+    assert_float_near(0.35, big->area, EPS);
+    assert_float_near(0.0625, small->area, EPS);
+    assert_rgb_near(rgb_gray(4), big->radiance, EPS);
+    assert_rgb_near(rgb_gray(30), small->radiance, EPS);
+    for (int k = 0; k < 2; k++) {
+        const light *l = &s.lights[k];
+        assert_float_near(1.49, l->position.y, EPS);
+        assert_vec3_near(vec3_make(0, -1, 0), l->direction, EPS);
+        float area = 0;
+        for (int i = 0; i < s.num_triangles; i++) {
+            const triangle *t = &s.triangles[i];
+            const material *m = &s.materials[t->material];
+            if (rgb_is_black(m->Le) || fabsf(m->Le.r - l->radiance.r) > EPS) continue;
+            vec3 c = vec3_scale(vec3_add(t->p0, vec3_add(t->p1, t->p2)), 1.0f / 3.0f);
+            assert_true(fabsf(c.x - l->position.x) < 0.5f && fabsf(c.z - l->position.z) < 0.5f);
+            area += 0.5f * vec3_length(vec3_cross(vec3_sub(t->p1, t->p0), vec3_sub(t->p2, t->p0)));
+        }
+        assert_float_near(l->area, area, EPS);
+    }
+    scene_free(&s);
+}
+
 static void test_scenes__cornell_grazing_is_lit_from_the_red_wall(void **state)
 {
     (void)state;
@@ -231,6 +265,7 @@ int scenes_tests(void)
         cmocka_unit_test(test_scenes__cornell_boxes_are_closed_lit_and_framed),
         cmocka_unit_test(test_scenes__cornell_spheres_rest_on_the_floor_inside_the_box),
         cmocka_unit_test(test_scenes__cornell_grazing_is_lit_from_the_red_wall),
+        cmocka_unit_test(test_scenes__cornell_two_lights_differ_and_each_has_its_quad),
         cmocka_unit_test(test_scenes__cornell_bunny_stands_on_the_floor),
         cmocka_unit_test(test_scenes__lights_point_dir_has_a_point_and_a_directional_light),
     };

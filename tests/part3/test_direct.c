@@ -14,6 +14,7 @@
 #include "../../parts/part3_direct/part3.h"
 #include "part3_alpha.h"
 #include <stdlib.h>
+#include <string.h>
 
 #define SEED mc_seed(0x5eed3003ull)
 #define N 40000
@@ -104,6 +105,60 @@ static void test_direct_hemisphere__matches_form_factor_beside_the_emitter(void 
     check_direct(*state, direct_hemisphere, "direct_hemisphere", 2, 1.6f, -0.9f, SEED + 5);
 }
 
+/* ---- two lights of different sizes and radiance: the estimate is the sum of both -------------- */
+/* Emitter k over the floor: centre (cx, height, cz), half sides, radiance. A large dim light and a
+ * small bright one, so that an estimator that averages over the lights instead of summing them, or
+ * that splits its samples between them and divides by the light samples only, misses the sum. */
+static const struct { float cx, cz, half_x, half_z, height, Le; } two_lights[2] = {
+    {-1.0f, 0.0f, 0.8f, 0.5f, 1.2f, 2.0f},
+    {1.2f, 0.3f, 0.2f, 0.15f, 1.0f, 12.0f},
+};
+
+static void check_two_lights(mc_estimator est, const char *name, int light_samples, float px, float pz, uint64_t seed)
+{
+    tiny_world w;
+    tiny_world_begin(&w);
+    int floor_mat = scene_add_material(&w.s, material_make(rgb_gray(RHO), rgb_gray(0.0f)));
+    vec3 up = vec3_make(0, 1, 0);
+    assert_true(floor_mat >= 0 && tiny_add_quad(&w.s, vec3_make(0, 0, 0), vec3_make(40, 0, 0), vec3_make(0, 0, 40), up,
+                                                floor_mat));
+    double expected = 0.0;
+    for (int k = 0; k < 2; k++) {
+        assert_true(tiny_add_emitter(&w.s, vec3_make(two_lights[k].cx, two_lights[k].height, two_lights[k].cz),
+                                     vec3_make(2 * two_lights[k].half_x, 0, 0), vec3_make(0, 0, 2 * two_lights[k].half_z),
+                                     vec3_neg(up), rgb_gray(two_lights[k].Le)));
+        expected += tiny_emitter_over_plane_direct(RHO, two_lights[k].Le, two_lights[k].half_x, two_lights[k].half_z,
+                                                   two_lights[k].height, px - two_lights[k].cx, pz - two_lights[k].cz);
+    }
+    assert_int_equal(PL_OK, tiny_world_finish(&w));
+    w.o.light_samples = light_samples;
+    tiny_world_refresh(&w);
+    ray r;
+    hit h;
+    assert_hit(tiny_floor_hit(&w.ctx, px, pz, &r, &h));
+    mc_print_seed(name, seed);
+    stats_acc acc[3];
+    mc_run_at(&w.ctx, est, name, &r, &h, seed, N, acc, __FILE__, __LINE__);
+    tiny_world_free(&w);
+    char what[200];
+    snprintf(what, sizeof what, "%s (-l %d) at floor point (%g, 0, %g) under two lights of different sizes, expected the "
+             "sum of rho Le F over both", name, light_samples, px, pz);
+    assert_mean_matches(&acc[0], expected, PART3_CHECK_ALPHA, what);
+}
+#define check_two_lights(...) PL_AT(check_two_lights(__VA_ARGS__))  /* failures name the calling test's line */
+
+static void test_direct_importance__two_lights_of_different_sizes_add_up(void **state)
+{
+    (void)state;
+    check_two_lights(direct_importance, "direct_importance", 3, 0.3f, 0.1f, SEED + 9);
+}
+
+static void test_direct_hemisphere__two_lights_of_different_sizes_add_up(void **state)
+{
+    (void)state;
+    check_two_lights(direct_hemisphere, "direct_hemisphere", 2, 0.3f, 0.1f, SEED + 10);
+}
+
 /* An opaque quad between the floor point and the whole emitter: both estimators must see nothing. */
 static void test_direct__occluder_casts_a_full_shadow(void **state)
 {
@@ -169,6 +224,8 @@ int direct_tests(void)
         cmocka_unit_test_setup_teardown(test_direct_hemisphere__matches_form_factor_under_the_emitter, emitter_setup, tiny_world_teardown),
         cmocka_unit_test_setup_teardown(test_direct_hemisphere__matches_form_factor_beside_the_emitter, emitter_setup, tiny_world_teardown),
         cmocka_unit_test_setup_teardown(test_direct__occluder_casts_a_full_shadow, emitter_setup, tiny_world_teardown),
+        cmocka_unit_test_setup(test_direct_importance__two_lights_of_different_sizes_add_up, test_setup),
+        cmocka_unit_test_setup(test_direct_hemisphere__two_lights_of_different_sizes_add_up, test_setup),
         cmocka_unit_test_setup(test_direct_importance__point_light_follows_inverse_square_and_cosine, test_setup),
         cmocka_unit_test_setup(test_direct_importance__point_light_applies_attenuation, test_setup),
     };
