@@ -16,6 +16,9 @@
 #define GRADE_MAX_CASES 16
 #define GRADE_MAX_FLAGS 16
 #define GRADE_NUM_PARTS 5
+#define GRADE_MAX_TASKS 8         /* a part's unit-test tasks ("unit_tasks" in cases.json) */
+#define GRADE_MAX_MATCH 4         /* test-name prefixes per task */
+#define GRADE_MAX_TESTS 256       /* tests in one suite: the course's largest has ~40 */
 #define GRADE_WORK_FACTOR 3.0     /* a BVH may do up to 3x the course's work per camera ray */
 #define GRADE_SPP_TOLERANCE 0.05  /* an adaptive render's mean samples per pixel: the course's +-5% */
 #define GRADE_NOISE_FACTOR 1.15   /* noise_check cases: per-sample variance at most 1.15x the course's
@@ -45,10 +48,24 @@ typedef struct {
     char shows[160];                    /* what the case makes visible, for the report */
 } grade_case;
 
+/* One task's share of a part's unit points ("unit_tasks" in cases.json): the tests whose names,
+ * less "test_", begin with one of match[]. The share is earned whole when all `tests` of them ran
+ * and passed, and not at all otherwise: a wrong task loses its share, not one test's weight. */
+typedef struct {
+    char task[16];                      /* "3.2", or "3.4+3.5" for tests of two tasks together */
+    char functions[96];                 /* what the task writes, for the report: "bsdf_pdf, bsdf_sample_f" */
+    double points;
+    int tests;                          /* how many tests the suite has for it */
+    char match[GRADE_MAX_MATCH][48];
+    int num_match;
+} grade_task;
+
 typedef struct {
     int part;                           /* 1..5 */
-    double unit_points;
+    double unit_points;                 /* the sum of the tasks' points */
     int unit_tests;                     /* the tests its suite runs to its end ("unit_tests" in cases.json) */
+    grade_task tasks[GRADE_MAX_TASKS];
+    int num_tasks;
     grade_case cases[GRADE_MAX_CASES];
     int num_cases;
 } grade_part_spec;
@@ -103,10 +120,15 @@ typedef struct {
 
 typedef struct {
     int part;
+    const grade_part_spec *spec;  /* its tasks and cases */
     bool built;
     char build_log[320];       /* path of the compiler's output */
     char build_output[4096];   /* its last lines, when the part does not build */
     int tests_run, tests_failed;
+    struct { char name[96]; bool passed; } tests[GRADE_MAX_TESTS];  /* each test's verdict, in the suite's order */
+    int num_tests;
+    double task_score[GRADE_MAX_TASKS];
+    int task_passed[GRADE_MAX_TASKS], task_run[GRADE_MAX_TASKS];  /* per task of the spec: its tests that passed, ran */
     char suite_reason[256];    /* why the suite scored zero (crash, timeout, no results), or "" */
     char failures[8192];       /* names and messages of the failed tests, Markdown */
     double unit_score, unit_max;
@@ -125,9 +147,15 @@ typedef struct {
 
 /* ---- the score (grade_score.c: the one place points are computed) ---------------------------- */
 
-/* Part p's unit, case and total points in r, from its verdicts: the tests run and failed (none
- * count when r->suite_reason says the suite could not be judged) and each case's pass. */
+/* Part p's unit, case and total points in r, from its verdicts: each task's share when all its
+ * tests passed (none count when r->suite_reason says the suite could not be judged) and each
+ * case's pass. */
 void grade_score_part(const grade_part_spec *p, grade_part_result *r);
+/* Records test `name`'s verdict in r (in the suite's order; names past GRADE_MAX_TESTS are dropped,
+ * and the count check then fails the suite). */
+void grade_score_note_test(grade_part_result *r, const char *name, bool passed);
+/* The index of the task of p that test `name` belongs to, or -1. */
+int grade_task_of(const grade_part_spec *p, const char *name);
 /* The whole grading's points, and its maximum in *max. */
 double grade_score_total(const grade_result *r, double *max);
 
@@ -164,7 +192,6 @@ double grade_score_total(const grade_result *r, double *max);
 #define GRADE_ROOT_MAX 1024              /* the course, --out and --submission paths: every path is one of
                                             these and short names, so buffers of 4096 always fit */
 #define GRADE_FILM_MAX ((long)128 << 20) /* a streamed film: 136 bytes a pixel, far above any case */
-#define GRADE_MAX_TESTS 256              /* tests in one suite: the course's largest has ~40 */
 #define GRADE_SUITE_XML_MAX (4L << 20)   /* a group's results file: far more than 100 tests need */
 /* -- what the grader shows */
 #define GRADE_DIAG_LINES 40              /* the compiler's lines about the student's own files */

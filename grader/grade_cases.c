@@ -9,6 +9,7 @@
 #include "grade.h"
 #include "../framework/exr.h"
 #include <jansson.h>
+#include <math.h>
 #include <stdlib.h>
 #include <string.h>
 
@@ -36,7 +37,10 @@ static const member case_members[] = {
     {"name", 's'}, {"scene", 's'}, {"flags", 'a'}, {"resolution", 'a'}, {"samples", 'i'}, {"reference_samples", 'i'},
     {"reference_flags", 'a'}, {"points", 'n'}, {"visibility", 's'}, {"shows", 's'}, {"block_side", 'i'},
     {"work_per_ray", 'b'}, {"statistic", 's'}, {"grazing", 'b'}, {"noise_check", 'b'}, {NULL, 0}};
-static const member part_members[] = {{"part", 'i'}, {"unit_points", 'n'}, {"unit_tests", 'i'}, {"cases", 'a'}, {NULL, 0}};
+static const member part_members[] = {{"part", 'i'}, {"unit_points", 'n'}, {"unit_tests", 'i'}, {"unit_tasks", 'a'},
+                                      {"cases", 'a'}, {NULL, 0}};
+static const member task_members[] = {{"task", 's'}, {"functions", 's'}, {"points", 'n'}, {"tests", 'i'}, {"match", 'a'},
+                                      {NULL, 0}};
 static const member root_members[] = {{"about", 's'}, {"family_alpha", 'n'}, {"parts", 'a'}, {NULL, 0}};
 
 /* Whether v is of the member type letter (member above): JSON's integer is also a number. */
@@ -135,6 +139,50 @@ static pl_status read_case(const char *path, int part, json_t *j, grade_case *c,
     return st;
 }
 
+/* A part's "unit_tasks": each task's share of the unit points and the tests that carry it. The shares
+ * must add up to "unit_points" and the tests to "unit_tests", so that no test and no point is left
+ * out; that every test of the suite matches a task is make test-grader-process's to check. */
+static pl_status read_tasks(const char *path, json_t *tasks, grade_part_spec *p, pl_diag *diag)
+{
+    if (!json_is_array(tasks) || json_array_size(tasks) < 1 || json_array_size(tasks) > GRADE_MAX_TASKS)
+        return pl_fail(diag, PL_ERR_PARSE, "%s: part %d: expected \"unit_tasks\", 1 to %d tasks", path, p->part,
+                       GRADE_MAX_TASKS);
+    double points = 0.0;
+    int tests = 0;
+    for (size_t i = 0; i < json_array_size(tasks); i++) {
+        json_t *tj = json_array_get(tasks, i), *match = json_object_get(tj, "match");
+        char where[64];
+        snprintf(where, sizeof where, "part %d: unit_tasks[%zu]", p->part, i);
+        pl_status checked = check_members(path, where, tj, task_members, diag);
+        if (checked != PL_OK) return checked;
+        grade_task *t = &p->tasks[p->num_tasks++];
+        const char *task = json_string_value(json_object_get(tj, "task"));
+        const char *functions = json_string_value(json_object_get(tj, "functions"));
+        t->points = json_number_value(json_object_get(tj, "points"));
+        t->tests = (int)json_integer_value(json_object_get(tj, "tests"));
+        if (!task || strlen(task) >= sizeof t->task || !functions || strlen(functions) >= sizeof t->functions ||
+            !(t->points >= 0) || t->tests < 1 || !json_is_array(match) || json_array_size(match) < 1 ||
+            json_array_size(match) > GRADE_MAX_MATCH)
+            return pl_fail(diag, PL_ERR_PARSE, "%s: %s: expected \"task\", \"functions\", \"points\" >= 0, \"tests\" "
+                           ">= 1 and \"match\", 1 to %d test-name prefixes", path, where, GRADE_MAX_MATCH);
+        snprintf(t->task, sizeof t->task, "%s", task);
+        snprintf(t->functions, sizeof t->functions, "%s", functions);
+        for (size_t m = 0; m < json_array_size(match); m++) {
+            const char *prefix = json_string_value(json_array_get(match, m));
+            if (!prefix || !prefix[0] || strlen(prefix) >= sizeof t->match[0])
+                return pl_fail(diag, PL_ERR_PARSE, "%s: %s: match %zu: expected a test-name prefix under %zu characters",
+                               path, where, m + 1, sizeof t->match[0]);
+            snprintf(t->match[t->num_match++], sizeof t->match[0], "%s", prefix);
+        }
+        points += t->points;
+        tests += t->tests;
+    }
+    if (tests != p->unit_tests || fabs(points - p->unit_points) > 1e-9)
+        return pl_fail(diag, PL_ERR_PARSE, "%s: part %d: the unit_tasks hold %d tests and %g points, but unit_tests is %d "
+                       "and unit_points %g", path, p->part, tests, points, p->unit_tests, p->unit_points);
+    return PL_OK;
+}
+
 /* Adds the cases of one file's "parts" to out; base says whether parts must list all five. */
 static pl_status read_parts(const char *path, json_t *root, bool base, grade_spec *out, pl_diag *diag)
 {
@@ -161,6 +209,8 @@ static pl_status read_parts(const char *path, json_t *root, bool base, grade_spe
             if (p->unit_tests < 1)
                 return pl_fail(diag, PL_ERR_PARSE, "%s: part %d: expected \"unit_tests\", the number of tests its "
                                "suite runs, >= 1", path, part);
+            pl_status st = read_tasks(path, json_object_get(pj, "unit_tasks"), p, diag);
+            if (st) return st;
         }
         if (p->num_cases + json_array_size(cases) > GRADE_MAX_CASES)
             return pl_fail(diag, PL_ERR_PARSE, "%s: part %d: more than %d cases", path, part, GRADE_MAX_CASES);

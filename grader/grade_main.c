@@ -2,6 +2,7 @@
  * bin/grade [--submission DIR] [--public] [--out DIR] [--seed N] [--threads N] [--parts 1,3]
  * bin/grade --calibrate N [--parts ...] [--cases name,name]
  * bin/grade --prebuild   build the course's objects ahead of time (setup.sh), for every grading to reuse
+ * bin/grade --handout write|check   the grading tables of handout/part<N>.md from grading/cases.json
  *   --submission DIR  grade DIR/parts/ part by part, each among the solution's other parts (autograder);
  *                     without it, grade this tree as it is, public cases only (a student's make grade)
  *   --out DIR         where results.json, the report (DIR/report/index.html) and scratch go (out/grade)
@@ -13,6 +14,7 @@
  * file that is not usable (grading/cases.json, a reference: grade_refs.h), before anyone is graded, 3
  * when the grader's own set-up on this machine is wrong (the course's problem: no part was graded). */
 #include "grade.h"
+#include "grade_handout.h"
 #include "../framework/clock.h"
 #include "grade_guard.h"
 #include "grade_image.h"
@@ -31,7 +33,7 @@
 static int usage(const char *msg)
 {
     fprintf(stderr, "grade: %s\nusage: grade [--submission DIR] [--public] [--out DIR] [--seed N] [--threads N] [--prebuild] "
-                    "[--parts 1,2,...]\n       grade --calibrate N [--parts 1,2,...] [--cases name,...]\n", msg);
+                    "[--parts 1,2,...]\n       grade --calibrate N [--parts 1,2,...] [--cases name,...]\n       grade --handout write|check\n", msg);
     return 2;
 }
 
@@ -232,7 +234,7 @@ static void free_verdicts(grade_result *result)
 
 /* The command line (see the top of this file). */
 typedef struct {
-    const char *submission, *out, *parts, *cases;
+    const char *submission, *out, *parts, *cases, *handout;
     bool public_only, seed_given, prebuild;
     uint64_t seed;
     int threads, calibrate_runs;
@@ -254,11 +256,36 @@ static const char *parse_args(int argc, char **argv, grade_args *a)
         else if (!strcmp(f, "--threads")) a->threads = atoi(argv[++i]);
         else if (!strcmp(f, "--calibrate")) a->calibrate_runs = atoi(argv[++i]);
         else if (!strcmp(f, "--cases")) a->cases = argv[++i];
+        else if (!strcmp(f, "--handout")) a->handout = argv[++i];
         else return "unknown option";
     }
     if (a->threads < 1 || a->threads > 64) return "--threads: expected 1..64";
+    if (a->handout && strcmp(a->handout, "write") && strcmp(a->handout, "check")) return "--handout: expected write or check";
     if (!a->submission) a->public_only = true;  /* a student's own tree has no hidden cases */
     return NULL;
+}
+
+/* --handout write|check: each part's grading table in handout/part<N>.md against grading/cases.json's
+ * public cases (grade_handout.h). */
+static int handout_tables(bool write)
+{
+    grade_spec spec;
+    pl_diag diag = pl_diag_default();
+    if (grade_spec_load(GRADE_CASES, NULL, &spec, &diag) != PL_OK) {
+        fprintf(stderr, "grade: %s\n", diag.error);
+        return 2;
+    }
+    int code = 0;
+    for (int k = 0; k < GRADE_NUM_PARTS; k++) {
+        char path[64];
+        snprintf(path, sizeof path, "handout/part%d.md", k + 1);
+        if (grade_handout_update(path, &spec.parts[k], write, &diag) != PL_OK) {
+            fprintf(stderr, "grade: %s\n", diag.error);
+            code = 1;
+        }
+    }
+    grade_spec_free(&spec);
+    return code;
 }
 
 /* ---- main: folders, the course's cases and references, the sandbox, then the parts ----------- */
@@ -322,6 +349,7 @@ int main(int argc, char **argv)
     grade_args a;
     const char *bad = parse_args(argc, argv, &a);
     if (bad) return usage(bad);
+    if (a.handout) return handout_tables(!strcmp(a.handout, "write"));
     static grade_folders f;
     if ((bad = open_folders(&a, &f))) return usage(bad);
     if (a.prebuild) return prebuild_course(f.root);

@@ -47,7 +47,7 @@ static bool build_own_tree(const grade_env *env, int n, grade_part_result *r)
 
 void grade_suite_results(const char *dir, int expected, int status, grade_part_result *r)
 {
-    r->tests_run = r->tests_failed = 0;
+    r->tests_run = r->tests_failed = r->num_tests = 0;
     r->failures[0] = '\0';
     char why[200] = "";
     bool all_read = grade_suite_read(dir, r, why, sizeof why);  /* grade_suite.h says what it accepts */
@@ -113,6 +113,7 @@ static void list_cases(const grade_env *env, const grade_part_spec *p, grade_par
 {
     memset(r, 0, sizeof *r);
     r->part = p->part;
+    r->spec = p;
     for (int i = 0; i < p->num_cases; i++) {
         if (env->public_only && p->cases[i].hidden) continue;
         grade_case_result *c = &r->cases[r->num_cases++];

@@ -66,6 +66,14 @@ static int rounding_text(const grade_case *k, const verdict *v, char *out, size_
     return len;
 }
 
+/* Whether case k's flags hold flag. */
+static bool case_has_flag(const grade_case *k, const char *flag)
+{
+    for (int i = 0; i < k->num_flags; i++)
+        if (!strcmp(k->flags[i], flag)) return true;
+    return false;
+}
+
 /* The course's figures of a case's own render (samples per pixel, noise, work per ray), where the
  * case judges them; a hidden case says only whether each is within the course's bound. */
 static int figures_text(const grade_case_result *c, bool hidden, char *out, size_t size)
@@ -89,10 +97,14 @@ static int figures_text(const grade_case_result *c, bool hidden, char *out, size
                                  ok ? "within" : "more than", GRADE_NOISE_FACTOR)
                       : snprintf(out + len, size - len, " Noise per sample: %.3g x the course's (%s %.2fx).",
                                  shown_ratio(c->noise), ok ? "within" : "more than", GRADE_NOISE_FACTOR);
+        /* "Right on average" only when the mean passed; a case that prescribes --no-rr says so, since
+         * then no roulette rule (the handout allows several) can be the cause. */
         if (!ok && (size_t)len < size)
-            len += snprintf(out + len, size - len, " The image is right on average but noisier than it should be: "
-                            "does every one of the -l light samples draw its own random numbers, and are they "
-                            "spent where the handout says?");
+            len += snprintf(out + len, size - len, " The image is %snoisier than it should be%s: does every one of "
+                            "the -l light samples draw its own random numbers, and are they spent where the handout "
+                            "says?", c->ran && c->v.pass ? "right on average but " : "",
+                            case_has_flag(c->spec, "--no-rr") ? " (the case renders with --no-rr, so roulette is not "
+                            "the cause)" : "");
     }
     if (c->course_work > 0 && len >= 0 && (size_t)len < size) {
         bool ok = c->work >= 0 && c->work <= GRADE_WORK_FACTOR * c->course_work;
@@ -280,6 +292,20 @@ static bool append_entry(json_t *tests, json_t *entry)
     return entry && json_array_append_new(tests, entry) == 0;
 }
 
+/* A part's unit points task by task (cases.json's "unit_tasks"), one Markdown line each: the task,
+ * its functions, its share earned or not, and how many of its tests passed. */
+static int tasks_text(const grade_part_result *p, char *out, size_t size)
+{
+    int len = 0;
+    for (int t = 0; p->spec && t < p->spec->num_tasks && len >= 0 && (size_t)len < size; t++) {
+        const grade_task *k = &p->spec->tasks[t];
+        len += snprintf(out + len, size - len, "- task %s (%s): %g / %g points, %d of %d tests passed%s\n", k->task,
+                        k->functions, p->task_score[t], k->points, p->task_passed[t], k->tests,
+                        p->task_score[t] < k->points ? " (a task's share is earned when all its tests pass)" : "");
+    }
+    return len;
+}
+
 /* results.json: every part's unit-test entry and every case's, each always present (an entry that
  * cannot be made fails the whole file rather than vanishing), written atomically (file.h): a
  * platform never reads half a file. */
@@ -299,9 +325,11 @@ pl_status grade_write_results_json(const grade_result *r, const char *path, pl_d
                      p->suite_reason, p->build_output);
         else if (p->suite_reason[0])
             snprintf(text, sizeof text, "**0 points**: %s.", p->suite_reason);
-        else
-            snprintf(text, sizeof text, "%d of %d tests passed.\n\n%s", p->tests_run - p->tests_failed, p->tests_run,
-                     p->failures);
+        else {
+            int len = snprintf(text, sizeof text, "%d of %d tests passed.\n\n", p->tests_run - p->tests_failed, p->tests_run);
+            len += tasks_text(p, text + len, sizeof text - (size_t)len);
+            if (len >= 0 && (size_t)len < sizeof text) snprintf(text + len, sizeof text - (size_t)len, "\n%s", p->failures);
+        }
         complete = complete && append_entry(tests, test_entry(name, p->unit_score, p->unit_max,
                                                               !p->suite_reason[0] && p->tests_failed == 0, text, false));
         for (int k = 0; k < p->num_cases; k++) {
@@ -416,6 +444,8 @@ static void html_unit_tests(FILE *f, const grade_part_result *p)
     }
     fprintf(f, "<p class=\"%s\">Unit tests: %d of %d passed</p>\n", p->tests_failed ? "fail" : "pass",
             p->tests_run - p->tests_failed, p->tests_run);
+    char tasks[2048];
+    if (tasks_text(p, tasks, sizeof tasks) > 0) html_wrapped(f, "<pre>", tasks, "</pre>\n");
     if (p->failures[0]) html_wrapped(f, "<pre>", p->failures, "</pre>\n");
 }
 

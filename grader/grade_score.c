@@ -1,18 +1,52 @@
 /* Grader machinery: not part of any assignment.
- * The score: the one place points are computed from verdicts (grade.h, "score"). A part earns its
- * unit points times the share of its tests that passed (none when its suite could not be judged:
- * crashed, stopped, ran out of time, or its results were not its own) plus the points of each
- * image case that passed. The table, results.json and the HTML report all read these figures. */
+ * The score: the one place points are computed from verdicts (grade.h, "score"). A part's unit
+ * points are shared out by task (cases.json's "unit_tasks", grading/README.md): a task earns its
+ * share when every one of its tests ran and passed, and nothing otherwise, so that a task that is
+ * wrong costs what it is worth rather than one test's weight; nothing counts for a suite that could
+ * not be judged (crashed, stopped, ran out of time, or its results were not its own). Each image
+ * case that passed adds its points. The table, results.json and the HTML report read these figures. */
 #include "grade.h"
+#include <stdio.h>
+#include <string.h>
+
+int grade_task_of(const grade_part_spec *p, const char *name)
+{
+    /* Test functions are named test_<function>__<behaviour>: the prefix is matched after "test_". */
+    if (!strncmp(name, "test_", 5)) name += 5;
+    for (int t = 0; t < p->num_tasks; t++)
+        for (int m = 0; m < p->tasks[t].num_match; m++)
+            if (!strncmp(name, p->tasks[t].match[m], strlen(p->tasks[t].match[m]))) return t;
+    return -1;
+}
+
+void grade_score_note_test(grade_part_result *r, const char *name, bool passed)
+{
+    if (r->num_tests >= GRADE_MAX_TESTS) return;
+    snprintf(r->tests[r->num_tests].name, sizeof r->tests[r->num_tests].name, "%s", name);
+    r->tests[r->num_tests++].passed = passed;
+}
 
 void grade_score_part(const grade_part_spec *p, grade_part_result *r)
 {
     if (r->suite_reason[0]) {  /* nothing of a suite that could not be judged counts */
         r->tests_run = r->tests_failed = 0;
+        r->num_tests = 0;
         r->failures[0] = '\0';
     }
     r->unit_max = p->unit_points;
-    r->unit_score = r->tests_run > 0 ? p->unit_points * (double)(r->tests_run - r->tests_failed) / r->tests_run : 0.0;
+    r->unit_score = 0.0;
+    for (int t = 0; t < p->num_tasks; t++) r->task_passed[t] = r->task_run[t] = 0;
+    for (int i = 0; i < r->num_tests; i++) {
+        int t = grade_task_of(p, r->tests[i].name);
+        if (t < 0) continue;  /* the count check (grade_suite_results) says whether the suite is the course's */
+        r->task_run[t]++;
+        r->task_passed[t] += r->tests[i].passed;
+    }
+    for (int t = 0; t < p->num_tasks; t++) {
+        bool whole = !r->suite_reason[0] && r->task_run[t] == p->tasks[t].tests && r->task_passed[t] == p->tasks[t].tests;
+        r->task_score[t] = whole ? p->tasks[t].points : 0.0;
+        r->unit_score += r->task_score[t];
+    }
     r->score = r->unit_score;
     r->max_score = r->unit_max;
     for (int i = 0; i < r->num_cases; i++) {

@@ -67,6 +67,9 @@ static void count_tests(xmlNodePtr n, grade_part_result *r, int *run, int *faile
                 ++*failed;
                 add_failure(r, c, v);
             }
+            xmlChar *name = xmlGetProp(c, (const xmlChar *)"name");
+            grade_score_note_test(r, name ? (const char *)name : "?", v == NULL);
+            xmlFree(name);
         }
         count_tests(c, r, run, failed);
     }

@@ -1,7 +1,8 @@
 #!/bin/sh
 # Test machinery: the grader's containment at process level (make test-grader-process; needs the
 # solution tree, builds and grades part 1 twice: about two minutes on two cores).
-# 1. Each part's unit_tests in grading/cases.json is the number of tests its suite runs.
+# 1. Each part's unit_tests in grading/cases.json is the number of tests its suite runs, every test
+#    belongs to exactly one of the part's unit_tasks, and each task's "tests" is how many it has.
 # 2. A submission whose part 1 calls system() only under -pthread's _REENTRANT scores zero for the
 #    part, the message naming `system` (the allow-list reads the objects the build linked).
 # 3. A submission that does not compile shows the compiler's own message in results.json and in
@@ -39,7 +40,24 @@ for n in 1 2 3 4 5; do
         fail "the solution's part $n suite fails"
     got=$(cat "$out/suite$n"/*.xml | grep -c '<testcase')
     [ "$got" = "$want" ] || fail "part $n: cases.json says unit_tests $want, the suite runs $got"
-    echo "  part $n: unit_tests $want, as the suite runs"
+    # Every test belongs to exactly one task, and each task's "tests" is how many it has.
+    sed -n 's/.*<testcase name="test_\([^"]*\)".*/\1/p' "$out/suite$n"/*.xml > "$out/suite$n/names"
+    jq -r ".parts[$((n - 1))].unit_tasks[] | \"\(.task) \(.tests) \(.match | join(\" \"))\"" grading/cases.json > "$out/suite$n/tasks"
+    while read -r test; do
+        owners=0
+        while read -r task count prefixes; do
+            for prefix in $prefixes; do case "$test" in "$prefix"*) owners=$((owners + 1)); break ;; esac; done
+        done < "$out/suite$n/tasks"
+        [ "$owners" = 1 ] || fail "part $n: test_$test belongs to $owners tasks of cases.json's unit_tasks, not one"
+    done < "$out/suite$n/names"
+    while read -r task count prefixes; do
+        have=0
+        while read -r test; do
+            for prefix in $prefixes; do case "$test" in "$prefix"*) have=$((have + 1)); break ;; esac; done
+        done < "$out/suite$n/names"
+        [ "$have" = "$count" ] || fail "part $n: task $task has $have tests in the suite, cases.json says $count"
+    done < "$out/suite$n/tasks"
+    echo "  part $n: unit_tests $want, as the suite runs, each in one task of the stated size"
 done
 
 # A submission: the solution's parts, part 1 changed by $1 (appended to pixel.c).

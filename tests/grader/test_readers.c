@@ -6,6 +6,7 @@
 #include "../common/test.h"
 #include "../common/scratch.h"
 #include "../../grader/grade.h"
+#include "../../grader/grade_handout.h"
 #include "../../grader/grade_refs.h"
 #include "../../grader/grade_suite.h"
 #include "../../framework/file.h"
@@ -155,6 +156,92 @@ static void test_cases__every_member_known_and_typed(void **state)
     assert_non_null(strstr(load_edited("s/\"unit_tests\": \\([0-9]*\\)/\"unit_tests\": \\1, \"unit_test\": 1/"), "unknown member"));
     assert_non_null(strstr(load_edited("0,/\"points\": 4,/s///"), "case spheres_normals: expected \"points\""));
     assert_non_null(strstr(load_edited("0,/160,/s//4096,/; 0,/120$/s//4096/"), "at most 2097152 pixels"));
+}
+
+/* The tasks' shares must account for every unit point and every test: a share left out would be a
+ * point nobody can earn, a test left out one that costs nothing. */
+static void test_cases__task_shares_add_up_to_the_part(void **state)
+{
+    (void)state;
+    assert_non_null(strstr(load_edited("s/\"task\": \"3.1\", \"functions\": \"bsdf_f\", \"points\": 1.5/"
+                                       "\"task\": \"3.1\", \"functions\": \"bsdf_f\", \"points\": 2.5/"),
+                           "part 3: the unit_tasks hold 26 tests and 11 points, but unit_tests is 26 and unit_points 10"));
+    assert_non_null(strstr(load_edited("s/\"functions\": \"bsdf_f\", \"points\": 1.5, \"tests\": 2/"
+                                       "\"functions\": \"bsdf_f\", \"points\": 1.5, \"tests\": 3/"),
+                           "part 3: the unit_tasks hold 27 tests"));
+    assert_non_null(strstr(load_edited("s/\"match\": \\[\"bsdf_f__\"\\]/\"match\": []/"),
+                           "part 3: unit_tasks[0]: expected"));
+}
+
+/* A task's share is earned whole or not at all, and a suite that could not be judged earns nothing. */
+static void test_score__a_task_earns_its_share_when_all_its_tests_pass(void **state)
+{
+    (void)state;
+    grade_spec spec;
+    pl_diag d = pl_diag_default();
+    assert_int_equal(PL_OK, grade_spec_load(GRADE_CASES, NULL, &spec, &d));
+    const grade_part_spec *p = &spec.parts[2];
+    assert_int_equal(0, grade_task_of(p, "test_bsdf_f__is_albedo_over_pi"));
+    assert_int_equal(1, grade_task_of(p, "test_bsdf_sample_f__matches_bsdf_pdf"));
+    assert_int_equal(-1, grade_task_of(p, "test_something_else"));
+    static grade_part_result r;
+    memset(&r, 0, sizeof r);
+    /* Every test of every task passes, but one of task 3.2's: that task's share alone is lost. */
+    for (int t = 0; t < p->num_tasks; t++)
+        for (int k = 0; k < p->tasks[t].tests; k++) {
+            char name[96];
+            snprintf(name, sizeof name, "test_%s%d", p->tasks[t].match[0], k);
+            grade_score_note_test(&r, name, !(t == 1 && k == 0));
+        }
+    r.tests_run = p->unit_tests;
+    r.tests_failed = 1;
+    grade_score_part(p, &r);
+    assert_float_equal(p->unit_points - p->tasks[1].points, r.unit_score, 1e-12);
+    assert_float_equal(0.0, r.task_score[1], 0.0);
+    assert_int_equal(p->tasks[1].tests - 1, r.task_passed[1]);
+    /* A task with a test missing earns nothing, even if the ones there passed. */
+    r.num_tests--;
+    r.tests[p->tasks[0].tests].passed = true;  /* task 3.2 whole again */
+    grade_score_part(p, &r);
+    assert_float_equal(0.0, r.task_score[p->num_tasks - 1], 0.0);
+    /* A suite that could not be judged: nothing. */
+    snprintf(r.suite_reason, sizeof r.suite_reason, "the suite stopped");
+    grade_score_part(p, &r);
+    assert_float_equal(0.0, r.unit_score, 0.0);
+    grade_spec_free(&spec);
+}
+
+/* A bug that makes every render of a part wrong loses at least half of the part: its image cases
+ * (public and, where this tree has them, hidden) are worth at least its unit points. */
+static void test_cases__image_cases_weigh_at_least_the_unit_tests(void **state)
+{
+    (void)state;
+    grade_spec spec;
+    pl_diag d = pl_diag_default();
+    assert_int_equal(PL_OK, grade_spec_load(GRADE_CASES, GRADE_HIDDEN_CASES, &spec, &d));
+    for (int k = 0; k < GRADE_NUM_PARTS; k++) {
+        double images = 0.0;
+        for (int i = 0; i < spec.parts[k].num_cases; i++) images += spec.parts[k].cases[i].points;
+        if (images < spec.parts[k].unit_points)
+            fail_msg("part %d: image cases worth %g, unit tests %g: a bug that breaks every render would lose less "
+                     "than half the part", k + 1, images, spec.parts[k].unit_points);
+    }
+    grade_spec_free(&spec);
+}
+
+/* Each handout's grading table is grading/cases.json's, generated: they never drift apart. */
+static void test_handout__grading_tables_are_the_cases_files(void **state)
+{
+    (void)state;
+    grade_spec spec;
+    pl_diag d = pl_diag_default();
+    assert_int_equal(PL_OK, grade_spec_load(GRADE_CASES, NULL, &spec, &d));
+    for (int k = 0; k < GRADE_NUM_PARTS; k++) {
+        char path[64];
+        snprintf(path, sizeof path, "handout/part%d.md", k + 1);
+        if (grade_handout_update(path, &spec.parts[k], false, &d) != PL_OK) fail_msg("%s", d.error);
+    }
+    grade_spec_free(&spec);
 }
 
 /* ---- the suite's results ------------------------------------------------------------------- */
@@ -343,6 +430,10 @@ int readers_tests(void)
         cmocka_unit_test(test_refs__the_json_a_check_needs_is_required),
         cmocka_unit_test(test_refs__the_film_must_be_the_cases),
         cmocka_unit_test(test_cases__every_member_known_and_typed),
+        cmocka_unit_test(test_cases__task_shares_add_up_to_the_part),
+        cmocka_unit_test(test_score__a_task_earns_its_share_when_all_its_tests_pass),
+        cmocka_unit_test(test_cases__image_cases_weigh_at_least_the_unit_tests),
+        cmocka_unit_test(test_handout__grading_tables_are_the_cases_files),
         cmocka_unit_test(test_suite__every_testcase_counted_and_skipped_is_not_passed),
         cmocka_unit_test(test_suite__only_the_files_the_suite_writes),
         cmocka_unit_test(test_suite__a_long_message_is_cut_between_characters),

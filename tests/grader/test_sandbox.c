@@ -108,16 +108,19 @@ static void write_suite_xml(const char *dir, const char *name, int tests, int fa
     fprintf(f, "<?xml version=\"1.0\" encoding=\"UTF-8\" ?>\n<testsuites>\n<testsuite name=\"part1: %s\" tests=\"%d\" "
             "failures=\"%d\" errors=\"0\" skipped=\"0\">\n", name, tests, failed);
     for (int i = 0; i < tests; i++)
-        fprintf(f, "<testcase name=\"t%d\" time=\"0.0\">%s</testcase>\n", i,
+        fprintf(f, "<testcase name=\"test_%s__%d\" time=\"0.0\">%s</testcase>\n", name, i,
                 i < failed ? "<failure><![CDATA[it broke]]></failure>" : "");
     fprintf(f, "</testsuite>\n</testsuites>\n");
     assert_int_equal(fclose(f), 0);
 }
 
-/* The suite's results in dir, scored as grade_part scores them (10 unit points, no case). */
+/* The suite's results in dir, scored as grade_part scores them (10 unit points in two tasks: group
+ * a's 20 tests carry 6, group b's 8 carry 4; no case). */
 static void score_results(const char *dir, int status, grade_part_result *r)
 {
-    grade_part_spec spec = {.part = 1, .unit_points = 10.0, .unit_tests = 28};
+    grade_part_spec spec = {.part = 1, .unit_points = 10.0, .unit_tests = 28, .num_tasks = 2,
+                            .tasks = {{.task = "1.1", .points = 6.0, .tests = 20, .match = {"a__"}, .num_match = 1},
+                                      {.task = "1.2", .points = 4.0, .tests = 8, .match = {"b__"}, .num_match = 1}}};
     memset(r, 0, sizeof *r);
     r->part = 1;
     grade_suite_results(dir, 28, status, r);
@@ -136,14 +139,14 @@ static void test_suite_score__only_a_suite_run_to_its_end(void **state)
     (void)state;
     grade_part_result r;
     char dir[256];
-    /* The whole suite, in two groups, one test failed: 27/28 of the points. */
+    /* The whole suite, in two groups, one test of a failed: b's task alone earns its share. */
     snprintf(dir, sizeof dir, "%s/whole", scratch);
     assert_int_equal(mkdir(dir, 0755), 0);
     write_suite_xml(dir, "a", 20, 1);
     write_suite_xml(dir, "b", 8, 0);
     score_results(dir, 1, &r);
     assert_string_equal(r.suite_reason, "");
-    assert_true(r.unit_score > 9.64 && r.unit_score < 9.65);
+    assert_float_equal(4.0, r.unit_score, 0.0);
 
     /* An _exit(0) in the second group: its file is missing, 20 tests of 28, all passed. */
     snprintf(dir, sizeof dir, "%s/early", scratch);
