@@ -143,11 +143,69 @@ static void drop_scene_copy(const grade_case *k, const char *scene)
     if (!strncmp(k->scene, "grading/", 8)) remove(scene);
 }
 
-/* Why a render failed, in the grader's words: the kind of ending, never its exit status or signal
- * number, which the render chooses (8 bits through exit(), 6 through raise()). */
-static void render_failure(const grade_run_result *rr, char *why, size_t size)
+/* The framework's reasons for refusing what a part made, as the render's log states them, and what
+ * the grader says for each: the framework checks a student's tree before any ray uses it
+ * (framework/bvh.c, bvh_validate). The log is the render's, so never echoed: its line only selects
+ * one of these fixed sentences (the figures in it, node and primitive numbers, stay out). */
+static const struct { const char *needle, *says; } framework_reasons[] = {
+    {"leaf holds", "a leaf holds more primitives than the leaf size allows"},
+    {"leaf covers slots", "a leaf's slots run past the end of prim_index"},
+    {"belongs to two leaves", "a slot of prim_index belongs to two leaves"},
+    {"is not a primitive", "prim_index holds a number that is not a primitive's"},
+    {"is in two leaves", "a primitive is in two leaves"},
+    {"reached twice", "a node is reached twice from the root (a cycle or a shared child)"},
+    {"exceeds BVH_MAX_DEPTH", "the tree is deeper than BVH_MAX_DEPTH"},
+    {"leaf box is not", "a leaf's box does not bound its primitives"},
+    {"pokes out", "a child's box pokes out of its parent's"},
+    {"not tight", "a node's box is larger than the union of its children's"},
+    {"not reachable", "a node is not reachable from the root (num_nodes too large?)"},
+    {"is in no leaf", "a primitive is in no leaf"},
+    {"num_prims is", "num_prims is not the scene's number of primitives"},
+    {"empty scene", "an empty scene must give num_nodes 0"},
+    {"num_nodes is", "num_nodes is not in 1 .. 2n - 1"},
+    {"count", "a node's count is negative"},
+    {"child", "a child's index is not a node of the tree"},
+};
+
+/* grade_image.h */
+void grade_image_log_reason(const char *log, char *out, size_t size)
 {
+    char *text = NULL;
+    size_t len = 0;
+    pl_diag diag = pl_diag_default();
+    out[0] = '\0';
+    if (file_read_all(log, "render log", (size_t)GRADE_LOG_MAX + 4096, &text, &len, &diag) != PL_OK) return;
+    const char *tree = strstr(text, "bvh_build made a malformed tree: ");
+    if (tree) {
+        const char *line_end = strchr(tree, '\n');
+        size_t line = line_end ? (size_t)(line_end - tree) : strlen(tree);
+        const char *says = "its tree breaks one of bvh_validate's rules";
+        for (size_t i = 0; i < sizeof framework_reasons / sizeof framework_reasons[0]; i++) {
+            const char *hit = strstr(tree, framework_reasons[i].needle);
+            if (hit && hit < tree + line && framework_reasons[i].says) {
+                says = framework_reasons[i].says;
+                break;
+            }
+        }
+        grade_msg(out, size, "the framework refused the tree bvh_build made: %s (framework/bvh.c, bvh_validate; "
+                  "render the case yourself for the node it names)", says);
+    }
+    else if (strstr(text, "bvh_build failed: "))
+        grade_msg(out, size, "bvh_build returned an error, and the render stopped");
+    else if (strstr(text, " is not implemented yet\n"))
+        grade_msg(out, size, "the render reached a task that is still a stub (\"not implemented yet\")");
+    free(text);
+}
+
+/* Why a render failed, in the grader's words: the kind of ending, never its exit status or signal
+ * number, which the render chooses (8 bits through exit(), 6 through raise()); for an error status,
+ * the framework's reason when its log names one the grader knows (grade_image_log_reason). */
+static void render_failure(const grade_run_result *rr, const char *log, char *why, size_t size)
+{
+    char reason[256];
     if (rr->timed_out) grade_msg(why, size, "the render ran past its %d s", GRADE_RENDER_SECONDS);
+    else if (rr->exited && (grade_image_log_reason(log, reason, sizeof reason), reason[0]))
+        grade_msg(why, size, "the render stopped with an error: %s", reason);
     else if (rr->exited) grade_msg(why, size, "the render exited with an error status (its log says why)");
     else if (rr->status == SIGXCPU) grade_msg(why, size, "the render ran past its CPU time");
     else if (rr->status == SIGSYS) grade_msg(why, size, "the render made a system call the sandbox forbids");
@@ -180,7 +238,7 @@ static bool render_candidate(const grade_env *env, const char *tree, int part, g
     grade_run_result rr = grade_run(argv, &o);
     drop_scene_copy(k, scene);
     bool ok = rr.exited && rr.status == 0;
-    if (!ok) render_failure(&rr, c->reason, sizeof c->reason);
+    if (!ok) render_failure(&rr, log, c->reason, sizeof c->reason);
     else if (film_pipe.overflow || output_film_receive(film_pipe.data, (size_t)film_pipe.len, k->width, k->height, out,
                                                        counts, &diag) != PL_OK) {
         grade_msg(c->reason, sizeof c->reason, "the render sent no usable film: %s",

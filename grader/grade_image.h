@@ -14,6 +14,12 @@
  * the second render's result, with the first's seed and p-value. */
 void grade_image_case(const grade_env *env, const grade_spec *spec, const char *tree, int part, grade_case_result *c);
 
+/* Why a render stopped, from its log (written by the grader from the render's output), as one of the
+ * grader's own fixed sentences: a tree the framework refused (which of bvh_validate's rules it
+ * broke), an error from bvh_build, a task still a stub; "" when the log names no reason the grader
+ * knows. The log is the render's: nothing of it is copied, its line only selects a sentence. */
+void grade_image_log_reason(const char *log, char *out, size_t size);
+
 /* The seed of a case's second render: a fixed function of the grading's seed (so bin/grade --seed
  * makes both renders again), far from it in the seed space, below 10^12 like every grading seed. */
 unsigned long long grade_confirm_seed(unsigned long long seed);

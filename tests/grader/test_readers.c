@@ -7,6 +7,7 @@
 #include "../common/scratch.h"
 #include "../../grader/grade.h"
 #include "../../grader/grade_handout.h"
+#include "../../grader/grade_image.h"
 #include "../../grader/grade_refs.h"
 #include "../../grader/grade_suite.h"
 #include "../../framework/file.h"
@@ -248,6 +249,33 @@ static void test_handout__grading_tables_are_the_cases_files(void **state)
     grade_spec_free(&spec);
 }
 
+/* A render that stopped says why in the grader's words: the framework's reason selects a fixed
+ * sentence, and nothing of the log (the render's own output) is copied into it. */
+static void test_image__a_stopped_render_names_the_framework_reason_without_its_bytes(void **state)
+{
+    (void)state;
+    char path[256], why[256];
+    snprintf(path, sizeof path, "%s/render.log", scratch);
+    scratch_write(path, "pathtracer: SECRET-42 bvh_build made a malformed tree: node 7: leaf holds 9 primitives, "
+                        "max_leaf_size is 4 SECRET-43\n");
+    grade_image_log_reason(path, why, sizeof why);
+    assert_non_null(strstr(why, "a leaf holds more primitives than the leaf size allows"));
+    assert_null(strstr(why, "SECRET"));
+    assert_null(strstr(why, "7"));
+    scratch_write(path, "pathtracer: bvh_build made a malformed tree: node 3: a child box (node 4 or 5) pokes out of it\n");
+    grade_image_log_reason(path, why, sizeof why);
+    assert_non_null(strstr(why, "a child's box pokes out of its parent's"));
+    scratch_write(path, "pathtracer: bvh_build made a malformed tree: node 2: child 9 >= num_nodes 5\n");
+    grade_image_log_reason(path, why, sizeof why);
+    assert_non_null(strstr(why, "a child's index is not a node of the tree"));
+    scratch_write(path, "bvh_build is not implemented yet\n");
+    grade_image_log_reason(path, why, sizeof why);
+    assert_non_null(strstr(why, "still a stub"));
+    scratch_write(path, "anything the render chose to print\n");
+    grade_image_log_reason(path, why, sizeof why);
+    assert_string_equal(why, "");
+}
+
 /* ---- the suite's results ------------------------------------------------------------------- */
 
 static void suite_file(const char *dir, const char *name, const char *body)
@@ -438,6 +466,7 @@ int readers_tests(void)
         cmocka_unit_test(test_score__a_task_earns_its_share_when_all_its_tests_pass),
         cmocka_unit_test(test_cases__image_cases_weigh_at_least_the_unit_tests),
         cmocka_unit_test(test_handout__grading_tables_are_the_cases_files),
+        cmocka_unit_test(test_image__a_stopped_render_names_the_framework_reason_without_its_bytes),
         cmocka_unit_test(test_suite__every_testcase_counted_and_skipped_is_not_passed),
         cmocka_unit_test(test_suite__only_the_files_the_suite_writes),
         cmocka_unit_test(test_suite__a_long_message_is_cut_between_characters),
