@@ -1,8 +1,9 @@
 # Benchmarks: speed figures, never tests. `make bench` runs them all; each prints its figures, and
 # none installs anything or writes a tracked file (bench-bvh's table goes to build/bench/bvh/).
 # BENCH_RUNS=N: runs per figure (median or best, as each says).
-.PHONY: bench bench-bvh bench-grade bench-references bench-load bench-write bench-transport bench-trace bench-surfaces
-bench: bench-bvh bench-grade bench-references bench-load bench-write bench-transport bench-trace bench-surfaces  ## every benchmark (figures, not tests; see bench/RESULTS.md)
+.PHONY: bench bench-bvh bench-references bench-load bench-write bench-transport bench-trace bench-surfaces
+# bench-grade (the solution graded as a submission) is the course's: course/course.mk, where the tree has it.
+bench: bench-bvh $(if $(wildcard course/course.mk),bench-grade) bench-references bench-load bench-write bench-transport bench-trace bench-surfaces  ## every benchmark (figures, not tests; see bench/RESULTS.md)
 
 # ---- BVH (part 2): build time, rays per second, whole render; beside Embree when installed -------
 #   Embree (Debian's libembree-dev, used only here) ships no pkg-config file, so its header is the
@@ -21,13 +22,6 @@ $(BIN)/bvh_bench: bench/bvh_bench.c $(LIB_OBJ)
 bench-bvh: $(BIN)/pathtracer $(BIN)/bvh_bench  ## BVH build time, rays per second and whole-render time (beside Embree)
 	@[ -f $(EMBREE_HDR) ] || echo "bench-bvh: Embree not installed (apt-get install libembree-dev): its columns read '-'"
 	@BIN=$(BIN) RUNS=$(BENCH_RUNS) sh bench/bvh_bench.sh $(BENCH_SCENES)
-
-# ---- the grader: a correct submission graded whole (5 isolated builds, suites, every case) -------
-bench-grade: $(BIN)/grade  ## time to grade the solution as a submission, all five parts
-	@echo "== grading the solution as a submission (5 isolated builds, suites, all cases)"
-	@rm -rf build/bench-grade && mkdir -p build/bench-grade/sub && cp -a parts build/bench-grade/sub/
-	@/usr/bin/time -f "graded in %e s wall, %U s user" $(BIN)/grade --submission build/bench-grade/sub \
-	    --out build/bench-grade/out --seed 1 | tail -n 4
 
 # ---- reference throughput: camera samples per second on one core, to size a Slurm array --------
 bench-references: $(BIN)/pathtracer  ## camera samples per second per core (sizes a Slurm reference job)

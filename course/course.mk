@@ -6,6 +6,8 @@
 
 COURSE_TOOL_OBJ := $(addprefix $(BUILD)/framework/,image.o file.o status.o) $(BUILD)/third_party/lodepng/lodepng.o
 
+## test-course: the course's own tools' suite (the release stripper's rules)
+
 # ---- the release: release/student (solutions -> stubs) and release/autograder.zip --------------
 # The stripper's rules are a library, so the course suite (course/release/test_strip.c) tests them.
 STRIP_OBJ := $(BUILD)/course/release/strip.o
@@ -91,3 +93,17 @@ calibrate-alternatives: $(BIN)/grade $(BIN)/pathtracer  ## grade every correct a
 # Slow (grading/CALIBRATION.md has the figures and their cost): the solution's false failures per case.
 calibrate-grader: $(BIN)/grade $(BIN)/pathtracer  ## grade the solution GRADE_RUNS=200 times per case at fresh seeds (PARTS=3, CASES=a,b)
 	$(Q)$(BIN)/grade --calibrate $(GRADE_RUNS) --out build/calibrate-grader $(if $(PARTS),--parts $(PARTS)) $(if $(CASES),--cases $(CASES))
+
+# ---- the grader's speed: a correct submission graded whole (5 isolated builds, suites, every case) --
+# Part of make bench (bench/bench.mk) where the tree has course/: a student tree has no solution.
+.PHONY: bench-grade
+bench-grade: $(BIN)/grade  ## time to grade the solution as a submission, all five parts
+	@echo "== grading the solution as a submission (5 isolated builds, suites, all cases)"
+	@rm -rf build/bench-grade && mkdir -p build/bench-grade/sub && cp -a parts build/bench-grade/sub/
+	@/usr/bin/time -f "graded in %e s wall, %U s user" $(BIN)/grade --submission build/bench-grade/sub \
+	    --out build/bench-grade/out --seed 1 | tail -n 4
+
+# A student's everyday loop: a file copied in with an old date is rebuilt; CC=clang never meets gcc's objects.
+.PHONY: test-fresh-build
+test-fresh-build:  ## builds follow content and compiler: a part dated in the past is rebuilt, CC=clang after gcc links
+	$(Q)sh course/platform/fresh_build.sh
