@@ -168,7 +168,7 @@ $(BIN)/test-$(1): $(call suite_obj,$(1)) $(COMMON_OBJ) $(LIB_OBJ)
 
 test-$(1): $(BIN)/test-$(1) $(BIN)/pathtracer
 	@echo "== test-$(1)"
-	$$(Q)PL_TEST_FILTER='$$(FILTER)' PL_TEST_LIST='$$(LIST)' PL_TEST_SUITE=test-$(1) $(BIN)/test-$(1)
+	$$(Q)PL_TEST_FILTER='$$(FILTER)' PL_TEST_LIST='$$(LIST)' PL_TEST_SUITE=test-$(1) sh tests/common/run_suite.sh test-$(1) $(BIN)/test-$(1)
 endef
 $(foreach s,$(SUITES),$(eval $(call suite_rules,$(s))))
 

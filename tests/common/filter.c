@@ -56,6 +56,9 @@ static void judge_filter_at_exit(void)
 
 __attribute__((constructor)) static void filter_from_environment(void)
 {
+    /* A line at a time even into a pipe (tests/common/run_suite.sh): cmocka's lines on stdout and
+     * the tests' messages on stderr then appear in the order they were written. */
+    setvbuf(stdout, NULL, _IOLBF, 0);
     const char *p = getenv("PL_TEST_FILTER");
     const char *l = getenv("PL_TEST_LIST");
     listing = l && *l && *l != '0';
