@@ -5,6 +5,7 @@
  * tables in handout/part<N>.md; `--handout check` (and make test-grader) fails on any difference. */
 #include "grade_handout.h"
 #include "../framework/file.h"
+#include <dirent.h>
 #include <stdarg.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -27,6 +28,40 @@ static bool put(char *out, size_t size, size_t *len, const char *fmt, ...)
     return true;
 }
 
+static int compare_names(const void *a, const void *b) { return strcmp(*(char *const *)a, *(char *const *)b); }
+
+/* The test functions of part p's suite, "static void test_<name>(" in the .c files of tests/part<N>, in file
+ * name order and, within a file, in order of definition; into names (each up to 96 bytes). */
+static int suite_tests(int part, char names[][96], int max)
+{
+    char dir[64];
+    snprintf(dir, sizeof dir, "tests/part%d", part);
+    DIR *d = opendir(dir);
+    char *files[64];
+    int nfiles = 0, n = 0;
+    for (struct dirent *e; d && (e = readdir(d)) && nfiles < 64;) {
+        size_t len = strlen(e->d_name);
+        if (len > 2 && !strcmp(e->d_name + len - 2, ".c")) files[nfiles++] = strdup(e->d_name);
+    }
+    if (d) closedir(d);
+    qsort(files, (size_t)nfiles, sizeof *files, compare_names);
+    for (int f = 0; f < nfiles; f++) {
+        char path[128], *text = NULL;
+        size_t len = 0;
+        pl_diag diag = pl_diag_default();
+        snprintf(path, sizeof path, "%s/%s", dir, files[f]);
+        free(files[f]);
+        if (!files[f] || file_read_all(path, "test source", (size_t)1 << 22, &text, &len, &diag) != PL_OK) continue;
+        for (char *at = text; (at = strstr(at, "\nstatic void test_")) && n < max;) {
+            at += strlen("\nstatic void ");
+            size_t name = strspn(at, "abcdefghijklmnopqrstuvwxyzABCDEFGHIJKLMNOPQRSTUVWXYZ0123456789_");
+            if (at[name] == '(' && name < 96) snprintf(names[n++], 96, "%.*s", (int)name, at);
+        }
+        free(text);
+    }
+    return n;
+}
+
 bool grade_handout_table(const grade_part_spec *p, char *out, size_t size)
 {
     size_t len = 0;
@@ -46,6 +81,18 @@ bool grade_handout_table(const grade_part_spec *p, char *out, size_t size)
         }
         ok = ok && (code || put(out, size, &len, "%s", fn)) &&
              put(out, size, &len, " | %d | %g |\n", p->tasks[t].tests, p->tasks[t].points);
+    }
+    /* Each task's tests by name, as its suite defines them: the handout's prose never lists them all. */
+    static char names[GRADE_MAX_TESTS][96];
+    int count = suite_tests(p->part, names, GRADE_MAX_TESTS);
+    for (int t = 0; ok && t < p->num_tasks; t++) {
+        ok = put(out, size, &len, "%s- task %s's tests:", t ? "" : "\n", p->tasks[t].task);
+        for (int i = 0, first = 1; ok && i < count; i++)
+            if (grade_task_of(p, names[i]) == t) {
+                ok = put(out, size, &len, "%s `%s`", first ? "" : ",", names[i] + strlen("test_"));
+                first = 0;
+            }
+        ok = ok && put(out, size, &len, ".\n");
     }
     ok = ok && put(out, size, &len, "\n| case | what it shows | render | points | reference |\n"
                    "| --- | --- | --- | --- | --- |\n");
