@@ -97,12 +97,13 @@ static int figures_text(const grade_case_result *c, bool hidden, char *out, size
                                  ok ? "within" : "more than", GRADE_NOISE_FACTOR)
                       : snprintf(out + len, size - len, " Noise per sample: %.3g x the course's (%s %.2fx).",
                                  shown_ratio(c->noise), ok ? "within" : "more than", GRADE_NOISE_FACTOR);
-        /* "Right on average" only when the mean passed; a case that prescribes --no-rr says so, since
-         * then no roulette rule (the handout allows several) can be the cause. */
-        if (!ok && (size_t)len < size)
-            len += snprintf(out + len, size - len, " The image is %snoisier than it should be%s: does every one of "
-                            "the -l light samples draw its own random numbers, and are they spent where the handout "
-                            "says?", c->ran && c->v.pass ? "right on average but " : "",
+        /* A cause only when the mean passed: an image whose mean is off is that first (where_text),
+         * and its noise follows. A case that prescribes --no-rr says so, since then no roulette rule
+         * (the handout allows several) can be the cause. */
+        if (!ok && c->ran && c->v.pass && (size_t)len < size)
+            len += snprintf(out + len, size - len, " The image is right on average but noisier than it should be%s: "
+                            "does every one of the -l light samples draw its own random numbers, and are they spent "
+                            "where the handout says?",
                             case_has_flag(c->spec, "--no-rr") ? " (the case renders with --no-rr, so roulette is not "
                             "the cause)" : "");
     }
@@ -126,6 +127,16 @@ static int figures_text(const grade_case_result *c, bool hidden, char *out, size
     return len;
 }
 
+/* The mean of the lit channels' ratios (NaN when none is lit): a hidden case's one figure. */
+static double mean_ratio(const verdict *v)
+{
+    double sum = 0.0;
+    int lit = 0;
+    for (int ch = 0; ch < 3; ch++)
+        if (!isnan(v->ratio[ch])) sum += v->ratio[ch], lit++;
+    return lit ? sum / lit : NAN;
+}
+
 /* Where a statistical verdict failed: the first bad pixel, or the block (or the whole image) that
  * differs most, and the hint. */
 static int where_text(const grade_case *k, const verdict *v, char *out, size_t size)
@@ -135,6 +146,12 @@ static int where_text(const grade_case *k, const verdict *v, char *out, size_t s
         len = snprintf(out, size, " %ld pixels are NaN, infinite or negative; the first at x=%d y=%d (from the "
                        "bottom-left).", grade_figure_count(v->bad_pixels, case_pixels(k)),
                        grade_figure_pixel(v->bad_x, k->width), grade_figure_pixel(v->bad_y, k->height));
+    /* In order of likelihood: bad pixels, then the whole image's brightness (a mean off by more than
+     * 5%, far beyond a case's noise, is a factor everywhere, not a place), then the place. */
+    else if (!v->pass && !v->deterministic && fabs(mean_ratio(v) - 1.0) > 0.05)
+        len = snprintf(out, size, " The whole image is %s: %.3g times the reference's brightness on average, so "
+                       "look for a factor that applies everywhere before a place.",
+                       mean_ratio(v) > 1.0 ? "too bright" : "too dark", public_figure(mean_ratio(v), 0.0, GRADE_RATIO_MAX));
     else if (!v->pass && !v->deterministic && v->worst_block_x >= 0)  /* rounding_text says where */
         len = snprintf(out, size, " Most different: the %s channel of block (%d, %d) from the top-left (t = %+.3g: %s "
                        "than the reference).", channel_names[v->worst_channel % 3],
@@ -148,15 +165,6 @@ static int where_text(const grade_case *k, const verdict *v, char *out, size_t s
     return len;
 }
 
-/* The mean of the lit channels' ratios (NaN when none is lit): a hidden case's one figure. */
-static double mean_ratio(const verdict *v)
-{
-    double sum = 0.0;
-    int lit = 0;
-    for (int ch = 0; ch < 3; ch++)
-        if (!isnan(v->ratio[ch])) sum += v->ratio[ch], lit++;
-    return lit ? sum / lit : NAN;
-}
 
 /* A hidden case: its scene is the course's secret, and its render may have read it, so the student
  * sees the verdict and coarse figures only: the mean ratio to 2 digits, whether the course's
@@ -224,13 +232,22 @@ static void append_trace(const grade_case_result *c, char *text, size_t size)
                  "each as your render computed it (handout: \"Debugging with a trace\"):\n\n```\n%s```\n", c->trace);
 }
 
-/* make grade: the same pixels and commands under the table. */
+/* make grade: under the table, each failing public case's likely cause (the hint the report gives),
+ * the seed its trace commands replay and why, and the pixels to trace. */
 static void print_trace_pixels(const grade_result *r, FILE *out)
 {
     for (int i = 0; i < r->num_parts; i++)
         for (int k = 0; k < r->parts[i].num_cases; k++) {
             const grade_case_result *c = &r->parts[i].cases[k];
-            if (c->trace[0]) fprintf(out, "part %d, %s: the pixels that differ most:\n%s", r->parts[i].part, c->spec->name, c->trace);
+            if (c->pass || c->spec->hidden) continue;
+            if (c->ran && c->v.hint[0]) fprintf(out, "part %d, %s: %s\n", r->parts[i].part, c->spec->name, c->v.hint);
+            if (!c->trace[0]) continue;
+            if (c->rendered_twice)
+                fprintf(out, "part %d, %s: rendered twice (the first render, seed %llu, failed; a correct render does that "
+                        "about once in a thousand), so its commands replay the second, seed %llu:\n", r->parts[i].part,
+                        c->spec->name, c->first_seed, c->seed);
+            else fprintf(out, "part %d, %s: the pixels that differ most:\n", r->parts[i].part, c->spec->name);
+            fprintf(out, "%s", c->trace);
         }
 }
 

@@ -93,12 +93,29 @@ static void find_hint(verdict *v, const verdict_image *cand, const verdict_image
         snprintf(v->hint, sizeof v->hint, "black where the reference is lit (more than a quarter of its lit pixels)");
         return;
     }
+    /* The factor is measured where it is telling: light reflected by the surfaces. A pixel that sees
+     * an emitter directly holds its Le, which no BSDF or pdf scales, so on a Cornell box the image's
+     * ratio for a missing 1/pi is about 1.8, not pi. Emitters are the image's brightest pixels: those
+     * within a quarter of the brightest are left out (a scene with no visible emitter only loses
+     * its brightest pixels, whose ratio is the same as the rest's). */
+    double brightest = 0.0, sum_c[3] = {0, 0, 0}, sum_r[3] = {0, 0, 0}, ratio[3];
+    for (long i = 0; i < (long)ref->width * ref->height; i++) {
+        const float *r = ref->rgb + 3 * i;
+        if (isfinite(r[0] + r[1] + r[2])) brightest = fmax(brightest, (double)r[0] + r[1] + r[2]);
+    }
+    for (long i = 0; i < (long)ref->width * ref->height; i++) {
+        const float *r = ref->rgb + 3 * i, *c = cand->rgb + 3 * i;
+        double rs = (double)r[0] + r[1] + r[2];
+        if (!(rs <= 0.25 * brightest) || !isfinite(c[0] + c[1] + c[2])) continue;
+        for (int ch = 0; ch < 3; ch++) sum_c[ch] += c[ch], sum_r[ch] += r[ch];
+    }
+    for (int ch = 0; ch < 3; ch++) ratio[ch] = sum_r[ch] > 0.0 ? sum_c[ch] / sum_r[ch] : NAN;
     for (size_t k = 0; k < sizeof known / sizeof known[0]; k++) {
         bool all = true, any = false;
         for (int ch = 0; ch < 3; ch++) {
-            if (!(v->ratio[ch] > 0.0) || !isfinite(v->ratio[ch])) continue;  /* channel unlit */
+            if (!(ratio[ch] > 0.0) || !isfinite(ratio[ch])) continue;  /* channel unlit */
             any = true;
-            all = all && fabs(v->ratio[ch] / known[k].factor - 1.0) < 0.08;
+            all = all && fabs(ratio[ch] / known[k].factor - 1.0) < 0.08;
         }
         if (any && all) {
             snprintf(v->hint, sizeof v->hint, "%s", known[k].text);
