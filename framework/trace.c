@@ -368,24 +368,45 @@ bool trace_intersect(const render_ctx *ctx, ray *r, hit *h)
     return found;
 }
 
-/* A shadow ray a part traces (render_occluded), with its verdict. */
+/* A shadow ray a part traces (render_occluded), with its verdict: when blocked, by what (the nearest
+ * primitive on the segment, and how far along it: a blocker at distance 0 is the surface the ray
+ * started on, self-shadowing); when clear, that it reaches the light. */
 bool trace_occluded(const render_ctx *ctx, const ray *r)
 {
     trace_log *t = pl_trace;
     bool blocked = accel_occluded(ctx->accel, r);
-    json_t *j = json_pack("{s:o, s:o, s:o, s:o, s:b}", "origin", jvec(r->o), "direction", jvec(r->d), "min_t",
-                          jnum(r->min_t), "max_t", jnum(r->max_t), "occluded", blocked);
+    char what[200] = "clear: it reaches the light";
+    int prim = -1;
+    float dist = 0.0f;
+    if (blocked) {
+        ray probe = *r;
+        hit h = {0};
+        const scene *s = ctx->scene;
+        if (accel_intersect(ctx->accel, &probe, &h) && h.prim >= 0 && h.prim < scene_prim_count(s)) {
+            prim = h.prim;
+            dist = h.t * vec3_length(r->d);
+            bool tri = h.prim < s->num_triangles;
+            const char *name = h.material >= 0 && h.material < s->num_materials ? s->materials[h.material].name : "?";
+            snprintf(what, sizeof what, "occluded by %s %d (material \"%s\") at distance %.6g%s", tri ? "triangle" : "sphere",
+                     h.prim, name, (double)dist, dist < 1e-4f * (1.0f + vec3_length(r->o)) ?
+                     ": the surface it starts on? (a ray from the raw hit point)" : "");
+        }
+        else snprintf(what, sizeof what, "occluded");
+    }
+    json_t *j = json_pack("{s:o, s:o, s:o, s:o, s:b, s:i, s:o}", "origin", jvec(r->o), "direction", jvec(r->d), "min_t",
+                          jnum(r->min_t), "max_t", jnum(r->max_t), "occluded", blocked, "blocker", prim, "blocker_distance",
+                          jnum(dist));
     /* A shadow ray towards a light at a finite distance (point, spot, area) is a segment
      * (spawn_ray_to_light: t in (0, 1], an unnormalised direction) whose far end stops just short
      * of the light: shown by its two ends and its length, which is what a student can check. */
     if (isfinite(r->max_t)) {
         vec3 end = vec3_add(r->o, vec3_scale(r->d, r->max_t));
         emit(t, "shadow_ray", j, "shadow ray from " V3 " to " V3 " (length %.6g): %s", XYZ(r->o), XYZ(end),
-             (double)(vec3_length(r->d) * r->max_t), blocked ? "occluded" : "clear");
+             (double)(vec3_length(r->d) * r->max_t), what);
     }
     else
         emit(t, "shadow_ray", j, "shadow ray from " V3 " along " V3 " (no far end): %s", XYZ(r->o),
-             XYZ(vec3_normalize(r->d)), blocked ? "occluded" : "clear");
+             XYZ(vec3_normalize(r->d)), what);
     return blocked;
 }
 

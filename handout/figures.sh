@@ -79,6 +79,6 @@ if want part5; then
     run $d/bunny_adaptive.png $T $R -s 1024 -a 64 0.05 -l 1 -m 5 $bunny
     run $d/spheres_adaptive.png $T $R -s 1024 -a 64 0.05 -l 1 -m 5 $spheres
 fi
-# Every part's "Debugging with a trace": the handout's traces, as files beside the figures.
-BIN=$BIN sh handout/traces.sh --out "$OUT"
+# "Debugging with a trace": the handout's traces of the parts asked for, as files beside the figures.
+BIN=$BIN sh handout/traces.sh --out "$OUT" $([ "$only" = all ] || echo "$only")
 echo "figures: $OUT/"

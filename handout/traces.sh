@@ -7,16 +7,20 @@
 #     ```
 # and this script either rewrites every block from a fresh run of the course's solution (--write), or
 # checks that each is what the run prints today (--check, the default: a handout's trace cannot go
-# stale). handout/figures.sh calls it with --out to keep each part's traces under out/figures/.
-# Usage: handout/traces.sh [--check | --write | --out DIR]
+# stale). handout/figures.sh calls it with --out to keep each part's traces under out/figures/ (one
+# part's only, when given one).
+# Usage: handout/traces.sh [--check | --write | --out DIR [partN]]
 set -eu
 cd "$(dirname "$0")/.."
 BIN=${BIN:-bin}
 mode=${1:---check}
 ${MAKE:-make} --no-print-directory -s "$BIN/pathtracer"
 status=0
+only=
+[ "$mode" != --out ] || only=${3:-}
 for md in handout/part1.md handout/part2.md handout/part3.md handout/part4.md handout/part5.md; do
     part=$(basename "$md" .md)
+    [ -z "$only" ] || [ "$part" = "$only" ] || continue
     n=0
     grep -n '^<!-- trace: .* -->$' "$md" | while IFS=: read -r line rest; do
         args=$(echo "$rest" | sed 's/^<!-- trace: \(.*\) -->$/\1/')
