@@ -305,27 +305,51 @@ static bool figures_ok(const char *ref, const grade_case *k, double cand_n, cons
     return ok;
 }
 
-/* The GRADE_TRACE_PIXELS pixels whose luminance differs most from the reference's, as lines
+/* The GRADE_TRACE_PIXELS pixels that do not see an emitter and whose luminance differs most from the
+ * reference's, as lines
  * "pixel (x, y) ...: bin/pathtracer <the case's flags> --trace-pixel x y <scene>" with x, y from
  * the bottom-left: the command replays exactly the samples the render took of that pixel. */
 #define GRADE_TRACE_PIXELS 3
+/* Keeps the GRADE_TRACE_PIXELS best scores in order, with their pixels and differences. */
+static void rank_pixel(int *best, float *diff, float *scores, float score, long i, float d)
+{
+    for (int j = 0; j < GRADE_TRACE_PIXELS; j++)
+        if (score > scores[j]) {  /* insert at j, shifting the lower ones down */
+            memmove(&scores[j + 1], &scores[j], (GRADE_TRACE_PIXELS - 1 - j) * sizeof *scores);
+            memmove(&diff[j + 1], &diff[j], (GRADE_TRACE_PIXELS - 1 - j) * sizeof *diff);
+            memmove(&best[j + 1], &best[j], (GRADE_TRACE_PIXELS - 1 - j) * sizeof *best);
+            scores[j] = score, diff[j] = d, best[j] = (int)i;
+            return;
+        }
+}
+
 static void point_at_pixels(const grade_env *env, const grade_case *k, const image *cand, const image *ref,
-                            grade_case_result *c)
+                            const image *refvar, grade_case_result *c)
 {
     int best[GRADE_TRACE_PIXELS];
-    float diff[GRADE_TRACE_PIXELS];
-    for (int i = 0; i < GRADE_TRACE_PIXELS; i++) best[i] = -1, diff[i] = -1.0f;
+    float diff[GRADE_TRACE_PIXELS], scores[GRADE_TRACE_PIXELS];
+    for (int i = 0; i < GRADE_TRACE_PIXELS; i++) best[i] = -1, diff[i] = scores[i] = -1.0f;
     long n = (long)cand->width * cand->height;
+    /* Pixels that see an emitter directly (within a quarter of the reference's brightest) are passed
+     * over: their value is mostly the light's own Le, so a trace there shows the emitter and little
+     * of the student's estimator, and their difference is the emitter's edge noise. */
+    float brightest = 0.0f;
+    for (long i = 0; i < n && cand->width == ref->width && cand->height == ref->height; i++)
+        if (isfinite(rgb_luminance(ref->pixels[i]))) brightest = fmaxf(brightest, rgb_luminance(ref->pixels[i]));
+    bool have_var = refvar && refvar->pixels && refvar->width == ref->width && refvar->height == ref->height;
     for (long i = 0; i < n && cand->width == ref->width && cand->height == ref->height; i++) {
         float d = fabsf(rgb_luminance(cand->pixels[i]) - rgb_luminance(ref->pixels[i]));
-        if (!(d >= 0.0f)) d = INFINITY;  /* a NaN pixel differs most */
-        for (int j = 0; j < GRADE_TRACE_PIXELS; j++)
-            if (d > diff[j]) {  /* insert at j, shifting the smaller ones down */
-                memmove(&diff[j + 1], &diff[j], (GRADE_TRACE_PIXELS - 1 - j) * sizeof *diff);
-                memmove(&best[j + 1], &best[j], (GRADE_TRACE_PIXELS - 1 - j) * sizeof *best);
-                diff[j] = d, best[j] = (int)i;
-                break;
-            }
+        if (!(d >= 0.0f)) {  /* a NaN pixel differs most */
+            rank_pixel(best, diff, scores, INFINITY, i, d);
+            continue;
+        }
+        if (rgb_luminance(ref->pixels[i]) > 0.25f * brightest) continue;
+        /* Ranked by |t|, the difference over the noise the candidate's mean should have there (the
+         * reference's per-sample variance at the candidate's samples), so that the edge of an
+         * emitter, where a few samples decide the value, is not taken for a bug. */
+        double sd = have_var ? sqrt(fmax(0.0, (double)rgb_luminance(refvar->pixels[i])) * k->reference_samples /
+                                    k->samples) : 0.0;
+        rank_pixel(best, diff, scores, (float)(d / (sd + 1e-3)), i, d);
     }
     char flags[512] = "";
     for (int f = 0, len = 0; f < k->num_flags && len < (int)sizeof flags; f++)
@@ -397,7 +421,7 @@ static void judge(const grade_env *env, const grade_spec *spec, int part, const 
         }
         c->pass = figures && c->v.pass;
         c->chance_failure = figures && !c->v.pass && !c->v.deterministic && c->v.bad_pixels == 0;
-        if (!c->pass && !k->hidden) point_at_pixels(env, k, &cand, refimg, c);  /* a hidden case: no pixels */
+        if (!c->pass && !k->hidden) point_at_pixels(env, k, &cand, refimg, refvar, c);  /* a hidden case: no pixels */
         write_pictures(env, part, c, &cand, refimg);
     }
     image_free(&cand);

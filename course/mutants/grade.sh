@@ -8,6 +8,8 @@
 # skipped here. Usage: course/mutants/grade.sh [patch ...]   (make grade-mutants)
 set -u
 root=$(cd "$(dirname "$0")/../.." && pwd)
+. "$root/tests/common/need.sh"
+need jq jq grade-mutants
 scratch="$root/build/grade-mutants"
 [ $# -gt 0 ] || set -- "$root"/course/mutants/*.patch
 lost=0; kept=0; skipped=0
@@ -27,8 +29,14 @@ for patch in "$@"; do
     line=$(grep "^$part " "$scratch/$name/table.txt")
     score=$(echo "$line" | sed -n 's/.* \([0-9.]*\) \/ \([0-9.]*\)$/\1/p')
     max=$(echo "$line" | sed -n 's/.* \([0-9.]*\) \/ \([0-9.]*\)$/\2/p')
+    # What the bug costs, unit tests and images apart (grading/CALIBRATION.md's table).
+    costs=$(jq -r --arg p "Part $part: " '[.tests[] | select(.name | startswith($p))] |
+        "unit \([.[] | select(.name | endswith("unit tests"))][0] | "\(.score)/\(.max_score)"), images \(
+        [.[] | select(.name | endswith("unit tests") | not) | .score] | add)/\(
+        [.[] | select(.name | endswith("unit tests") | not) | .max_score] | add)"' \
+        "$scratch/$name/out/results.json" 2>/dev/null)
     if [ -n "$score" ] && [ "$score" != "$max" ]; then
-        echo "LOSES   $name: part $part scores $score / $max"; lost=$((lost + 1))
+        echo "LOSES   $name: part $part scores $score / $max ($costs)"; lost=$((lost + 1))
     else
         echo "KEEPS   $name: part $part scores ${score:-?} / ${max:-?} (see $scratch/$name/out)"; kept=$((kept + 1))
     fi
