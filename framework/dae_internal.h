@@ -34,6 +34,14 @@ typedef struct {
 
 #define DAE_MAX_WARN_KINDS 64
 
+/* A node's transform to the world: its linear part in float (rotations and scales need no more) and
+ * its translation in double, so that a scene 10^6 m from the file's origin keeps its millimetres
+ * until the scene's origin (scene.origin) is taken off (dae.c). */
+typedef struct {
+    mat4 linear;           /* the translation column is zero */
+    double t[3];
+} dae_xform;
+
 typedef struct {
     const char *name;      /* the file name used in messages */
     pl_diag *diag;         /* never NULL inside the loader */
@@ -41,6 +49,8 @@ typedef struct {
     dae_index index;
     scene *out;
     mat4 up;               /* file axes -> pathlab's Y-up world, applied before every node */
+    bool finding_origin;   /* the first pass: only the first camera's position is wanted (dae.c) */
+    bool origin_found;
     int default_material;  /* grey 0.5, created on first use; -1 before */
     bool has_camera;
     long node_visits;      /* bounds the work <instance_node> chains can cause */
@@ -81,6 +91,8 @@ pl_status dae_resolve(dae_ctx *c, const xmlNode *at, const char *attr, const cha
 /* Reads exactly want numbers (or, when want_alt > 0, want_alt of them) from n's text, and never
  * more than one past the larger: "found more" then. found gets how many were read (may be NULL). */
 pl_status dae_floats(dae_ctx *c, const xmlNode *n, float *out, int want, int want_alt, int *found);
+/* Exactly `want` numbers in double (node transforms: a translation of 10^6 m keeps its millimetres). */
+pl_status dae_doubles(dae_ctx *c, const xmlNode *n, double *out, int want);
 /* Reads the numbers of n's text into a new array (caller frees, also when *count is 0). Reading
  * stops one number past max (the count the file declares; < 0: none): *count is then max + 1. */
 pl_status dae_float_list(dae_ctx *c, const xmlNode *n, int max, float **out, int *count);

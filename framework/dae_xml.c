@@ -352,6 +352,33 @@ pl_status dae_floats(dae_ctx *c, const xmlNode *n, float *out, int want, int wan
     return dae_error(c, n, PL_ERR_PARSE, "expected %d number%s, found %s", want, want == 1 ? "" : "s", got);
 }
 
+pl_status dae_doubles(dae_ctx *c, const xmlNode *n, double *out, int want)
+{
+    xmlChar *copy;
+    const char *s = text_of(n, &copy);
+    int k = 0;
+    pl_status st = PL_OK;
+    for (;;) {
+        while (is_space(*s)) s++;
+        if (!*s || k > want) break;
+        const char *tok = s;
+        while (*s && !is_space(*s)) s++;
+        char *stop;
+        double v = strtod(tok, &stop);
+        if (stop != s || !isfinite(v)) {
+            st = bad_token(c, n, "a finite number", tok, s);
+            break;
+        }
+        if (k < want) out[k] = v;
+        k++;
+    }
+    xmlFree(copy);
+    if (st) return st;
+    if (k == want) return PL_OK;
+    return dae_error(c, n, PL_ERR_PARSE, "expected %d number%s, found %s%d", want, want == 1 ? "" : "s",
+                     k > want ? "more than " : "", k > want ? want : k);
+}
+
 pl_status dae_float_list(dae_ctx *c, const xmlNode *n, int max, float **out, int *count)
 {
     void *v;

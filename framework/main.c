@@ -76,6 +76,10 @@ static int load(const options *o, scene *s, const char *prog)
             scene_free(s);
             return fail(prog, &diag, 2);
         }
+        /* Its position is in the file's coordinates; the scene's are relative to its origin. */
+        s->camera.position = vec3_make((float)(s->camera.position.x - s->origin[0]),
+                                       (float)(s->camera.position.y - s->origin[1]),
+                                       (float)(s->camera.position.z - s->origin[2]));
         s->has_camera = true;
     }
     return 0;

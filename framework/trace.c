@@ -90,13 +90,20 @@ typedef struct trace_log {
 /* ---- output: one line of the tree, as text or as a JSON event ------------------------------- */
 
 /* JSON has no NaN or infinity: such a value is written as the string "nan", "inf" or "-inf". */
-static json_t *jnum(float v)
+static json_t *jnum(double v)
 {
-    return isfinite(v) ? json_real((double)v) : json_string(isnan(v) ? "nan" : v > 0 ? "inf" : "-inf");
+    return isfinite(v) ? json_real(v) : json_string(isnan(v) ? "nan" : v > 0 ? "inf" : "-inf");
 }
 /* Vectors and colours as three-element arrays. */
 static json_t *jv3(float a, float b, float c) { return json_pack("[ooo]", jnum(a), jnum(b), jnum(c)); }
 static json_t *jvec(vec3 v) { return jv3(v.x, v.y, v.z); }
+/* A position in the file's coordinates: the scene stores them relative to its origin (scene.h). */
+#define FILE_AT(t, coord, axis) ((double)(coord) + (t)->ctx->scene->origin[axis])
+#define PXYZ(v) FILE_AT(t, (v).x, 0), FILE_AT(t, (v).y, 1), FILE_AT(t, (v).z, 2)
+static json_t *jpoint(const trace_log *t, vec3 v)
+{
+    return json_pack("[ooo]", jnum(FILE_AT(t, v.x, 0)), jnum(FILE_AT(t, v.y, 1)), jnum(FILE_AT(t, v.z, 2)));
+}
 static json_t *jrgb(rgb c) { return jv3(c.r, c.g, c.b); }
 
 /* Prints one line at the current nesting; fields (owned, may be NULL) go into its JSON event. */
@@ -271,9 +278,9 @@ rgb trace_leave(pl_seam_id fn, rgb L)
 ray trace_camera_ray(ray r)
 {
     trace_log *t = pl_trace;
-    emit(t, "camera_ray", json_pack("{s:o, s:o, s:o, s:o}", "origin", jvec(r.o), "direction", jvec(r.d), "min_t",
+    emit(t, "camera_ray", json_pack("{s:o, s:o, s:o, s:o}", "origin", jpoint(t, r.o), "direction", jvec(r.d), "min_t",
                                     jnum(r.min_t), "max_t", jnum(r.max_t)),
-         "camera ray from " V3 " along " V3 ", t in [%.5g, %.5g]", XYZ(r.o), XYZ(r.d), (double)r.min_t, (double)r.max_t);
+         "camera ray from " V3 " along " V3 ", t in [%.5g, %.5g]", PXYZ(r.o), XYZ(r.d), (double)r.min_t, (double)r.max_t);
     if (!(r.max_t > r.min_t))
         mark(t, "the camera ray spans no distance: pixel_sample_ray or camera_generate_ray is a stub or broken");
     return r;
@@ -310,8 +317,8 @@ static void describe_hit(trace_log *t, const char *role, const ray *r, bool foun
 {
     const scene *s = t->ctx->scene;
     if (!found) {
-        emit(t, "miss", json_pack("{s:s, s:o, s:o}", "role", role, "origin", jvec(r->o), "direction", jvec(r->d)),
-             "%s from " V3 " along " V3 ": misses everything", role, XYZ(r->o), XYZ(r->d));
+        emit(t, "miss", json_pack("{s:s, s:o, s:o}", "role", role, "origin", jpoint(t, r->o), "direction", jvec(r->d)),
+             "%s from " V3 " along " V3 ": misses everything", role, PXYZ(r->o), XYZ(r->d));
         return;
     }
     bool tri = h->prim < s->num_triangles;
@@ -319,13 +326,13 @@ static void describe_hit(trace_log *t, const char *role, const ray *r, bool foun
     const material *m = valid ? &s->materials[h->material] : NULL;
     vec3 p = ray_at(r, h->t);
     emit(t, "hit",
-         json_pack("{s:s, s:o, s:o, s:i, s:s, s:o, s:o, s:o, s:o, s:o}", "role", role, "origin", jvec(r->o), "direction",
+         json_pack("{s:s, s:o, s:o, s:i, s:s, s:o, s:o, s:o, s:o, s:o}", "role", role, "origin", jpoint(t, r->o), "direction",
                    jvec(r->d), "primitive", h->prim, "primitive_kind", tri ? "triangle" : "sphere", "distance",
-                   jnum(h->t), "point", jvec(p), "normal", jvec(h->n), "reflectance",
+                   jnum(h->t), "point", jpoint(t, p), "normal", jvec(h->n), "reflectance",
                    jrgb(m ? m->albedo : rgb_gray(0)), "emission", jrgb(m ? m->Le : rgb_gray(0))),
          "%s along " V3 " hits %s %d (material \"%s\") at distance %.6g, point " V3 ", normal " V3
          "; reflectance " V3 ", emission " V3,
-         role, XYZ(r->d), tri ? "triangle" : "sphere", h->prim, m ? m->name : "?", (double)h->t, XYZ(p), XYZ(h->n),
+         role, XYZ(r->d), tri ? "triangle" : "sphere", h->prim, m ? m->name : "?", (double)h->t, PXYZ(p), XYZ(h->n),
          RGB(m ? m->albedo : rgb_gray(0)), RGB(m ? m->Le : rgb_gray(0)));
     float len = vec3_length(h->n);
     if (!(fabsf(len - 1.0f) <= 1e-3f)) mark(t, "the normal at this hit has length %.6g, not 1", (double)len);
@@ -393,7 +400,7 @@ bool trace_occluded(const render_ctx *ctx, const ray *r)
         }
         else snprintf(what, sizeof what, "occluded");
     }
-    json_t *j = json_pack("{s:o, s:o, s:o, s:o, s:b, s:i, s:o}", "origin", jvec(r->o), "direction", jvec(r->d), "min_t",
+    json_t *j = json_pack("{s:o, s:o, s:o, s:o, s:b, s:i, s:o}", "origin", jpoint(t, r->o), "direction", jvec(r->d), "min_t",
                           jnum(r->min_t), "max_t", jnum(r->max_t), "occluded", blocked, "blocker", prim, "blocker_distance",
                           jnum(dist));
     /* A shadow ray towards a light at a finite distance (point, spot, area) is a segment
@@ -401,11 +408,11 @@ bool trace_occluded(const render_ctx *ctx, const ray *r)
      * of the light: shown by its two ends and its length, which is what a student can check. */
     if (isfinite(r->max_t)) {
         vec3 end = vec3_add(r->o, vec3_scale(r->d, r->max_t));
-        emit(t, "shadow_ray", j, "shadow ray from " V3 " to " V3 " (length %.6g): %s", XYZ(r->o), XYZ(end),
+        emit(t, "shadow_ray", j, "shadow ray from " V3 " to " V3 " (length %.6g): %s", PXYZ(r->o), PXYZ(end),
              (double)(vec3_length(r->d) * r->max_t), what);
     }
     else
-        emit(t, "shadow_ray", j, "shadow ray from " V3 " along " V3 " (no far end): %s", XYZ(r->o),
+        emit(t, "shadow_ray", j, "shadow ray from " V3 " along " V3 " (no far end): %s", PXYZ(r->o),
              XYZ(vec3_normalize(r->d)), what);
     return blocked;
 }

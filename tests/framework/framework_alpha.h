@@ -9,7 +9,7 @@
 #include "../common/alpha.h"
 
 #define FRAMEWORK_FAMILY_ALPHA 1e-3
-#define FRAMEWORK_CHECKS 8
+#define FRAMEWORK_CHECKS 16
 #define FRAMEWORK_CHECK_ALPHA alpha_check(FRAMEWORK_FAMILY_ALPHA, FRAMEWORK_CHECKS)
 
 #endif

@@ -17,7 +17,8 @@ int output_tests(void);   /* a render's outputs as one unit */
 int lights_tests(void);
 int sampler_tests(void);
 int stats_tests(void);    /* the statistics the tests and the grader share (framework/stats.c) */
-int spawn_tests(void);    /* leaving a surface: offset ray origins (framework/spawn.c) */
+int spawn_tests(void);
+int placement_tests(void);  /* a scene renders the same wherever it sits (framework/dae.c's origin) */    /* leaving a surface: offset ray origins (framework/spawn.c) */
 
 int main(void)
 {
@@ -41,5 +42,6 @@ int main(void)
     failed += bvh_tests();
     failed += trace_tests();
     failed += spawn_tests();
+    failed += placement_tests();
     return failed ? 1 : 0;
 }
