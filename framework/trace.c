@@ -220,7 +220,8 @@ void trace_enter(pl_seam_id fn, const render_ctx *ctx, const ray *r, const hit *
     *f = (trace_frame){fn, ctx, *r, *h, pl_todo_count()};
     if (fn == PL_SEAM_at_least_one_bounce_radiance)
         t->path = (trace_path){.active = true, .beta = rgb_gray(1.0f), .cur = *r, .at = *h};
-    if (fn == PL_SEAM_direct_importance) t->direct = (trace_direct){rgb_gray(0.0f), rgb_gray(0.0f)};
+    if (fn == PL_SEAM_direct_importance || fn == PL_SEAM_direct_hemisphere)
+        t->direct = (trace_direct){rgb_gray(0.0f), rgb_gray(0.0f)};
 }
 
 /* Once per stub call, at the innermost wrapped call it happened in. */
@@ -256,6 +257,10 @@ rgb trace_leave(pl_seam_id fn, rgb L)
     stub_mark(t, f);
     if (fn == PL_SEAM_at_least_one_bounce_radiance) path_end(t, L);
     if (fn == PL_SEAM_direct_importance && pl_todo_count() == f->todo_before) direct_check(t, L);
+    if (fn == PL_SEAM_direct_hemisphere && pl_todo_count() == f->todo_before && !rgb_close(L, t->direct.visible))
+        mark(t, "the hemisphere samples add up to " V3 " (each Le f cos / pdf / N, the uniform pdf 1/(2 pi), N = "
+             "num_lights x the light samples) but direct_hemisphere returned " V3 ": a direction from another "
+             "sampler must be divided by that sampler's pdf, and the sum by N", RGB(t->direct.visible), RGB(L));
     check_radiance(t, seam_names[fn], L);
     if (fn != PL_SEAM_one_bounce_radiance)  /* it returns what direct_* returned, shown already */
         emit(t, "return", json_pack("{s:s, s:o}", "function", seam_names[fn], "value", jrgb(L)), "%s returns " V3,
@@ -365,8 +370,23 @@ bool trace_intersect(const render_ctx *ctx, ray *r, hit *h)
     if (found && in(t, PL_SEAM_direct_hemisphere)) {
         int before = pl_todo_count();
         rgb Le = zero_bounce_radiance(top(t)->ctx, r, h);
-        if (pl_todo_count() == before)
-            emit(t, "emission", json_pack("{s:o}", "emission", jrgb(Le)), "  emission towards the surface " V3, RGB(Le));
+        if (pl_todo_count() == before) {
+            /* What the sample must add: Le f cos / pdf / N with task 3.4's uniform pdf 1/(2 pi) and
+             * N = num_lights x the light samples at this vertex (render_light_samples). */
+            trace_frame *f = top(t);
+            const scene *s = f->ctx->scene;
+            frame sf = shading_frame(&f->r, &f->h);
+            vec3 wo = frame_to_local(&sf, vec3_neg(f->r.d)), wi = frame_to_local(&sf, vec3_normalize(r->d));
+            int n = s->num_lights * render_light_samples(f->ctx, &f->r);
+            rgb adds = rgb_gray(0.0f);
+            if (wi.z > 0.0f && f->h.material >= 0 && f->h.material < s->num_materials && n > 0)
+                adds = rgb_scale(rgb_mul(Le, bsdf_f(&s->materials[f->h.material], wo, wi)),
+                                 wi.z * 2.0f * (float)PL_PI / (float)n);
+            t->direct.visible = rgb_add(t->direct.visible, adds);
+            emit(t, "emission", json_pack("{s:o, s:o}", "emission", jrgb(Le), "contribution", jrgb(adds)),
+                 "  emission towards the surface " V3 ", adds " V3 " (Le f cos / (1 / (2 pi)) / N, N = %d)", RGB(Le),
+                 RGB(adds), n);
+        }
     }
     if (role[0] == 'b') {
         t->path.cur = *r;

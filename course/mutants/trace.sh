@@ -21,6 +21,8 @@ part1-triangle-normal-not-normalised|-r 64 48 --normals --trace-pixel 30 15 scen
 part3-bsdf-without-pi|-r 64 48 -m 2 --trace-pixel 20 10 scenes/cornell_spheres.dae|throughput above 1 after a diffuse bounce
 part3-shadow-ray-ignored|-r 64 48 -s 4 -m 1 --trace-pixel 20 6 scenes/cornell_spheres.dae|nearer than the light and is still counted
 part3-shadow-ray-hits-light|-r 64 48 -m 1 --trace-pixel 32 30 scenes/cornell_spheres.dae|the light samples add up to
+part3-hemisphere-divides-by-light-samples-only|-r 64 48 -s 128 -m 1 -H -l 2 --trace-pixel 30 12 scenes/cornell_two_lights.dae|the hemisphere samples add up to
+part3-shadow-ray-from-raw-hit-point|-r 160 120 -s 64 -m 1 -l 4 --seed 160154358618 --trace-pixel 95 97 scenes/cornell_grazing.dae|the surface it starts on
 part4-no-roulette-compensation|-r 64 48 -s 16 -m 8 --trace-pixel 20 10 scenes/cornell_spheres.dae|does not divide the throughput
 part5-standard-deviation-not-error|-r 64 48 -s 64 -l 4 -a 8 0.1 -m 1 --trace-pixel 32 30 scenes/cornell_spheres.dae|adaptive_converged says go on'
 echo "$rows" | while IFS='|' read -r name flags expect; do
