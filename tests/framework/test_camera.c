@@ -133,13 +133,34 @@ static void test_camera_for_render__frames_a_course_file_as_cs184_by_default(voi
     scene_free(&s);
 }
 
+/* Every course-profile fixture, framed by default: all eight corners of its bounds project inside
+ * the frame. */
+static void test_camera_for_render__every_course_fixture_has_its_bounds_in_the_frame(void **state)
+{
+    (void)state;
+    static const char *fixtures[] = {"tests/data/valid/cs184_cbempty_like.dae", "tests/data/valid/cs184_layout.dae"};
+    for (size_t k = 0; k < sizeof fixtures / sizeof fixtures[0]; k++) {
+        scene s;
+        pl_diag d = pl_diag_default();
+        assert_int_equal(PL_OK, dae_load(fixtures[k], &s, &d));
+        if (!s.course_profile) fail_msg("%s is not in the course's profile", fixtures[k]);
+        options o = options_default();
+        camera c = camera_for_render(&s, &o);
+        int below;
+        int in = corners_in_frame(&c, scene_bounds(&s), &below);
+        if (in != 8) fail_msg("%s: %d of the 8 corners of its bounds project inside the frame", fixtures[k], in);
+        scene_free(&s);
+    }
+}
+
 /* pathlab's own scenes are written in CS184's dialect too, but their cameras are meant literally:
  * none of them is in the course's profile, so no reference or grading case changes framing. */
 static void test_camera_for_render__keeps_pathlabs_own_scenes_literal(void **state)
 {
     (void)state;
     static const char *own[] = {"scenes/cornell_empty.dae", "scenes/cornell_spheres.dae", "scenes/cornell_bunny.dae",
-                                "scenes/cornell_grazing.dae", "scenes/lights_point_dir.dae", "scenes/analytic/furnace.dae"};
+                                "scenes/cornell_grazing.dae", "scenes/cornell_two_lights.dae", "scenes/lights_point_dir.dae",
+                                "scenes/analytic/furnace.dae"};
     for (size_t k = 0; k < sizeof own / sizeof own[0]; k++) {
         scene s;
         pl_diag d = pl_diag_default();
@@ -159,6 +180,7 @@ int camera_tests(void)
         cmocka_unit_test(test_camera_default_framing__looks_at_the_centre_from_plus_z),
         cmocka_unit_test(test_camera_for_render__keeps_the_settings_files_lens_unless_flags_are_given),
         cmocka_unit_test(test_camera_for_render__frames_a_course_file_as_cs184_by_default),
+        cmocka_unit_test(test_camera_for_render__every_course_fixture_has_its_bounds_in_the_frame),
         cmocka_unit_test(test_camera_for_render__keeps_pathlabs_own_scenes_literal),
     };
     return cmocka_run_group_tests_name("camera", tests, NULL, NULL);
