@@ -249,31 +249,33 @@ static void test_handout__grading_tables_are_the_cases_files(void **state)
     grade_spec_free(&spec);
 }
 
+/* What grade_image_log_reason says of a render log holding text. */
+static const char *log_reason_of(const char *text)
+{
+    static char why[256];
+    char path[256];
+    snprintf(path, sizeof path, "%s/render.log", scratch);
+    scratch_write(path, text);
+    grade_image_log_reason(path, why, sizeof why);
+    return why;
+}
+
 /* A render that stopped says why in the grader's words: the framework's reason selects a fixed
  * sentence, and nothing of the log (the render's own output) is copied into it. */
 static void test_image__a_stopped_render_names_the_framework_reason_without_its_bytes(void **state)
 {
     (void)state;
-    char path[256], why[256];
-    snprintf(path, sizeof path, "%s/render.log", scratch);
-    scratch_write(path, "pathtracer: SECRET-42 bvh_build made a malformed tree: node 7: leaf holds 9 primitives, "
-                        "max_leaf_size is 4 SECRET-43\n");
-    grade_image_log_reason(path, why, sizeof why);
+    const char *why = log_reason_of("pathtracer: SECRET-42 bvh_build made a malformed tree: node 7: leaf holds 9 "
+                                    "primitives, max_leaf_size is 4 SECRET-43\n");
     assert_non_null(strstr(why, "a leaf holds more primitives than the leaf size allows"));
     assert_null(strstr(why, "SECRET"));
     assert_null(strstr(why, "7"));
-    scratch_write(path, "pathtracer: bvh_build made a malformed tree: node 3: a child box (node 4 or 5) pokes out of it\n");
-    grade_image_log_reason(path, why, sizeof why);
-    assert_non_null(strstr(why, "a child's box pokes out of its parent's"));
-    scratch_write(path, "pathtracer: bvh_build made a malformed tree: node 2: child 9 >= num_nodes 5\n");
-    grade_image_log_reason(path, why, sizeof why);
-    assert_non_null(strstr(why, "a child's index is not a node of the tree"));
-    scratch_write(path, "bvh_build is not implemented yet\n");
-    grade_image_log_reason(path, why, sizeof why);
-    assert_non_null(strstr(why, "still a stub"));
-    scratch_write(path, "anything the render chose to print\n");
-    grade_image_log_reason(path, why, sizeof why);
-    assert_string_equal(why, "");
+    assert_non_null(strstr(log_reason_of("pathtracer: bvh_build made a malformed tree: node 3: a child box (node 4 or 5) "
+                                         "pokes out of it\n"), "a child's box pokes out of its parent's"));
+    assert_non_null(strstr(log_reason_of("pathtracer: bvh_build made a malformed tree: node 2: child 9 >= num_nodes 5\n"),
+                           "a child's index is not a node of the tree"));
+    assert_non_null(strstr(log_reason_of("bvh_build is not implemented yet\n"), "still a stub"));
+    assert_string_equal(log_reason_of("anything the render chose to print\n"), "");
 }
 
 /* ---- the suite's results ------------------------------------------------------------------- */
