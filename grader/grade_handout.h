@@ -10,6 +10,9 @@
  * it does not fit in size bytes. */
 bool grade_handout_table(const grade_part_spec *p, char *out, size_t size);
 
+/* Part part's handout file, relative to the course's top: handout/part<N>.md. */
+void grade_handout_path(int part, char *out, size_t size);
+
 /* The generated table of the handout file at path, between its BEGIN GENERATED and END GENERATED
  * lines, against part p's: rewritten (atomically) when write, else any difference is an error. */
 pl_status grade_handout_update(const char *path, const grade_part_spec *p, bool write, pl_diag *diag);

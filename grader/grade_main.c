@@ -278,7 +278,7 @@ static int handout_tables(bool write)
     int code = 0;
     for (int k = 0; k < GRADE_NUM_PARTS; k++) {
         char path[64];
-        snprintf(path, sizeof path, "handout/part%d.md", k + 1);
+        grade_handout_path(k + 1, path, sizeof path);
         if (grade_handout_update(path, &spec.parts[k], write, &diag) != PL_OK) {
             fprintf(stderr, "grade: %s\n", diag.error);
             code = 1;

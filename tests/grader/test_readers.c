@@ -243,7 +243,7 @@ static void test_handout__grading_tables_are_the_cases_files(void **state)
     assert_int_equal(PL_OK, grade_spec_load(GRADE_CASES, NULL, &spec, &d));
     for (int k = 0; k < GRADE_NUM_PARTS; k++) {
         char path[64];
-        snprintf(path, sizeof path, "handout/part%d.md", k + 1);
+        grade_handout_path(k + 1, path, sizeof path);
         if (grade_handout_update(path, &spec.parts[k], false, &d) != PL_OK) fail_msg("%s", d.error);
     }
     grade_spec_free(&spec);
