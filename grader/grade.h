@@ -169,8 +169,11 @@ double grade_score_total(const grade_result *r, double *max);
 #define GRADE_COURSE_BUILD_SECONDS 900   /* the course's whole tree, once, trusted: ~60 s on a busy 2 cores */
 #define GRADE_SUITE_SECONDS 300          /* a part's suite (a student's own tree, whole; a split suite, all
                                             its tests): the slowest (part 4) takes ~40 s */
-#define GRADE_TEST_SECONDS 60            /* one test's subject in a split suite; the slowest takes ~8 s */
-#define GRADE_JUDGE_SECONDS 90           /* its judge: it waits for the subject, so it gets longer */
+#define GRADE_TEST_SECONDS 120           /* one test's subject in a split suite; the slowest takes ~8 s, but
+                                            a correct full-sweep SAH build (course/alternatives) ran past
+                                            60 s on a 2-core machine running five jobs: now that a failed
+                                            test costs its task's share, a loaded grader must not fail it */
+#define GRADE_JUDGE_SECONDS 150          /* its judge: it waits for the subject, so it gets longer */
 #define GRADE_RENDER_SECONDS 120         /* one case's render: the slowest takes ~20 s at two threads */
 #define GRADE_INSPECT_SECONDS 120        /* one tool reading the submission's objects (nm, objdump) */
 #define GRADE_CPU_PER_WALL 2             /* CPU seconds per wall second: the grader's two threads */
