@@ -28,6 +28,6 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
     memset(&r, 0, sizeof r);
     r.part = 1;
     char why[200];
-    grade_suite_read(dir, &r, why, sizeof why);
+    grade_suite_read(dir, NULL, &r, why, sizeof why);
     return 0;
 }

@@ -301,11 +301,6 @@ typedef struct {
 void grade_part(const grade_env *env, const grade_spec *spec, const grade_part_spec *p, grade_part_result *r);
 /* Fresh scratch for part `part`: work/partN (the grader's: logs) and work/partN/renders (the child's). */
 bool grade_part_dirs(const grade_env *env, int part);
-/* Reads the cmocka XML files in dir into r's tests run and failed (grade_score_part makes points of
- * them), or leaves a reason in r->suite_reason when the results are missing or malformed, or hold
- * other than `expected` tests (the suite stopped early, or the files are not its own), or disagree
- * with the exit status. */
-void grade_suite_results(const char *dir, int expected, int status, grade_part_result *r);
 /* The split suite (grade_judge.c): each of part p's tests run as the subject (tree's
  * bin/subject-partN: the submission's code, contained) piped into the judge (the course's
  * bin/judge-partN under env->root, trusted, no student code), scored from the judge's results only. */

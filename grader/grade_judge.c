@@ -19,36 +19,7 @@
 #include <time.h>
 #include <unistd.h>
 
-#define NAME_MAX_LEN 128
 #define JUDGE_SEAM_STATUS 3  /* replay.c: the record stream failed on a render's worker thread */
-
-typedef struct {
-    char names[GRADE_MAX_TESTS][NAME_MAX_LEN];
-    int count;
-} test_list;
-
-/* The judge's list of its tests (PL_TEST_LIST=1: "  name" lines under each group's). */
-static bool list_tests(const char *judge, const char *root, const char *dir, test_list *list)
-{
-    char log[4200];
-    grade_path(log, sizeof log, "%s/tests.list", dir);
-    char *envv[] = {"PL_TEST_LIST=1", NULL}, *argv[] = {(char *)judge, NULL};
-    grade_run_opts o = {.wall_seconds = GRADE_JUDGE_SECONDS, .cwd = root, .log_path = log, .log_max = GRADE_LOG_MAX,
-                        .env = envv, .bounded = true};
-    grade_run_result rr = grade_run(argv, &o);
-    FILE *f = rr.exited && rr.status == 0 ? fopen(log, "r") : NULL;
-    list->count = 0;
-    char line[512];
-    while (f && fgets(line, sizeof line, f)) {
-        size_t len = strcspn(line, "\n");
-        line[len] = '\0';
-        if (strncmp(line, "  ", 2) || len - 2 >= NAME_MAX_LEN || strspn(line + 2, "abcdefghijklmnopqrstuvwxyzABCDEFGHIJKLMNOPQRSTUVWXYZ0123456789_") != len - 2)
-            continue;
-        if (list->count < GRADE_MAX_TESTS) memcpy(list->names[list->count++], line + 2, len - 1);  /* len - 2 < NAME_MAX_LEN, and its NUL */
-    }
-    if (f) fclose(f);
-    return list->count > 0;
-}
 
 /* The judge's own message for a test it ended through the record stream ("seam: ..." in its log). */
 static void seam_message(const char *log, char *out, size_t size)
@@ -137,9 +108,13 @@ void grade_judge_suite(const grade_env *env, const char *tree, const grade_part_
     }
     /* The course's judge, built with the course's objects before any student code ran
      * (grade_tree_course_build), never in a grading tree. */
-    static test_list list;
+    static grade_test_list list;
+    char log[4200];
     grade_path(judge, sizeof judge, "%s/course/bin/judge-part%d", env->work, p->part);
-    if (!list_tests(judge, env->root, dir, &list)) {
+    grade_path(log, sizeof log, "%s/tests.list", dir);
+    grade_run_opts o = {.wall_seconds = GRADE_JUDGE_SECONDS, .cwd = env->root, .log_path = log, .log_max = GRADE_LOG_MAX,
+                        .bounded = true};
+    if (!grade_suite_list(judge, &o, &list)) {
         grade_msg(r->suite_reason, sizeof r->suite_reason, "the course's judge of part %d does not run (see "
                  "%s/tests.list): the course's problem, please tell the staff", p->part, dir);
         return;

@@ -45,12 +45,12 @@ static bool build_own_tree(const grade_env *env, int n, grade_part_result *r)
 
 /* ---- the suite: verdicts from cmocka's XML files, one per test group ------------------------- */
 
-void grade_suite_results(const char *dir, int expected, int status, grade_part_result *r)
+void grade_suite_results(const char *dir, const grade_test_list *order, int expected, int status, grade_part_result *r)
 {
     r->tests_run = r->tests_failed = r->num_tests = 0;
     r->failures[0] = '\0';
     char why[200] = "";
-    bool all_read = grade_suite_read(dir, r, why, sizeof why);  /* grade_suite.h says what it accepts */
+    bool all_read = grade_suite_read(dir, order, r, why, sizeof why);  /* grade_suite.h says what it accepts */
     /* The XML files are written group by group: a suite that stopped early (an _exit in a test, a
      * crash the suite survived) left fewer tests than it has; one with more was not the suite. */
     if (!all_read)
@@ -94,7 +94,13 @@ static void run_suite(const grade_env *env, const char *tree, const grade_part_s
         grade_run_describe(&rr, r->suite_reason, sizeof r->suite_reason);
         return;
     }
-    grade_suite_results(dir, p->unit_tests, rr.status, r);
+    /* The suite's own list of its tests orders the failures as it ran them (nothing is judged by it). */
+    static grade_test_list order;
+    char list_log[4200];
+    grade_path(list_log, sizeof list_log, "%s/part%d/suite.list", env->work, p->part);
+    o.log_path = list_log;
+    bool listed = grade_suite_list(bin, &o, &order);
+    grade_suite_results(dir, listed ? &order : NULL, p->unit_tests, rr.status, r);
 }
 
 /* ---- one part -------------------------------------------------------------------------------- */

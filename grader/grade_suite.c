@@ -115,48 +115,120 @@ static bool read_suite(xmlDocPtr doc, const char *group, grade_part_result *r, c
     return true;
 }
 
-/* Reads one file, opened without following a link. */
-static bool read_file(const char *dir, const char *file, grade_part_result *r, char *why, size_t size)
-{
-    char path[4400], group[256];
-    grade_path(path, sizeof path, "%s/%s", dir, file);
-    snprintf(group, sizeof group, "%.*s", (int)(strlen(file) - 4), file);
-    return grade_suite_read_file(path, group, r, why, size);
-}
-
-bool grade_suite_read_file(const char *path, const char *group, grade_part_result *r, char *why, size_t size)
+/* Parses the file at path, opened without following a link; NULL, with the reason in why, otherwise. */
+static xmlDocPtr parse_file(const char *path, char *why, size_t size)
 {
     int fd = grade_guard_open_child_file(path, GRADE_SUITE_XML_MAX);
     xmlDocPtr doc = fd >= 0 ? xmlReadFd(fd, path, NULL, XML_PARSE_NONET | XML_PARSE_NOBLANKS | XML_PARSE_NOERROR |
                                                            XML_PARSE_NOWARNING) : NULL;
     if (fd >= 0) close(fd);
-    bool ok = doc && read_suite(doc, group, r, why, size);
     if (!doc) grade_msg(why, size, "not a regular file under %ld MiB of XML", GRADE_SUITE_XML_MAX >> 20);
+    return doc;
+}
+
+bool grade_suite_read_file(const char *path, const char *group, grade_part_result *r, char *why, size_t size)
+{
+    xmlDocPtr doc = parse_file(path, why, size);
+    bool ok = doc && read_suite(doc, group, r, why, size);
     xmlFreeDoc(doc);
     return ok;
 }
 
-bool grade_suite_read(const char *dir, grade_part_result *r, char *why, size_t size)
+/* ---- a whole suite's folder, its groups in the order the suite runs them ---------------------- */
+
+#define SUITE_FILES_MAX 64  /* groups in one suite: the course's largest has 8 */
+
+typedef struct {
+    char name[208];  /* "part<N>: <group>.xml" */
+    xmlDocPtr doc;
+    int rank;        /* the place of its first test in the suite's list */
+} suite_file;
+
+/* The smallest place in order of a testcase below n (any depth), into *best. */
+static void rank_tests(xmlNodePtr n, const grade_test_list *order, int *best)
+{
+    for (xmlNodePtr c = n->children; c; c = c->next) {
+        if (c->type != XML_ELEMENT_NODE) continue;
+        xmlChar *name = is_element(c, "testcase") ? xmlGetProp(c, (const xmlChar *)"name") : NULL;
+        for (int i = 0; name && order && i < order->count && i < *best; i++)
+            if (!strcmp((const char *)name, order->names[i])) *best = i;
+        xmlFree(name);
+        rank_tests(c, order, best);
+    }
+}
+
+static int compare_files(const void *a, const void *b)
+{
+    const suite_file *x = a, *y = b;
+    return x->rank != y->rank ? (x->rank < y->rank ? -1 : 1) : strcmp(x->name, y->name);
+}
+
+bool grade_suite_read(const char *dir, const grade_test_list *order, grade_part_result *r, char *why, size_t size)
 {
     char prefix[16], reason[256] = "";
     snprintf(prefix, sizeof prefix, "part%d: ", r->part);
+    static suite_file files[SUITE_FILES_MAX];
+    int count = 0;
     DIR *d = opendir(dir);
     bool ok = d != NULL;
-    if (!d) grade_msg(reason, sizeof reason, "cannot read the folder");
+    if (!d) grade_msg(why, size, "%s: cannot read the folder", dir);
+    /* Every file is parsed before any is counted: the groups are then taken in the suite's order (the
+     * folder's order is the file system's), so the failed tests are listed as the suite ran them. */
     for (struct dirent *e; ok && (e = readdir(d));) {
         const char *n = e->d_name;
         size_t len = strlen(n);
         if (!strcmp(n, ".") || !strcmp(n, "..")) continue;
         /* What cmocka names a group's file: "part<N>: <group>.xml", no path, no other file. */
-        if (len < strlen(prefix) + 5 || len > 200 || strncmp(n, prefix, strlen(prefix)) || strcmp(n + len - 4, ".xml") ||
-            strchr(n, '/')) {
+        if (len < strlen(prefix) + 5 || len >= sizeof files[0].name || strncmp(n, prefix, strlen(prefix)) ||
+            strcmp(n + len - 4, ".xml") || strchr(n, '/'))
             grade_msg(reason, sizeof reason, "the suite writes 'part%d: <group>.xml' files only, not this one", r->part);
-            ok = false;
+        else if (count == SUITE_FILES_MAX) grade_msg(reason, sizeof reason, "more than %d groups", SUITE_FILES_MAX);
+        else {
+            char path[4400];
+            grade_path(path, sizeof path, "%s/%s", dir, n);
+            suite_file *f = &files[count];
+            snprintf(f->name, sizeof f->name, "%s", n);
+            if ((f->doc = parse_file(path, reason, sizeof reason))) {
+                f->rank = GRADE_MAX_TESTS;
+                rank_tests(xmlDocGetRootElement(f->doc), order, &f->rank);
+                count++;
+                continue;
+            }
         }
-        else ok = read_file(dir, n, r, reason, sizeof reason);
-        if (!ok) grade_msg(why, size, "%.200s: %s", n, reason);
+        grade_msg(why, size, "%.200s: %s", n, reason);
+        ok = false;
     }
     if (d) closedir(d);
-    if (!d) grade_msg(why, size, "%s: %s", dir, reason);
+    qsort(files, (size_t)count, sizeof *files, compare_files);
+    for (int i = 0; i < count; i++) {
+        char group[256];
+        snprintf(group, sizeof group, "%.*s", (int)(strlen(files[i].name) - 4), files[i].name);
+        if (ok && !read_suite(files[i].doc, group, r, reason, sizeof reason)) {
+            grade_msg(why, size, "%.200s: %s", files[i].name, reason);
+            ok = false;
+        }
+        xmlFreeDoc(files[i].doc);
+    }
     return ok;
+}
+
+bool grade_suite_list(const char *program, const grade_run_opts *o, grade_test_list *list)
+{
+    char *envv[] = {"PL_TEST_LIST=1", NULL}, *argv[] = {(char *)program, NULL};
+    grade_run_opts listing = *o;
+    listing.env = envv;
+    grade_run_result rr = grade_run(argv, &listing);
+    FILE *f = rr.exited && rr.status == 0 && o->log_path ? fopen(o->log_path, "r") : NULL;
+    list->count = 0;
+    char line[512];
+    while (f && fgets(line, sizeof line, f)) {
+        size_t len = strcspn(line, "\n");
+        line[len] = '\0';
+        if (strncmp(line, "  ", 2) || len - 2 >= sizeof list->names[0] ||
+            strspn(line + 2, "abcdefghijklmnopqrstuvwxyzABCDEFGHIJKLMNOPQRSTUVWXYZ0123456789_") != len - 2)
+            continue;
+        if (list->count < GRADE_MAX_TESTS) memcpy(list->names[list->count++], line + 2, len - 1);  /* and its NUL */
+    }
+    if (f) fclose(f);
+    return list->count > 0;
 }

@@ -295,7 +295,7 @@ static bool read_dir(const char *name, const char *file, const char *body, grade
     suite_file(dir, file, body);
     memset(r, 0, sizeof *r);
     r->part = 1;
-    return grade_suite_read(dir, r, why, 200);
+    return grade_suite_read(dir, NULL, r, why, 200);
 }
 
 static void test_suite__every_testcase_counted_and_skipped_is_not_passed(void **state)
@@ -337,6 +337,39 @@ static void test_suite__only_the_files_the_suite_writes(void **state)
     assert_non_null(strstr(why, "expected one <testsuite name="));
     assert_true(read_dir("good", "part1: g.xml", good, &r, why));
     assert_int_equal(r.tests_run, 1);
+}
+
+/* The groups' files are counted in the suite's order (its list), not the folder's: three groups whose
+ * names sort the other way round, each with one failed test, are listed c, b, a as the list says;
+ * without a list, by file name. */
+static void test_suite__failures_in_the_suites_order(void **state)
+{
+    (void)state;
+    char dir[256], why[200] = "", body[512];
+    snprintf(dir, sizeof dir, "%s/%s", scratch, "ordered");
+    assert_int_equal(0, mkdir(dir, 0755));
+    const char *groups[] = {"a", "b", "c"};
+    for (int g = 0; g < 3; g++) {
+        char file[32];
+        snprintf(file, sizeof file, "part1: %s.xml", groups[g]);
+        snprintf(body, sizeof body, "<testsuites><testsuite name=\"part1: %s\" tests=\"2\" failures=\"1\" errors=\"0\">"
+                 "<testcase name=\"test_%s_ok\"/><testcase name=\"test_%s_bad\"><failure>wrong</failure></testcase>"
+                 "</testsuite></testsuites>", groups[g], groups[g], groups[g]);
+        suite_file(dir, file, body);
+    }
+    grade_test_list order = {.count = 6};
+    const char *names[] = {"test_c_ok", "test_c_bad", "test_b_ok", "test_b_bad", "test_a_ok", "test_a_bad"};
+    for (int i = 0; i < 6; i++) snprintf(order.names[i], sizeof order.names[i], "%s", names[i]);
+    grade_part_result r;
+    memset(&r, 0, sizeof r);
+    r.part = 1;
+    assert_true(grade_suite_read(dir, &order, &r, why, sizeof why));
+    assert_int_equal(r.tests_failed, 3);
+    assert_string_equal(r.failures, "- `test_c_bad`: wrong\n- `test_b_bad`: wrong\n- `test_a_bad`: wrong\n");
+    memset(&r, 0, sizeof r);
+    r.part = 1;
+    assert_true(grade_suite_read(dir, NULL, &r, why, sizeof why));
+    assert_string_equal(r.failures, "- `test_a_bad`: wrong\n- `test_b_bad`: wrong\n- `test_c_bad`: wrong\n");
 }
 
 /* A message cut at 700 bytes never splits a character (a 3-byte one straddles the cut here). */
@@ -472,6 +505,7 @@ int readers_tests(void)
         cmocka_unit_test(test_suite__every_testcase_counted_and_skipped_is_not_passed),
         cmocka_unit_test(test_suite__only_the_files_the_suite_writes),
         cmocka_unit_test(test_suite__a_long_message_is_cut_between_characters),
+        cmocka_unit_test(test_suite__failures_in_the_suites_order),
         cmocka_unit_test(test_fmt__a_long_path_is_refused_a_long_message_cut_between_characters),
         cmocka_unit_test(test_report__every_entry_present_for_hostile_messages),
         cmocka_unit_test(test_grade__a_run_ends_cleanly_with_leak_detection),

@@ -10,6 +10,7 @@
 #include "../common/test.h"
 #include "../common/scratch.h"
 #include "../../grader/grade.h"
+#include "../../grader/grade_suite.h"
 #include "../../grader/grade_guard.h"
 #include "../../grader/grade_inspect.h"
 #include "../../grader/grade_diag.h"
@@ -123,7 +124,7 @@ static void score_results(const char *dir, int status, grade_part_result *r)
                                       {.task = "1.2", .points = 4.0, .tests = 8, .match = {"b__"}, .num_match = 1}}};
     memset(r, 0, sizeof *r);
     r->part = 1;
-    grade_suite_results(dir, 28, status, r);
+    grade_suite_results(dir, NULL, 28, status, r);
     grade_score_part(&spec, r);
 }
 
