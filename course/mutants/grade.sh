@@ -5,14 +5,17 @@
 # points on its own part. (Other parts are built from the solution in isolated grading, so a mutant
 # cannot cost them points by construction; `make mutants` checks its own suite catches it.)
 # The framework mutant (part5-wrong-statistic-red-channel) patches the framework, not a part: it is
-# skipped here. Usage: course/mutants/grade.sh [patch ...]   (make grade-mutants)
+# skipped here. What a patch says the grader must tell the student ("Says:", "Prints:", "Never says:"
+# lines: course/mutants/says.sh) is checked too. Usage: course/mutants/grade.sh [patch ...]
+# (make grade-mutants)
 set -u
 root=$(cd "$(dirname "$0")/../.." && pwd)
 . "$root/tests/common/need.sh"
+. "$root/course/mutants/says.sh"
 need jq jq grade-mutants
 scratch="$root/build/grade-mutants"
 [ $# -gt 0 ] || set -- "$root"/course/mutants/*.patch
-lost=0; kept=0; skipped=0
+lost=0; kept=0; skipped=0; unsaid=0
 for patch in "$@"; do
     name=$(basename "$patch" .patch)
     part=$(echo "$name" | sed -n 's/^part\([0-9]\)-.*/\1/p')
@@ -40,6 +43,7 @@ for patch in "$@"; do
     else
         echo "KEEPS   $name: part $part scores ${score:-?} / ${max:-?} (see $scratch/$name/out)"; kept=$((kept + 1))
     fi
+    mutant_says "$patch" "$part" "$scratch/$name/out/results.json" "$scratch/$name/table.txt" || unsaid=$((unsaid + 1))
 done
-echo "grade-mutants: $lost lose points on their part, $kept keep full marks, $skipped skipped"
-[ "$kept" = 0 ]
+echo "grade-mutants: $lost lose points on their part, $kept keep full marks, $skipped skipped, $unsaid with a message missing"
+[ "$kept" = 0 ] && [ "$unsaid" = 0 ]

@@ -10,7 +10,9 @@
 # and each public test's name, status and score in the two results.json must be equal. A bug is
 # compared on its own part only: locally a later part is built on the student's buggy part, in the
 # autograder on the course's. The bug of part 3 fails its image cases twice: each was rendered again
-# (grader/grade_image.h) and differed again, but for those too noisy. Ends with "N passed, N failed".
+# (grader/grade_image.h) and differed again, but for those too noisy. Each bug's patch names what the
+# grader must tell the student about it (course/mutants/says.sh), checked both ways. Ends with
+# "N passed, N failed".
 set -u
 cd "$(dirname "$0")/../.." || exit 2
 root=$PWD
@@ -19,6 +21,7 @@ STUDENT=release/student
 MESSAGE="grade: no sandbox on this machine: your own code runs unconfined; your official grade comes from the autograder"
 [ -d "$STUDENT" ] && [ -x bin/grade ] || { echo "grade-local: run make release bin/grade first" >&2; exit 2; }
 . tests/common/need.sh
+. course/mutants/says.sh
 need jq jq grade-local  # reads results.json (the grader's own reading is jansson's)
 # Scratch outside the repository, readable by nobody on the way down.
 work=$(mktemp -d /tmp/pathlab-grade-local-XXXXXX) && chmod 755 "$work" || exit 2
@@ -64,6 +67,14 @@ compare() {
     else
         fail "$name, part $parts: the verdicts differ (< autograder, > local)" "$work/$name.diff"
     fi
+    # What the bug's patch says the grader must tell the student (course/mutants/says.sh), both ways.
+    [ -z "$patch" ] && return
+    for way in autograder local; do
+        if [ $way = local ]; then json=$l; else json=$a; fi
+        mutant_says "course/mutants/$patch.patch" "$parts" "$json" "$work/$name-$way.log" >"$work/$name-says.txt"
+        if [ $? = 0 ]; then pass "$name ($way): the messages its patch names ($(grep -c '^  ok' "$work/$name-says.txt"))"
+        else fail "$name ($way): a message its patch names is missing or wrong" "$work/$name-says.txt"; fi
+    done
 }
 
 echo "== make grade without the sandbox vs the autograder (seed $SEED)"

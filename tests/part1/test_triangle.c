@@ -29,7 +29,7 @@ static void test_triangle_intersect__hit_at_known_t_and_barycentrics(void **stat
     hit h = {0};
     bool found = triangle_intersect(&t, &r, &h);
     assert_implemented();
-    assert_true(found);
+    if (!found) PL_FAIL("wrong: a ray straight down onto (0.25, 0.5, 0), inside the triangle, missed it; expected a hit");
     assert_float_near(2.0, h.t, 1e-6);
     assert_float_near(0.25, h.b1, 1e-6);
     assert_float_near(0.5, h.b2, 1e-6);
@@ -58,7 +58,9 @@ static void test_triangle_intersect__misses_outside(void **state)
         bool found = triangle_intersect(&t, &r, &h);
         assert_implemented();
         if (found) fail_msg("wrong: ray onto (%g, %g, 0) hit the triangle, expected a miss", outside[i][0], outside[i][1]);
-        assert_true(isinf(r.max_t));              /* a miss leaves the ray alone */
+        if (!isinf(r.max_t))  /* a miss leaves the ray alone */
+            PL_FAIL("wrong: a ray that missed the triangle (onto (%g, %g, 0)) came back with max_t = %g; a miss leaves "
+                    "the ray as it was (max_t = inf)", outside[i][0], outside[i][1], r.max_t);
         assert_float_near(-7.0, h.t, 0);          /* ... and the hit record */
     }
 }
@@ -137,7 +139,7 @@ static void test_triangle_intersect__degenerate_triangle_never_hits(void **state
     hit h = {0};
     bool found = triangle_intersect(&t, &r, &h);
     assert_implemented();
-    assert_false(found);
+    if (found) PL_FAIL("wrong: a degenerate triangle (three points on a line) was hit; expected a miss (no area, no hit)");
 }
 
 /* ---- precision: small triangles, far from the world origin, and near-parallel rays ---------------

@@ -52,7 +52,9 @@ static void test_bsdf_sample_f__returns_f_and_pdf_of_its_direction(void **state)
         float pdf = -1.0f;
         rgb f = bsdf_sample_f(&m, WO, rng_uniform2(&g), &wi, &pdf);
         assert_implemented();
-        assert_true(wi.z >= 0.0f);
+        if (!(wi.z >= 0.0f))
+            PL_FAIL("wrong: bsdf_sample_f gave wi = (%g, %g, %g), below the surface; a diffuse BSDF samples the upper "
+                    "hemisphere (z >= 0 in the local frame)", wi.x, wi.y, wi.z);
         assert_rgb_near(bsdf_f(&m, WO, wi), f, 1e-6f);
         assert_float_near(bsdf_pdf(&m, WO, wi), pdf, 1e-4 * (1.0 + pdf));
     }

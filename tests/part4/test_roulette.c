@@ -66,9 +66,7 @@ static void test_russian_roulette__ends_some_long_faint_paths(void **state)
             ended++;
         assert_implemented();
     }
-    if (ended == 0)
-        print_error("russian_roulette never ended a path of throughput 0.05 before bounce 20\n");
-    assert_true(ended > 0);
+    if (ended == 0) PL_FAIL("wrong: russian_roulette never ended a path of throughput 0.05 before bounce 20");
 }
 
 typedef struct { stats_acc acc[3]; uint64_t rays; } furnace_run;
@@ -116,9 +114,8 @@ static void test_roulette__saves_work_without_changing_the_mean(void **state)
                                      "continue probability does, a throughput-based one ends the faint ones"
                                    : "");
     if (!(rr.rays < all.rays))
-        print_error("roulette should end paths early: %llu rays with it, %llu without (does the path loop "
-                    "honour opts->no_roulette?)\n", (unsigned long long)rr.rays, (unsigned long long)all.rays);
-    assert_true(rr.rays < all.rays);
+        PL_FAIL("wrong: roulette should end paths early: %llu rays with it, %llu without (does the path loop "
+                "honour opts->no_roulette?)", (unsigned long long)rr.rays, (unsigned long long)all.rays);
 }
 
 int roulette_tests(void)
