@@ -18,7 +18,7 @@ void bvh_free(bvh *b)
     memset(b, 0, sizeof *b);
 }
 
-const bvh_node *bvh_visit(const bvh *b, int index)
+PL_HOT const bvh_node *bvh_visit(const bvh *b, int index)
 {
     PL_CHECK(index >= 0 && index < b->num_nodes);  /* a traversal's bug, caught before the read */
     counters_add_visit(index);

@@ -15,8 +15,23 @@
 #ifndef PL_FRAMEWORK_CHECK_H
 #define PL_FRAMEWORK_CHECK_H
 
+#if defined(__GNUC__)
+#define PL_CHECK(cond) (__builtin_expect(!!(cond), 1) ? (void)0 : pl_check_failed(#cond, __FILE__, __LINE__))
+/* PL_HOT on a framework function's definition: the few that part code calls once per node, primitive
+ * or random number (bvh_visit, scene_prim_intersect's counting, rng_uniform) are inlined into the
+ * part's loop when the build links with LTO (the release build does), so the framework's
+ * bookkeeping costs no call. They stay ordinary functions to the linker, the seam and the grader. */
+#define PL_HOT __attribute__((always_inline)) inline
+#define PL_UNLIKELY(cond) __builtin_expect(!!(cond), 0)
+#else
 #define PL_CHECK(cond) ((cond) ? (void)0 : pl_check_failed(#cond, __FILE__, __LINE__))
+#define PL_HOT
+#define PL_UNLIKELY(cond) (cond)
+#endif
 
+#if defined(__GNUC__)
+__attribute__((cold))
+#endif
 void pl_check_failed(const char *what, const char *file, int line);
 
 /* What a failed check does. Set once before any thread runs (a test suite's start); NULL restores

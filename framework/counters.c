@@ -1,6 +1,7 @@
 /* The work counters (counters.h): per-thread, so the hot path pays one thread-local add and one
  * well-predicted branch (is a test tracing?) per count, and no atomics. */
 #include "counters.h"
+#include "check.h"
 #include <stddef.h>
 
 static _Thread_local work_counts counts;
@@ -24,7 +25,7 @@ void counters_add(work_counts w)
     counts.prim_tests += w.prim_tests;
 }
 
-void counters_add_ray(void) { counts.rays++; }
+PL_HOT void counters_add_ray(void) { counts.rays++; }
 
 /* A traced count also records which node or primitive: appended while the test's list has room,
  * else the trace says it overflowed (the test then knows its record is incomplete). */
@@ -34,14 +35,14 @@ static void trace_append(counters_trace *t, int *list, int *num, int cap, int va
     else t->overflow = true;
 }
 
-void counters_add_visit(int node)
+PL_HOT void counters_add_visit(int node)
 {
     counts.node_visits++;
     counters_trace *t = trace;
     if (t) trace_append(t, t->nodes, &t->num_nodes, t->cap_nodes, node);
 }
 
-void counters_add_prim(int prim)
+PL_HOT void counters_add_prim(int prim)
 {
     counts.prim_tests++;
     counters_trace *t = trace;

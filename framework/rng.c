@@ -3,6 +3,7 @@
  * that neighbouring pixels and samples get unrelated sequences. */
 #include "rng.h"
 #include "trace.h"
+#include "check.h"
 
 static uint64_t splitmix64(uint64_t x)
 {
@@ -30,7 +31,7 @@ rng rng_for_sample(uint64_t seed, uint64_t pixel, uint64_t sample)
     return rng_seeded(a, b);
 }
 
-uint32_t rng_u32(rng *r)
+PL_HOT uint32_t rng_u32(rng *r)
 {
     uint64_t old = r->state;
     r->state = old * 6364136223846793005ull + r->inc;
@@ -39,13 +40,22 @@ uint32_t rng_u32(rng *r)
     return (xorshifted >> rot) | (xorshifted << ((-rot) & 31u));
 }
 
-/* 24 random bits scaled by 2^-24: exactly representable, so the result is < 1. */
-float rng_uniform(rng *r)
+/* A seam function (framework/seam.h): a trace replays part 4's roulette from the state. Out of the
+ * hot path: only a traced pixel takes it. */
+#if defined(__GNUC__)
+__attribute__((noinline, cold))
+#endif
+static float rng_uniform_traced(rng *r)
 {
-    if (!pl_trace) return (float)(rng_u32(r) >> 8) * (1.0f / 16777216.0f);
-    /* A seam function (framework/seam.h): a trace replays part 4's roulette from the state. */
     rng before = *r;
     float v = (float)(rng_u32(r) >> 8) * (1.0f / 16777216.0f);
     trace_rng(before, v);
     return v;
+}
+
+/* 24 random bits scaled by 2^-24: exactly representable, so the result is < 1. */
+PL_HOT float rng_uniform(rng *r)
+{
+    if (PL_UNLIKELY(pl_trace != NULL)) return rng_uniform_traced(r);
+    return (float)(rng_u32(r) >> 8) * (1.0f / 16777216.0f);
 }
