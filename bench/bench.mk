@@ -1,9 +1,9 @@
 # Benchmarks: speed figures, never tests. `make bench` runs them all; each prints its figures, and
 # none installs anything or writes a tracked file (bench-bvh's table goes to build/bench/bvh/).
 # BENCH_RUNS=N: runs per figure (median or best, as each says).
-.PHONY: bench bench-bvh bench-references bench-load bench-write bench-transport bench-trace bench-surfaces
+.PHONY: bench bench-bvh bench-references bench-load bench-write bench-transport bench-trace bench-surfaces bench-hotpath
 # bench-grade (the solution graded as a submission) is the course's: course/course.mk, where the tree has it.
-bench: bench-bvh $(if $(wildcard course/course.mk),bench-grade) bench-references bench-load bench-write bench-transport bench-trace bench-surfaces  ## every benchmark (figures, not tests; see bench/RESULTS.md)
+bench: bench-hotpath bench-bvh $(if $(wildcard course/course.mk),bench-grade) bench-references bench-load bench-write bench-transport bench-trace bench-surfaces  ## every benchmark (figures, not tests; see bench/RESULTS.md)
 
 # ---- BVH (part 2): build time, rays per second, whole render; beside Embree when installed -------
 #   Embree (Debian's libembree-dev, used only here) ships no pkg-config file, so its header is the
@@ -60,6 +60,17 @@ bench-transport: $(BIN)/pathtracer $(BIN)/imgtool  ## parts 3-5 render times and
 
 bench-trace: $(BIN)/pathtracer  ## --trace-pixel's cost, and a render with the trace hooks beside one without (BASE=commit)
 	$(Q)sh bench/trace.sh
+
+# ---- the hot path: this tree's renders beside a pinned earlier commit's, as ratios -----------------
+# Run it before any change to the hot path lands (traversal, counters, the seam's wrappers, the
+# trace's hooks, the random streams): a ratio above 1 is time the change added to every render.
+# a2f564c is the last commit before the bookkeeping (trace hooks, checks, surface offsets) came.
+HOTPATH_BASE ?= a2f564c
+bench-hotpath: $(BIN)/pathtracer  ## the course's renders beside HOTPATH_BASE's, as ratios (run before a hot-path change lands)
+	@echo "== this tree beside $(HOTPATH_BASE): medians of $(BENCH_RUNS) alternating runs, ratio new / old"
+	@sh bench/against.sh $(HOTPATH_BASE) $(BENCH_RUNS) scenes/cornell_bunny.dae -q --cs184-camera -t 2 -r 480 360 -s 64 -l 4 -m 5 -a 32 0.05
+	@sh bench/against.sh $(HOTPATH_BASE) $(BENCH_RUNS) scenes/cornell_spheres.dae -q -t 2 -r 480 360 -s 16 -l 4 -m 1
+	@sh bench/against.sh $(HOTPATH_BASE) $(BENCH_RUNS) bench/data/cornell_bunny_58k.dae -q --normals -t 2 -r 800 600 -s 1
 
 # ---- leaving surfaces (spawn.h): what the offsets cost a render, beside the commit before them ----
 SURFACES_BASE ?= e179730

@@ -34,10 +34,15 @@ static void seam_message(const char *log, char *out, size_t size)
 
 /* The subject, in a helper process (grade_run waits for its child, and the judge must read at the
  * same time): the submission's code, contained, its records on fd 3, its output in its log only. */
-static pid_t start_subject(const char *tree, int n, const char *name, const char *dir, int k, int record_fd)
+static pid_t start_subject(const char *tree, int n, const char *name, const char *dir, int k, int record_fd,
+                           int judge_fd)
 {
     pid_t helper = fork();
     if (helper != 0) return helper;
+    /* The judge's end of the pipe is the judge's alone: held open here too, a subject that wrote what
+     * the judge refused would block on a full pipe until its timeout (120 s a test), where with the
+     * judge gone its next write fails at once. */
+    close(judge_fd);
     /* The subject's orphans (a setsid grandchild) come to this helper, whose grade_run kills them. */
     sandbox_adopt_orphans();
     char bin[4200], log[4200], filter[200];
@@ -64,7 +69,7 @@ static void run_test(const grade_env *env, const char *tree, const char *judge, 
     int fds[2];
     grade_run_result rr = {.status = -1};
     if (grade_pipe(fds)) {
-        pid_t helper = start_subject(tree, n, name, dir, k, fds[1]);
+        pid_t helper = start_subject(tree, n, name, dir, k, fds[1], fds[0]);
         close(fds[1]);
         char *envv[] = {filter, "PL_SEAM_FD=0", "CMOCKA_MESSAGE_OUTPUT=xml", xml_env, NULL}, *argv[] = {(char *)judge, NULL};
         /* The judge is the course's code, but it parses what the subject sent: bounded like it. */
