@@ -97,7 +97,9 @@ static void find_hint(verdict *v, const verdict_image *cand, const verdict_image
      * an emitter directly holds its Le, which no BSDF or pdf scales, so on a Cornell box the image's
      * ratio for a missing 1/pi is about 1.8, not pi. Emitters are the image's brightest pixels: those
      * within a quarter of the brightest are left out (a scene with no visible emitter only loses
-     * its brightest pixels, whose ratio is the same as the rest's). */
+     * its brightest pixels, whose ratio is the same as the rest's), and so are pixels the reference
+     * saw the same in every sample (zero variance, when known): a dimmer emitter beside a bright one
+     * (cornell_two_lights) is constant over its pixels, and no surface lit by sampling is. */
     double brightest = 0.0, sum_c[3] = {0, 0, 0}, sum_r[3] = {0, 0, 0}, ratio[3];
     for (long i = 0; i < (long)ref->width * ref->height; i++) {
         const float *r = ref->rgb + 3 * i;
@@ -106,7 +108,9 @@ static void find_hint(verdict *v, const verdict_image *cand, const verdict_image
     for (long i = 0; i < (long)ref->width * ref->height; i++) {
         const float *r = ref->rgb + 3 * i, *c = cand->rgb + 3 * i;
         double rs = (double)r[0] + r[1] + r[2];
-        if (!(rs <= 0.25 * brightest) || !isfinite(c[0] + c[1] + c[2])) continue;
+        bool constant = ref->var && rs > 0.0 && ref->var[3 * i] == 0.0f && ref->var[3 * i + 1] == 0.0f &&
+                        ref->var[3 * i + 2] == 0.0f;
+        if (!(rs <= 0.25 * brightest) || constant || !isfinite(c[0] + c[1] + c[2])) continue;
         for (int ch = 0; ch < 3; ch++) sum_c[ch] += c[ch], sum_r[ch] += r[ch];
     }
     for (int ch = 0; ch < 3; ch++) ratio[ch] = sum_r[ch] > 0.0 ? sum_c[ch] / sum_r[ch] : NAN;
