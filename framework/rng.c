@@ -40,16 +40,15 @@ PL_HOT uint32_t rng_u32(rng *r)
     return (xorshifted >> rot) | (xorshifted << ((-rot) & 31u));
 }
 
-/* A seam function (framework/seam.h): a trace replays part 4's roulette from the state. Out of the
- * hot path: only a traced pixel takes it. */
+/* A seam function (framework/seam.h): a trace replays part 4's BSDF sample from the values. Out of
+ * the hot path: only a traced pixel takes it. */
 #if defined(__GNUC__)
 __attribute__((noinline, cold))
 #endif
 static float rng_uniform_traced(rng *r)
 {
-    rng before = *r;
     float v = (float)(rng_u32(r) >> 8) * (1.0f / 16777216.0f);
-    trace_rng(before, v);
+    trace_rng(v);
     return v;
 }
 

@@ -53,15 +53,16 @@ typedef struct {
  * say it should go, compared with what the part returns. */
 typedef struct {
     bool active;
-    int bounce;             /* one_bounce_radiance calls so far: the vertex being lit */
+    int bounce;             /* the vertex the path is at: 1 at h, one more for each bounce ray (a part
+                               may skip a vertex's direct light, -o 0: the count is the rays') */
     rgb beta;               /* throughput of the vertex being lit */
     rgb expected;           /* the sum of what each bounce added */
     ray cur;                /* the ray that reached the vertex, and its hit */
     hit at;
-    int draws;              /* random numbers drawn since the vertex's direct light returned */
-    rng state[4];           /* the generator before each of them */
-    float value[4];
-    bool bounced;           /* a bounce ray left since then */
+    int draws;              /* random numbers drawn at this vertex since it was reached or its direct
+                               light returned: the BSDF sample's two, then the roulette's */
+    float value[4];         /* their values (the BSDF sample's replay reads the first two) */
+    bool gambled;           /* roulette could have ended the path somewhere: the sum is not checked */
 } trace_path;
 
 /* The replay of one direct_importance call: the light samples' contributions. */
@@ -205,7 +206,6 @@ void trace_enter(pl_seam_id fn, const render_ctx *ctx, const ray *r, const hit *
 {
     trace_log *t = pl_trace;
     if (fn == PL_SEAM_one_bounce_radiance && t->path.active && in(t, PL_SEAM_at_least_one_bounce_radiance)) {
-        t->path.bounce++;
         emit(t, "bounce", json_pack("{s:i, s:o}", "bounce", t->path.bounce, "throughput", jrgb(t->path.beta)),
              "bounce %d: direct light at this vertex, throughput " V3, t->path.bounce, RGB(t->path.beta));
     }
@@ -219,7 +219,7 @@ void trace_enter(pl_seam_id fn, const render_ctx *ctx, const ray *r, const hit *
     trace_frame *f = &t->stack[t->depth++];
     *f = (trace_frame){fn, ctx, *r, *h, pl_todo_count()};
     if (fn == PL_SEAM_at_least_one_bounce_radiance)
-        t->path = (trace_path){.active = true, .beta = rgb_gray(1.0f), .cur = *r, .at = *h};
+        t->path = (trace_path){.active = true, .bounce = 1, .beta = rgb_gray(1.0f), .cur = *r, .at = *h};
     if (fn == PL_SEAM_direct_importance || fn == PL_SEAM_direct_hemisphere)
         t->direct = (trace_direct){rgb_gray(0.0f), rgb_gray(0.0f)};
 }
@@ -275,7 +275,6 @@ rgb trace_leave(pl_seam_id fn, rgb L)
         emit(t, "added", json_pack("{s:i, s:o, s:b}", "bounce", p->bounce, "added", jrgb(added), "kept", kept),
              "bounce %d adds throughput x direct = " V3 "%s", p->bounce, RGB(added), kept ? "" : " (not kept: -o 0)");
         p->draws = 0;
-        p->bounced = false;
     }
     return L;
 }
@@ -458,7 +457,8 @@ void trace_light(const light *l, vec3 p, vec2 u, bool ok, const light_sample *ls
         frame sf = shading_frame(&f->r, &f->h);
         vec3 wo = frame_to_local(&sf, vec3_neg(f->r.d)), wi = frame_to_local(&sf, ls->wi);
         cosine = wi.z;
-        int n = light_is_delta(l) ? 1 : (f->ctx->opts->light_samples > 0 ? f->ctx->opts->light_samples : 1);
+        /* The samples this vertex takes per light: -l at the first vertex, one deeper (render.h). */
+        int n = light_is_delta(l) ? 1 : render_light_samples(f->ctx, &f->r);
         ray probe = spawn_ray_to_light(&f->r, &f->h, l, ls);
         visible = !accel_occluded(t->ctx->accel, &probe);
         if (ls->pdf > 0.0f && cosine > 0.0f && f->h.material >= 0 && f->h.material < s->num_materials) {
@@ -482,13 +482,12 @@ void trace_light(const light *l, vec3 p, vec2 u, bool ok, const light_sample *ls
              "than it receives", RGB(bright));
 }
 
-/* A draw from the generator during part 4's path: the first four of each vertex are kept with the
- * state before each, so the trace can replay bsdf_sample_f and russian_roulette on the same numbers. */
-void trace_rng(rng before, float value)
+/* A draw from the generator during part 4's path: the first four of each vertex are kept, so the
+ * trace can replay bsdf_sample_f on the same numbers (and knows whether the roulette drew). */
+void trace_rng(float value)
 {
     trace_path *p = &pl_trace->path;
     if (replaying || !p->active || !in(pl_trace, PL_SEAM_at_least_one_bounce_radiance) || p->draws >= 4) return;
-    p->state[p->draws] = before;
     p->value[p->draws++] = value;
 }
 
@@ -524,28 +523,47 @@ static rgb bsdf_step(trace_log *t, vec3 wo, vec3 wi, const char *how)
     return beta;
 }
 
-/* Replays russian_roulette with the generator as it was before its draw (draw 3 of the vertex). */
+/* Measures russian_roulette's rule at this vertex, whatever its convention (go on when the draw is
+ * below q, or stop when it is below 1 - q: both are correct) and whenever it draws (before or after
+ * the BSDF sample): replayed ROULETTE_DRAWS times with fresh generators, the probability of going on,
+ * against the factor the throughput of a path that goes on is divided by. The mean stays the same
+ * only when the two agree. Returns the throughput of a path that goes on. */
+#define ROULETTE_DRAWS 4096
+
 static rgb roulette(trace_log *t, rgb beta, bool went_on)
 {
     trace_path *p = &t->path;
-    if (p->draws < 3) return beta;
-    rgb after = beta, sure = beta;
-    rng before = p->state[2], zero = {0, 1};  /* a generator whose first draw is exactly 0 */
+    if (p->draws < 3) return beta;  /* two draws for the direction: no roulette at this vertex */
+    rgb after = beta;
+    int goes = 0;
     replaying = true;
-    bool go = russian_roulette(&after, p->bounce + 1, &before);
-    bool go_at_zero = russian_roulette(&sure, p->bounce + 1, &zero);
+    for (int k = 0; k < ROULETTE_DRAWS; k++) {
+        rgb b = beta;
+        rng g = rng_seeded(0x7261636500000000ull + (uint64_t)p->bounce, (uint64_t)k);
+        if (russian_roulette(&b, p->bounce + 1, &g)) goes++, after = b;
+    }
     replaying = false;
-    float q = go_at_zero && rgb_max(sure) > 0.0f ? rgb_max(beta) / rgb_max(sure) : 0.0f;
-    emit(t, "roulette", json_pack("{s:o, s:o, s:b, s:o}", "u", jnum(p->value[2]), "probability", jnum(q), "continue",
-                                  went_on, "throughput", jrgb(went_on ? after : rgb_gray(0))),
-         "Russian roulette before bounce %d: drew %.5g, goes on with probability %.5g -> %s", p->bounce + 1,
-         (double)p->value[2], (double)q, went_on ? "continue" : "stop");
-    if (go != went_on)
-        mark(t, "russian_roulette replayed with the throughput f cos / pdf gives says %s, the path did %s",
-             go ? "continue" : "stop", went_on ? "continue" : "stop");
-    if (!go && q >= 0.9999f && p->value[2] > 0.0f)
-        mark(t, "russian_roulette ends paths but does not divide the throughput of those that go on by its probability");
-    if (went_on && go) emit(t, "throughput", json_pack("{s:o}", "throughput", jrgb(after)), "throughput / probability = " V3, RGB(after));
+    double q = (double)goes / ROULETTE_DRAWS;
+    /* What the throughput of a path that goes on is divided by: before over after. */
+    double divided = goes > 0 && rgb_max(after) > 0.0f ? (double)rgb_max(beta) / rgb_max(after) : NAN;
+    emit(t, "roulette",
+         json_pack("{s:o, s:o, s:b, s:o}", "probability", jnum((float)q), "divided_by", jnum((float)divided), "continue",
+                   went_on, "throughput", jrgb(went_on ? after : rgb_gray(0))),
+         "Russian roulette before bounce %d -> %s; the rule goes on with probability %.3g (measured over %d draws) "
+         "and divides by %.3g", p->bounce + 1, went_on ? "continue" : "stop", q, ROULETTE_DRAWS, goes > 0 ? divided : 1.0);
+    if (went_on && goes == 0)
+        mark(t, "the path went on, but russian_roulette replayed with this throughput and depth ends every path");
+    /* Five standard errors of the measured probability, and the draws' own step. */
+    double slack = 5.0 * sqrt(q * (1.0 - q) / ROULETTE_DRAWS) + 2.0 / ROULETTE_DRAWS;
+    p->gambled = p->gambled || goes < ROULETTE_DRAWS;
+    if (goes > 0 && isfinite(divided) && fabs(q - divided) > slack) {
+        if (divided > 0.9999 && q < 1.0 - slack)
+            mark(t, "russian_roulette ends paths but does not divide the throughput of those that go on by its probability");
+        else
+            mark(t, "russian_roulette goes on with probability %.3g but divides the throughput by %.3g: the mean "
+                 "changes unless the two are equal (handout/part4.md, 4.2)", q, divided);
+    }
+    if (went_on) emit(t, "throughput", json_pack("{s:o}", "throughput", jrgb(after)), "throughput / probability = " V3, RGB(after));
     return after;
 }
 
@@ -556,14 +574,15 @@ static void bounce_ray(trace_log *t, const ray *r)
     frame sf = shading_frame(&p->cur, &p->at);
     vec3 wo = frame_to_local(&sf, vec3_neg(p->cur.d)), wi = frame_to_local(&sf, r->d);
     p->beta = roulette(t, bsdf_step(t, wo, wi, ""), true);
-    p->bounced = true;
+    p->bounce++;  /* the ray reaches the next vertex: nothing drawn there yet */
+    p->draws = 0;
 }
 
 /* The path ended: its last, unused direction replayed, then its sum against what the part returned. */
 static void path_end(trace_log *t, rgb L)
 {
     trace_path *p = &t->path;
-    if (!p->bounced && p->draws >= 2 && material_at(t, &p->at)) {
+    if (p->draws >= 2 && material_at(t, &p->at)) {
         /* The path ended after drawing its next direction: replay bsdf_sample_f with those numbers. */
         frame sf = shading_frame(&p->cur, &p->at);
         vec3 wo = frame_to_local(&sf, vec3_neg(p->cur.d)), wi;
@@ -575,6 +594,15 @@ static void path_end(trace_log *t, rgb L)
         roulette(t, beta, false);
     }
     p->active = false;
+    /* The throughput a part hands russian_roulette is its own choice (the path's, or this bounce's
+     * alone: CS184's recursion), and so is what it divides by: once roulette played, the trace's sum
+     * is one correct answer of several. Its rule was checked at each vertex above. */
+    if (p->gambled) {
+        emit(t, "unchecked", json_pack("{s:o}", "expected", jrgb(p->expected)),
+             "the bounces add up to " V3 " by the path's throughput; not checked, roulette played on this path",
+             RGB(p->expected));
+        return;
+    }
     if (pl_todo_count() == t->stack[t->depth - 1].todo_before && !rgb_close(L, p->expected))
         mark(t, "the bounces add up to " V3 " but at_least_one_bounce_radiance returned " V3
              ": the throughput is not the product of f cos / pdf over the roulette's probabilities", RGB(p->expected), RGB(L));

@@ -54,6 +54,6 @@ bool trace_converged(int n, double s1, double s2, float tol, bool verdict);
 bool trace_intersect(const render_ctx *ctx, ray *r, hit *h);
 bool trace_occluded(const render_ctx *ctx, const ray *r);
 void trace_light(const light *l, vec3 p, vec2 u, bool ok, const light_sample *ls);
-void trace_rng(rng before, float value);
+void trace_rng(float value);
 
 #endif

@@ -4,7 +4,11 @@
 # catalogued student bug, a trace command and the "!!" line the bug must produce in it. The patch is
 # applied to a scratch copy (as course/mutants/run.sh does), bin/pathtracer built there, and the same
 # command run on the solution must print no "!!" line at all (a mark that fires on correct code is a
-# defect too). Last, the grader's pointer: a failing case's --trace-pixel command shows the bug.
+# defect too). Then the same for correct code written differently: the solution and each of parts 3
+# and 4's correct alternatives (course/alternatives: other draw orders, roulette conventions, a
+# recursion) traced over a sweep of renders (-o 0 and -o 1, -H, one and several light samples, every
+# course scene) print no "!!" line. Last, the grader's pointer: a failing case's --trace-pixel command
+# shows the bug.
 # Usage: course/mutants/trace.sh           (make trace-mutants)
 set -u
 root=$(cd "$(dirname "$0")/../.." && pwd)
@@ -24,6 +28,7 @@ part3-shadow-ray-hits-light|-r 64 48 -m 1 --trace-pixel 32 30 scenes/cornell_sph
 part3-hemisphere-divides-by-light-samples-only|-r 64 48 -s 128 -m 1 -H -l 2 --trace-pixel 30 12 scenes/cornell_two_lights.dae|the hemisphere samples add up to
 part3-shadow-ray-from-raw-hit-point|-r 160 120 -s 64 -m 1 -l 4 --seed 160154358618 --trace-pixel 95 97 scenes/cornell_grazing.dae|the surface it starts on
 part4-no-roulette-compensation|-r 64 48 -s 16 -m 8 --trace-pixel 20 10 scenes/cornell_spheres.dae|does not divide the throughput
+part4-roulette-test-inverted|-r 64 48 -s 16 -m 8 --trace-pixel 20 10 scenes/cornell_spheres.dae|but divides the throughput by
 part5-standard-deviation-not-error|-r 64 48 -s 64 -l 4 -a 8 0.1 -m 1 --trace-pixel 32 30 scenes/cornell_spheres.dae|adaptive_converged says go on'
 echo "$rows" | while IFS='|' read -r name flags expect; do
     dir="$scratch/$(echo "$name" | tr ':/' '__')"
@@ -47,6 +52,36 @@ echo "$rows" | while IFS='|' read -r name flags expect; do
     echo "marked  $name: $(echo "$line" | sed 's/^ *//' | cut -c 1-110)"
 done || failed=1
 [ $failed -eq 0 ] && echo "trace marks: every mutant marked, no mark on the solution"
+
+# Correct code, traced widely: no mark anywhere.
+sweep='-m 1 -l 4|-m 1 -l 4 -H|-m 2 -o 0 -l 1|-m 3 -o 0 -l 4|-m 5 -l 2|-m 5 -l 4 -H|-m 4 -o 0 --no-rr -l 2|-m 8 -o 1 -l 1'
+scenes='cornell_spheres cornell_two_lights lights_point_dir cornell_grazing'
+for alt in solution "$root"/course/alternatives/part3-*.patch "$root"/course/alternatives/part4-*.patch; do
+    name=$(basename "$alt" .patch) dir=$root
+    if [ "$alt" != solution ]; then
+        dir="$scratch/alt-$name"
+        rm -rf "$dir" && mkdir -p "$dir"
+        (cd "$root" && cp -a Makefile framework parts tests scenes third_party "$dir"/)
+        [ -d "$root/build/release" ] && mkdir -p "$dir/build" && cp -a "$root/build/release" "$dir/build/"
+        if ! patch -s -p1 -d "$dir" < "$alt"; then echo "BROKEN  $name: the patch no longer applies"; failed=1; continue; fi
+        touch $(sed -n 's/^+++ b\///p' "$alt" | sed "s|^|$dir/|")
+        if ! make -C "$dir" --no-print-directory bin/pathtracer > "$dir/log.txt" 2>&1; then echo "BROKEN  $name: does not build"; failed=1; continue; fi
+    fi
+    marks=0 traces=0 first=
+    for scene in $scenes; do
+        for pixel in "20 10" "33 30" "50 40"; do
+            echo "$sweep" | tr '|' '\n' > "$scratch/sweep.txt"
+            while read -r flags; do
+                cmd="$flags -r 64 48 -s 16 --seed 7 --trace-pixel $pixel scenes/$scene.dae"
+                n=$(cd "$dir" && bin/pathtracer $cmd 2>/dev/null | grep -c '^ *!! ')
+                traces=$((traces + 1))
+                [ "$n" = 0 ] || { marks=$((marks + n)); [ -n "$first" ] || first=$cmd; }
+            done < "$scratch/sweep.txt"
+        done
+    done
+    if [ "$marks" = 0 ]; then echo "clean   $name: $traces traces, no mark"
+    else echo "FALSE   $name: $marks marks in $traces traces of correct code, first in bin/pathtracer $first"; failed=1; fi
+done
 
 # The grader points at it: a submission with part3-bsdf-without-pi fails its part 3 image cases, and
 # the first --trace-pixel command results.json names, run in that submission's tree, marks the bug.
