@@ -232,23 +232,81 @@ static void append_trace(const grade_case_result *c, char *text, size_t size)
                  "each as your render computed it (handout: \"Debugging with a trace\"):\n\n```\n%s```\n", c->trace);
 }
 
-/* make grade: under the table, each failing public case's likely cause (the hint the report gives),
- * the seed its trace commands replay and why, and the pixels to trace. */
-static void print_trace_pixels(const grade_result *r, FILE *out)
+/* How many of the part's tasks lost their share. */
+static int tasks_failed(const grade_part_result *p)
 {
-    for (int i = 0; i < r->num_parts; i++)
-        for (int k = 0; k < r->parts[i].num_cases; k++) {
-            const grade_case_result *c = &r->parts[i].cases[k];
+    int n = 0;
+    for (int t = 0; p->spec && t < p->spec->num_tasks; t++) n += p->task_score[t] < p->spec->tasks[t].points;
+    return n;
+}
+
+/* When several tasks failed: one bug can fail another task's tests (4.1's furnace runs your
+ * roulette; 3.4's tests call your bsdf_f), so the student starts from the suite's first failure. */
+static const char *cascade_text(const grade_part_result *p)
+{
+    return tasks_failed(p) > 1 ? "Several tasks failed, but one bug can fail the tests of another task as well (a "
+                                 "task's tests call the part's other functions too: 4.1's furnace runs your "
+                                 "russian_roulette, 3.4's tests your bsdf_f): fix the first failure the suite names, "
+                                 "then run it again."
+                               : "";
+}
+
+/* A failing public case's cause in one line (the report's words): why it did not run; where its
+ * image differs (bad pixels, the whole image's brightness, the block), hint apart; or, for an image
+ * that matches, the figure that failed (samples per pixel, noise, work). */
+static void case_cause(const grade_case_result *c, char *out, size_t size)
+{
+    char text[2048] = "";
+    if (!c->ran) snprintf(text, sizeof text, "did not run: %s", c->reason);
+    else if (!c->v.pass) {
+        verdict v = c->v;
+        v.hint[0] = '\0';  /* printed on a line of its own */
+        where_text(c->spec, &v, text, sizeof text);
+        if (!text[0]) snprintf(text, sizeof text, "the image differs from the reference (see the report)");
+    }
+    else {
+        int len = snprintf(text, sizeof text, "the image matches the reference, but a figure of its render does not:");
+        if (len >= 0 && (size_t)len < sizeof text) figures_text(c, false, text + len, sizeof text - (size_t)len);
+    }
+    snprintf(out, size, "%s", text + (text[0] == ' '));
+}
+
+/* make grade: under the table, what each part lost and why: its failed tasks with their failed
+ * tests, and for each failing public case its cause, its hint, the seed its trace commands replay
+ * and why, and the pixels to trace. */
+static void print_causes(const grade_result *r, FILE *out)
+{
+    for (int i = 0; i < r->num_parts; i++) {
+        const grade_part_result *p = &r->parts[i];
+        for (int t = 0; !p->suite_reason[0] && p->spec && t < p->spec->num_tasks; t++) {
+            const grade_task *k = &p->spec->tasks[t];
+            if (p->task_score[t] >= k->points) continue;
+            fprintf(out, "part %d, task %s (%s): %g / %g points; failed:", p->part, k->task, k->functions, p->task_score[t],
+                    k->points);
+            int shown = 0;
+            for (int j = 0; j < p->num_tests; j++)
+                if (!p->tests[j].passed && grade_task_of(p->spec, p->tests[j].name) == t)
+                    fprintf(out, "%s %s", shown++ ? "," : "", p->tests[j].name);
+            fprintf(out, "%s\n", shown ? "" : " (tests that did not run)");
+        }
+        if (!p->suite_reason[0] && tasks_failed(p) > 1) fprintf(out, "part %d: %s\n", p->part, cascade_text(p));
+        if (p->suite_reason[0]) fprintf(out, "part %d, unit tests: 0 points: %s\n", p->part, p->suite_reason);
+        for (int k = 0; k < p->num_cases; k++) {
+            const grade_case_result *c = &p->cases[k];
             if (c->pass || c->spec->hidden) continue;
-            if (c->ran && c->v.hint[0]) fprintf(out, "part %d, %s: %s\n", r->parts[i].part, c->spec->name, c->v.hint);
+            char cause[2048];
+            case_cause(c, cause, sizeof cause);
+            fprintf(out, "part %d, %s: %s\n", p->part, c->spec->name, cause);
+            if (c->ran && c->v.hint[0]) fprintf(out, "part %d, %s: %s\n", p->part, c->spec->name, c->v.hint);
             if (!c->trace[0]) continue;
             if (c->rendered_twice)
-                fprintf(out, "part %d, %s: rendered twice (the first render, seed %llu, failed; a correct render does that "
-                        "about once in a thousand), so its commands replay the second, seed %llu:\n", r->parts[i].part,
+                fprintf(out, "part %d, %s: rendered twice (the first render, seed %llu, failed, and so did the second: the "
+                        "difference is your code's), so its commands replay the second, seed %llu:\n", p->part,
                         c->spec->name, c->first_seed, c->seed);
-            else fprintf(out, "part %d, %s: the pixels that differ most:\n", r->parts[i].part, c->spec->name);
+            else fprintf(out, "part %d, %s: the pixels that differ most:\n", p->part, c->spec->name);
             fprintf(out, "%s", c->trace);
         }
+    }
 }
 
 /* ---- the terminal table (make grade) ------------------------------------------------------------- */
@@ -271,7 +329,7 @@ void grade_print_table(const grade_result *r, FILE *out)
     fprintf(out, "total%52.1f / %.1f   (seed %llu, %.0f s)\n", total, max, (unsigned long long)r->seed,
             run_seconds(r));
     if (r->unprotected[0]) fprintf(out, "unavailable protections: %s\n", r->unprotected);
-    print_trace_pixels(r, out);
+    print_causes(r, out);
 }
 
 /* ---- one function for every string shown -------------------------------------------------------- */
@@ -320,6 +378,7 @@ static int tasks_text(const grade_part_result *p, char *out, size_t size)
                         k->functions, p->task_score[t], k->points, p->task_passed[t], k->tests,
                         p->task_score[t] < k->points ? " (a task's share is earned when all its tests pass)" : "");
     }
+    if (tasks_failed(p) > 1 && len >= 0 && (size_t)len < size) len += snprintf(out + len, size - len, "\n%s\n", cascade_text(p));
     return len;
 }
 
