@@ -88,8 +88,10 @@ static int figures_text(const grade_case_result *c, bool hidden, char *out, size
                                  ok ? "within" : "more than", 100.0 * GRADE_SPP_TOLERANCE);
         if (!ok && len >= 0 && (size_t)len < size)
             len += snprintf(out + len, size - len, " %s", c->spp > c->course_spp
-                            ? "Pixels stop later than they should: does adaptive_converged ever say yes?"
-                            : "Pixels stop earlier than they should: check the confidence test.");
+                            ? "Pixels stop later than the course's: adaptive_converged says yes too late (is I = 1.96 "
+                              "sqrt(var / n) the mean's error, with var / n and not var alone?)."
+                            : "Pixels stop earlier than the course's: adaptive_converged says yes too early (check I = "
+                              "1.96 sqrt(var / n) <= maxTolerance x mean, on the samples' luminance).");
     }
     if (c->spec->noise_check && len >= 0 && (size_t)len < size) {
         bool ok = c->noise <= GRADE_NOISE_FACTOR;
