@@ -242,14 +242,14 @@ static int tasks_failed(const grade_part_result *p)
     return n;
 }
 
-/* When several tasks failed: one bug can fail another task's tests (4.1's furnace runs your
- * roulette; 3.4's tests call your bsdf_f), so the student starts from the suite's first failure. */
+/* When several tasks failed: one bug can fail another task's tests (3.4's tests call your bsdf_f;
+ * 4.2's furnace runs your path loop), so the student starts from the suite's first failure. */
 static const char *cascade_text(const grade_part_result *p)
 {
     return tasks_failed(p) > 1 ? "Several tasks failed, but one bug can fail the tests of another task as well (a "
-                                 "task's tests call the part's other functions too: 4.1's furnace runs your "
-                                 "russian_roulette, 3.4's tests your bsdf_f): fix the first failure the suite names, "
-                                 "then run it again."
+                                 "task's tests call the part's other functions too: 3.4's tests run your bsdf_f, "
+                                 "4.2's furnace your path loop): fix the first failure the suite names, then run it "
+                                 "again."
                                : "";
 }
 
