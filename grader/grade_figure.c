@@ -66,8 +66,10 @@ void grade_figure_text(const char *in, char *out, size_t size)
             end = stop;
             size_t whole = strspn(p, "0123456789");
             bool wide = (size_t)(end - p) != whole || whole > 4;
-            if (wide) snprintf(shown, sizeof shown, "%.*g", GRADE_FIGURE_DIGITS,
-                               grade_figure(x, GRADE_FIGURE_DIGITS, -1e300, 1e300));
+            double rounded = grade_figure(x, GRADE_FIGURE_DIGITS, -1e300, 1e300);
+            /* A count stays a count: 20000 rays, 11300 pixels, not 2e+04 (the same digits kept). */
+            if (wide && (size_t)(end - p) == whole && whole <= 9) snprintf(shown, sizeof shown, "%.0f", rounded);
+            else if (wide) snprintf(shown, sizeof shown, "%.*g", GRADE_FIGURE_DIGITS, rounded);
             else snprintf(shown, sizeof shown, "%.*s", (int)(end - p), p);
         }
         if (!append(out, size, &used, shown, strlen(shown))) return;

@@ -48,7 +48,10 @@ static void test_figure__a_test_message_shows_rounded_numbers(void **state)
     assert_string_equal(out, "tests/part3/test_direct.c:123: bsdf_f: wrong: expected 0.318, got 0.123 (tolerance 1e-05)");
     /* Wide whole numbers and hexadecimal ones carry bytes too; names with digits stay as they are. */
     grade_figure_text("part2 visited 1234567 nodes of vec3 table, flags 0x1122334455667788 or 0x5", out, sizeof out);
-    assert_string_equal(out, "part2 visited 1.23e+06 nodes of vec3 table, flags 0x... or 0x5");
+    assert_string_equal(out, "part2 visited 1230000 nodes of vec3 table, flags 0x... or 0x5");
+    /* A count stays written as a count (the same three digits); a longer one goes to the exponent. */
+    grade_figure_text("30 of 20000 rays, 11283 of 19200 pixels, 12345678901 bytes", out, sizeof out);
+    assert_string_equal(out, "30 of 20000 rays, 11300 of 19200 pixels, 1.23e+10 bytes");
     /* Cut at a character, never inside one, and never past the buffer. */
     grade_figure_text("\xc3\xa9t\xc3\xa9 1.23456", out, 4);
     assert_string_equal(out, "\xc3\xa9t");
