@@ -73,9 +73,9 @@ static void compare_images_of_scene(const scene *s, const char *path)
     image_free(&with);
     image_free(&without);
     if (differ)
-        PL_FAIL("%s: %d of %d pixels differ; first at column %d, row %d from the top: BVH rgb(%g, %g, %g), "
-                "linear scan rgb(%g, %g, %g)", path, differ, IMAGE_WIDTH * IMAGE_HEIGHT,
-                first % IMAGE_WIDTH, first / IMAGE_WIDTH, a.r, a.g, a.b, b.r, b.g, b.b);
+        PL_FAIL("%s: %d of %d pixels differ; first at x=%d y=%d (from the bottom-left, like the grader's pixels): "
+                "BVH rgb(%g, %g, %g), linear scan rgb(%g, %g, %g)", path, differ, IMAGE_WIDTH * IMAGE_HEIGHT,
+                first % IMAGE_WIDTH, IMAGE_HEIGHT - 1 - first / IMAGE_WIDTH, a.r, a.g, a.b, b.r, b.g, b.b);
 }
 
 static void test_bvh__normal_images_equal_the_linear_scan_on_shipped_scenes(void **state)
