@@ -20,6 +20,7 @@
 #include "grade_image.h"
 #include "grade_refs.h"
 #include "grade_tree.h"
+#include <dirent.h>
 #include <errno.h>
 #include <math.h>
 #include <stdio.h>
@@ -125,6 +126,22 @@ static bool sandbox_confines(const grade_sandbox *s)
 }
 
 /* mkdir -p: the default out/grade may be the first thing made under out/. */
+/* The report folder holds this run's pages and pictures only: the PNGs and pages an earlier run left
+ * (another part's cases) are removed, regular files directly inside it and nothing else. */
+static void clear_report(const char *report)
+{
+    DIR *d = opendir(report);
+    for (struct dirent *e; d && (e = readdir(d));) {
+        size_t n = strlen(e->d_name);
+        char path[4400];
+        struct stat st;
+        bool page = (n > 4 && !strcmp(e->d_name + n - 4, ".png")) || (n > 5 && !strcmp(e->d_name + n - 5, ".html"));
+        if (page && grade_path(path, sizeof path, "%s/%s", report, e->d_name) && lstat(path, &st) == 0 && S_ISREG(st.st_mode))
+            unlink(path);
+    }
+    if (d) closedir(d);
+}
+
 static bool make_dir(const char *path)
 {
     char buf[4096];
@@ -305,6 +322,7 @@ static const char *open_folders(const grade_args *a, grade_folders *f)
     if (!grade_path(f->work, sizeof f->work, "%s/work", f->outdir) ||
         !grade_path(f->report, sizeof f->report, "%s/report", f->outdir) || !make_dir(f->work) || !make_dir(f->report))
         return "--out: cannot create its work/ and report/ folders";
+    clear_report(f->report);
     f->submission[0] = '\0';
     if (!a->submission) return NULL;
     if (!realpath(a->submission, real)) return "--submission: no such folder";
