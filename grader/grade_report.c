@@ -163,7 +163,11 @@ static int where_text(const grade_case *k, const verdict *v, char *out, size_t s
         len = snprintf(out, size, " The whole image's %s channel is %s than the reference (t = %+.3g).",
                        channel_names[v->worst_channel % 3], v->worst_t > 0 ? "brighter" : "darker",
                        public_figure(v->worst_t, -GRADE_T_MAX, GRADE_T_MAX));
-    if (!v->pass && v->hint[0] && len >= 0 && (size_t)len < size) len += snprintf(out + len, size - len, " Hint: %s.", v->hint);
+    /* The hint's factor is measured where it is telling (verdict.c: pixels that see no light directly),
+     * so it may differ from the whole image's ratio above: said so, or the two read as a contradiction. */
+    if (!v->pass && v->hint[0] && len >= 0 && (size_t)len < size)
+        len += snprintf(out + len, size - len, " Hint%s: %s.",
+                        strncmp(v->hint, "about ", 6) ? "" : ", from the pixels that do not see a light directly", v->hint);
     return len;
 }
 
