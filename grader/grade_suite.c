@@ -187,7 +187,7 @@ bool grade_suite_read(const char *dir, const grade_test_list *order, grade_part_
             char path[4400];
             grade_path(path, sizeof path, "%s/%s", dir, n);
             suite_file *f = &files[count];
-            snprintf(f->name, sizeof f->name, "%s", n);
+            memcpy(f->name, n, len + 1);  /* len < sizeof f->name, checked above */
             if ((f->doc = parse_file(path, reason, sizeof reason))) {
                 f->rank = GRADE_MAX_TESTS;
                 rank_tests(xmlDocGetRootElement(f->doc), order, &f->rank);

@@ -44,7 +44,7 @@ typedef struct {
     bvh b;
     work_check check;
     bool built, checked;
-    char broken[512];  /* why its tree cannot be used: every test that shares it fails with this */
+    char broken[PL_DIAG_MSG_MAX + 128];  /* why its tree cannot be used: every test sharing it fails so */
 } sized_tree;
 static sized_tree trees[3];
 static const long TREE_SIZES[3] = {10000, 1000000, 10000};
