@@ -40,21 +40,12 @@ PL_HOT uint32_t rng_u32(rng *r)
     return (xorshifted >> rot) | (xorshifted << ((-rot) & 31u));
 }
 
-/* A seam function (framework/seam.h): a trace replays part 4's BSDF sample from the values. Out of
- * the hot path: only a traced pixel takes it. */
-#if defined(__GNUC__)
-__attribute__((noinline, cold))
-#endif
-static float rng_uniform_traced(rng *r)
-{
-    float v = (float)(rng_u32(r) >> 8) * (1.0f / 16777216.0f);
-    trace_rng(v);
-    return v;
-}
-
-/* 24 random bits scaled by 2^-24: exactly representable, so the result is < 1. */
+/* 24 random bits scaled by 2^-24: exactly representable, so the result is < 1. A seam function
+ * (framework/seam.h): under a trace the value is reported, so the trace can replay part 4's BSDF
+ * sample from it; a render only pays the (predicted) test. */
 PL_HOT float rng_uniform(rng *r)
 {
-    if (PL_UNLIKELY(pl_trace != NULL)) return rng_uniform_traced(r);
-    return (float)(rng_u32(r) >> 8) * (1.0f / 16777216.0f);
+    float v = (float)(rng_u32(r) >> 8) * (1.0f / 16777216.0f);
+    if (PL_UNLIKELY(pl_trace != NULL)) trace_rng(v);
+    return v;
 }

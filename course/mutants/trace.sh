@@ -30,21 +30,34 @@ part3-shadow-ray-from-raw-hit-point|-r 160 120 -s 64 -m 1 -l 4 --seed 1601543586
 part4-no-roulette-compensation|-r 64 48 -s 16 -m 8 --trace-pixel 20 10 scenes/cornell_spheres.dae|does not divide the throughput
 part4-roulette-test-inverted|-r 64 48 -s 16 -m 8 --trace-pixel 20 10 scenes/cornell_spheres.dae|but divides the throughput by
 part5-standard-deviation-not-error|-r 64 48 -s 64 -l 4 -a 8 0.1 -m 1 --trace-pixel 32 30 scenes/cornell_spheres.dae|adaptive_converged says go on'
+# A scratch copy of the tree in $1 (the release objects reused: make rebuilds what changes).
+fresh_copy() {
+    rm -rf "$1" && mkdir -p "$1"
+    (cd "$root" && cp -a Makefile framework parts tests scenes third_party "$1"/)
+    [ -d "$root/build/release" ] && mkdir -p "$1/build" && cp -a "$root/build/release" "$1/build/"
+    return 0
+}
+# Applies patch $2 to the copy in $1 (its files dated now) and builds bin/pathtracer there; says
+# BROKEN with the reason and fails otherwise.
+patch_and_build() {
+    if ! patch -s -p1 -d "$1" < "$2"; then echo "BROKEN  $(basename "$2" .patch): the patch no longer applies"; return 1; fi
+    touch $(sed -n 's/^+++ b\///p' "$2" | sed "s|^|$1/|")
+    build "$1" "$(basename "$2" .patch)"
+}
+build() {
+    make -C "$1" --no-print-directory bin/pathtracer > "$1/log.txt" 2>&1 || { echo "BROKEN  $2: does not build"; return 1; }
+}
 echo "$rows" | while IFS='|' read -r name flags expect; do
     dir="$scratch/$(echo "$name" | tr ':/' '__')"
-    rm -rf "$dir"
-    mkdir -p "$dir"
-    (cd "$root" && cp -a Makefile framework parts tests scenes third_party "$dir"/)
-    [ -d "$root/build/release" ] && mkdir -p "$dir/build" && cp -a "$root/build/release" "$dir/build/"
+    fresh_copy "$dir"
     case "$name" in
     stub:*)
         file=${name#stub:}
-        "$root/bin/strip_solutions" "$root/$file" "$dir/$file" || { echo "BROKEN  $name: cannot strip $file"; exit 1; } ;;
+        "$root/bin/strip_solutions" "$root/$file" "$dir/$file" || { echo "BROKEN  $name: cannot strip $file"; exit 1; }
+        build "$dir" "$name" || exit 1 ;;
     *)
-        if ! patch -s -p1 -d "$dir" < "$root/course/mutants/$name.patch"; then echo "BROKEN  $name: the patch no longer applies"; exit 1; fi
-        touch $(sed -n 's/^+++ b\///p' "$root/course/mutants/$name.patch" | sed "s|^|$dir/|") ;;
+        patch_and_build "$dir" "$root/course/mutants/$name.patch" || exit 1 ;;
     esac
-    if ! make -C "$dir" --no-print-directory bin/pathtracer > "$dir/log.txt" 2>&1; then echo "BROKEN  $name: does not build"; exit 1; fi
     clean=$(cd "$root" && bin/pathtracer $flags 2>/dev/null | grep -c '^ *!! ')
     line=$(cd "$dir" && bin/pathtracer $flags 2>/dev/null | grep -m 1 -F "$expect")
     if [ "$clean" != 0 ]; then echo "FALSE   $name: the solution's trace has $clean marks: bin/pathtracer $flags"; exit 1; fi
@@ -60,12 +73,8 @@ for alt in solution "$root"/course/alternatives/part3-*.patch "$root"/course/alt
     name=$(basename "$alt" .patch) dir=$root
     if [ "$alt" != solution ]; then
         dir="$scratch/alt-$name"
-        rm -rf "$dir" && mkdir -p "$dir"
-        (cd "$root" && cp -a Makefile framework parts tests scenes third_party "$dir"/)
-        [ -d "$root/build/release" ] && mkdir -p "$dir/build" && cp -a "$root/build/release" "$dir/build/"
-        if ! patch -s -p1 -d "$dir" < "$alt"; then echo "BROKEN  $name: the patch no longer applies"; failed=1; continue; fi
-        touch $(sed -n 's/^+++ b\///p' "$alt" | sed "s|^|$dir/|")
-        if ! make -C "$dir" --no-print-directory bin/pathtracer > "$dir/log.txt" 2>&1; then echo "BROKEN  $name: does not build"; failed=1; continue; fi
+        fresh_copy "$dir"
+        patch_and_build "$dir" "$alt" || { failed=1; continue; }
     fi
     marks=0 traces=0 first=
     for scene in $scenes; do
