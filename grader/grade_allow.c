@@ -34,6 +34,8 @@ static const char *const allowed_framework[] = {
     "render_intersect", "render_occluded", "one_bounce_radiance", "radiance_estimate", "render_light_samples",
     /* leaving a surface: offset origins for bounce and shadow rays (spawn.h) */
     "spawn_ray", "spawn_ray_to_light",
+    /* independent work on every core (parallel.h): the one way part code may use threads */
+    "parallel_for",
     /* stubs and statuses: PL_TODO and friends (todo.h), a failure with its message (status.h) */
     "pl_todo_report", "pl_fail", "pl_warn", "pl_status_name", "pl_diag_default",
     NULL};

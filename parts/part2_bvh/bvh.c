@@ -2,7 +2,9 @@
 #include "part2.h"
 #include <float.h>
 #include <stdlib.h>
+#include <string.h>
 #include "../../framework/todo.h"
+#include "../../framework/parallel.h"
 
 /* BEGIN SOLUTION */
 /* ---- Slab test ------------------------------------------------------------------------------ */
@@ -90,18 +92,32 @@ bool aabb_intersect(const aabb *b, const ray *r, float *t_enter, float *t_exit)
  * primitive per level on pathological input, and halving keeps every tree within BVH_MAX_DEPTH
  * (32 + 31 halvings of at most 2^31 primitives). Real scenes never get this deep. */
 #define SAH_MAX_DEPTH 32
+/* The top of the tree is split on one thread until it has this many subtrees (or none is worth a
+ * thread); the subtrees are then built side by side (handout/part2.md, "Making it fast"). A fixed
+ * count, not the number of cores, so the tree is the same on every machine. */
+#define BUILD_SUBTREES 8
+#define BUILD_SUBTREE_MIN 4096  /* primitives below which a subtree is not split off for a thread */
 
-typedef struct {
-    const aabb *prim_box;  /* bounds of each scene primitive */
-    const vec3 *centroid;  /* centre of each primitive's bounds: what the bins sort by */
-    int max_leaf_size;
-} build_input;
+/* One primitive as the build sees it: its bounds and its scene index side by side, so each pass
+ * over a node reads memory in order, and partitioning moves the records themselves. */
+typedef struct { aabb box; int prim; } build_prim;
 
-/* A node whose box and children are still to be made: it covers prim_index[begin .. end - 1]. */
-typedef struct { int node, begin, end, depth; } build_task;
+/* Centre of a primitive's bounds along one axis: what the bins sort by. */
+static inline float build_centroid(const build_prim *p, int axis)
+{
+    return 0.5f * (vec3_get(p->box.min, axis) + vec3_get(p->box.max, axis));
+}
 
-/* The best split found: primitives whose centroid falls in bins 0 .. bin go left. */
-typedef struct { int axis, bin; float cost; } sah_split;
+/* A node whose box is known but whose children are still to be made: it covers
+ * prims[begin .. end - 1]; cbox bounds their centroids, which the bins divide. */
+typedef struct { int node, begin, end, depth; aabb box, cbox; } build_task;
+
+/* Where a build writes nodes: a flat array, num of them used so far. */
+typedef struct { bvh_node *nodes; int num; } node_array;
+
+/* The best split found: primitives whose centroid falls in bins 0 .. bin go left. The two
+ * children's boxes come out of the bins, so no extra pass over the primitives finds them. */
+typedef struct { int axis, bin; float cost; aabb left, right; } sah_split;
 
 /* Bin of a centroid coordinate c, given the centroids' lower bound lo and SAH_BINS / extent. */
 static inline int sah_bin(float c, float lo, float scale)
@@ -120,11 +136,28 @@ static inline void box_grow(aabb *a, const aabb *b)
     a->min = vec3_make(min_f(a->min.x, b->min.x), min_f(a->min.y, b->min.y), min_f(a->min.z, b->min.z));
     a->max = vec3_make(max_f(a->max.x, b->max.x), max_f(a->max.y, b->max.y), max_f(a->max.z, b->max.z));
 }
+static inline void box_grow_centroid(aabb *a, const build_prim *p)
+{
+    vec3 c = vec3_make(build_centroid(p, 0), build_centroid(p, 1), build_centroid(p, 2));
+    aabb point = {c, c};
+    box_grow(a, &point);
+}
+
+/* The tight box of count primitives, and the box of their centroids. */
+static void build_bounds(const build_prim *prims, int count, aabb *box, aabb *cbox)
+{
+    *box = aabb_empty();
+    *cbox = aabb_empty();
+    for (int i = 0; i < count; i++) {
+        box_grow(box, &prims[i].box);
+        box_grow_centroid(cbox, &prims[i]);
+    }
+}
 
 /* Finds the cheapest binned SAH split of prims[0 .. count - 1] over the centroid bounds cb.
  * The cost is sum(area * count) over both sides, not yet divided by the node's area.
  * Returns false when every centroid sits in one point (no plane separates them). */
-static bool sah_find_split(const build_input *in, const int *prims, int count, aabb cb, sah_split *best)
+static bool sah_find_split(const build_prim *prims, int count, aabb cb, sah_split *best)
 {
     /* Binning: one pass over the primitives fills the bins of all three axes. */
     float lo[3] = {cb.min.x, cb.min.y, cb.min.z}, scale[3];
@@ -136,15 +169,15 @@ static bool sah_find_split(const build_input *in, const int *prims, int count, a
         for (int i = 0; i < SAH_BINS; i++) bin_box[axis][i] = aabb_empty();
     }
     for (int i = 0; i < count; i++) {
-        vec3 c = in->centroid[prims[i]];
-        const aabb *box = &in->prim_box[prims[i]];
-        int bx = sah_bin(c.x, lo[0], scale[0]), by = sah_bin(c.y, lo[1], scale[1]), bz = sah_bin(c.z, lo[2], scale[2]);
+        const build_prim *p = &prims[i];
+        int bx = sah_bin(build_centroid(p, 0), lo[0], scale[0]), by = sah_bin(build_centroid(p, 1), lo[1], scale[1]),
+            bz = sah_bin(build_centroid(p, 2), lo[2], scale[2]);
         bin_count[0][bx]++;
         bin_count[1][by]++;
         bin_count[2][bz]++;
-        box_grow(&bin_box[0][bx], box);
-        box_grow(&bin_box[1][by], box);
-        box_grow(&bin_box[2][bz], box);
+        box_grow(&bin_box[0][bx], &p->box);
+        box_grow(&bin_box[1][by], &p->box);
+        box_grow(&bin_box[2][bz], &p->box);
     }
 
     /* Each plane's cost: its right side swept from the right, then its left side from the left. */
@@ -152,92 +185,145 @@ static bool sah_find_split(const build_input *in, const int *prims, int count, a
     for (int axis = 0; axis < 3; axis++) {
         if (scale[axis] == 0.0f) continue;  /* nothing to separate along this axis */
         float right_cost[SAH_BINS];  /* area * count of bins i .. SAH_BINS - 1 */
+        aabb right_box[SAH_BINS];    /* their union */
         aabb box = aabb_empty();
         int n = 0;
+        float cost_here = INFINITY;  /* an empty side is no split */
         for (int i = SAH_BINS - 1; i > 0; i--) {
-            box_grow(&box, &bin_box[axis][i]);
-            n += bin_count[axis][i];
-            right_cost[i] = n > 0 ? aabb_surface_area(box) * n : INFINITY;  /* empty side: invalid */
+            if (bin_count[axis][i] > 0) {  /* an empty bin changes neither the box nor the cost */
+                box_grow(&box, &bin_box[axis][i]);
+                n += bin_count[axis][i];
+                cost_here = aabb_surface_area(box) * n;
+            }
+            right_box[i] = box;
+            right_cost[i] = cost_here;
         }
         box = aabb_empty();
         n = 0;
         for (int i = 0; i < SAH_BINS - 1; i++) {
+            /* A plane after an empty bin splits like the one before it, at the same cost. */
+            if (bin_count[axis][i] == 0) continue;
             box_grow(&box, &bin_box[axis][i]);
             n += bin_count[axis][i];
-            if (n == 0) continue;
             float cost = aabb_surface_area(box) * n + right_cost[i + 1];
-            if (cost < best->cost) {
-                best->axis = axis;
-                best->bin = i;
-                best->cost = cost;
-            }
+            if (cost < best->cost) *best = (sah_split){axis, i, cost, box, right_box[i + 1]};
         }
     }
     return best->cost < INFINITY;
 }
 
-/* Reorders prims so those left of the split come first; returns how many that is. */
-static int sah_partition(const build_input *in, int *prims, int count, aabb cb, sah_split split)
+/* Reorders prims so those left of the split come first; returns how many that is. Each primitive
+ * is classified once, and its centroid grows the bounds of the side it goes to. */
+static int sah_partition(build_prim *prims, int count, aabb cb, sah_split split, aabb *left_cbox, aabb *right_cbox)
 {
     float lo = vec3_get(cb.min, split.axis);
     float scale = SAH_BINS / (vec3_get(cb.max, split.axis) - lo);
+    *left_cbox = *right_cbox = aabb_empty();
     int left = 0, right = count - 1;
     while (left <= right) {
-        if (sah_bin(vec3_get(in->centroid[prims[left]], split.axis), lo, scale) <= split.bin) {
-            left++;
+        if (sah_bin(build_centroid(&prims[left], split.axis), lo, scale) <= split.bin) {
+            box_grow_centroid(left_cbox, &prims[left++]);
         } else {
-            int tmp = prims[left];
+            build_prim tmp = prims[left];
             prims[left] = prims[right];
             prims[right--] = tmp;
+            box_grow_centroid(right_cbox, &tmp);
         }
     }
     return left;
 }
 
-/* Makes out->nodes[task.node] a leaf or splits it, appending its children's tasks to tasks. */
-static void build_node(const build_input *in, bvh *out, build_task task, build_task *tasks, int *num_tasks)
+/* Makes a->nodes[task.node] a leaf or splits it, appending its children's tasks to tasks. */
+static void build_node(build_prim *all, int max_leaf_size, node_array *a, build_task task, build_task *tasks,
+                       int *num_tasks)
 {
-    bvh_node *node = &out->nodes[task.node];
-    int *prims = out->prim_index + task.begin;
+    bvh_node *node = &a->nodes[task.node];
+    build_prim *prims = all + task.begin;
     int count = task.end - task.begin;
+    node->box = task.box;
 
-    /* Tight box of the primitives, and the box of their centroids that the bins divide. */
-    aabb box = aabb_empty(), cb = aabb_empty();
-    for (int i = 0; i < count; i++) {
-        box_grow(&box, &in->prim_box[prims[i]]);
-        aabb point = {in->centroid[prims[i]], in->centroid[prims[i]]};
-        box_grow(&cb, &point);
-    }
-    node->box = box;
-
+    /* The children's bounds: out of the bins and the partition, or worked out after a halving. */
     int left_count;
+    aabb box[2], cbox[2];
     sah_split split;
-    if (task.depth >= SAH_MAX_DEPTH || !sah_find_split(in, prims, count, cb, &split)) {
-        if (count <= in->max_leaf_size) {
+    if (task.depth >= SAH_MAX_DEPTH || !sah_find_split(prims, count, task.cbox, &split)) {
+        if (count <= max_leaf_size) {
             node->first = task.begin;
             node->count = count;
             return;
         }
         left_count = count / 2;  /* any halving is a valid tree; see SAH_MAX_DEPTH */
+        build_bounds(prims, left_count, &box[0], &cbox[0]);
+        build_bounds(prims + left_count, count - left_count, &box[1], &cbox[1]);
     } else {
         /* Both costs multiplied by the node's area, which also copes with a zero-area node. */
-        float leaf_cost = SAH_COST_INTERSECT * count * aabb_surface_area(box);
-        float split_cost = SAH_COST_TRAVERSE * aabb_surface_area(box) + SAH_COST_INTERSECT * split.cost;
-        if (count <= in->max_leaf_size && leaf_cost <= split_cost) {
+        float leaf_cost = SAH_COST_INTERSECT * count * aabb_surface_area(task.box);
+        float split_cost = SAH_COST_TRAVERSE * aabb_surface_area(task.box) + SAH_COST_INTERSECT * split.cost;
+        if (count <= max_leaf_size && leaf_cost <= split_cost) {
             node->first = task.begin;
             node->count = count;
             return;
         }
-        left_count = sah_partition(in, prims, count, cb, split);
+        left_count = sah_partition(prims, count, task.cbox, split, &cbox[0], &cbox[1]);
+        box[0] = split.left;
+        box[1] = split.right;
     }
 
     /* Children side by side at the end of the array; the left one is built first. */
-    node->first = out->num_nodes;
+    node->first = a->num;
     node->count = 0;
-    out->num_nodes += 2;
+    a->num += 2;
     int mid = task.begin + left_count;
-    tasks[(*num_tasks)++] = (build_task){node->first + 1, mid, task.end, task.depth + 1};
-    tasks[(*num_tasks)++] = (build_task){node->first, task.begin, mid, task.depth + 1};
+    tasks[(*num_tasks)++] = (build_task){node->first + 1, mid, task.end, task.depth + 1, box[1], cbox[1]};
+    tasks[(*num_tasks)++] = (build_task){node->first, task.begin, mid, task.depth + 1, box[0], cbox[0]};
+}
+
+/* One subtree, built depth first into its own array whose node 0 is task's node. Depth first
+ * with an explicit to-do list: it never holds more than one pending sibling per level, and the
+ * depth is bounded (SAH_MAX_DEPTH), so a fixed array suffices. */
+typedef struct {
+    build_prim *prims;
+    int max_leaf_size;
+    build_task task;
+    node_array out;  /* out.nodes == NULL: out of memory */
+} subtree_job;
+
+static void build_subtree(subtree_job *job)
+{
+    int count = job->task.end - job->task.begin;
+    node_array a = {malloc((2 * (size_t)count - 1) * sizeof(bvh_node)), 1};
+    if (a.nodes) {
+        build_task tasks[2 * BVH_MAX_DEPTH + 2];
+        int num_tasks = 0;
+        tasks[num_tasks] = job->task;
+        tasks[num_tasks++].node = 0;
+        while (num_tasks > 0) {
+            build_task task = tasks[--num_tasks];
+            build_node(job->prims, job->max_leaf_size, &a, task, tasks, &num_tasks);
+        }
+        /* Give back the nodes SAH did not need (leaves of several primitives). */
+        bvh_node *fit = realloc(a.nodes, (size_t)a.num * sizeof *fit);
+        if (fit) a.nodes = fit;
+    }
+    job->out = a;
+}
+
+/* parallel_for's job: subtree i of the list. The subtrees are independent (disjoint primitives,
+ * their own arrays), so they can be built in any order, on any thread. */
+static void build_subtree_job(void *jobs, int i) { build_subtree(&((subtree_job *)jobs)[i]); }
+
+/* Copies subtree job's nodes into a: its node 0 onto the node its task named, the rest after
+ * a->num. Child indices inside the subtree move by the same amount; leaves' first indices are
+ * slots of the shared primitive order, and stay. */
+static void stitch_subtree(node_array *a, const subtree_job *job)
+{
+    int shift = a->num - 1;  /* subtree node i >= 1 lands at i + shift */
+    for (int i = 0; i < job->out.num; i++) {
+        bvh_node node = job->out.nodes[i];
+        if (node.count == 0) node.first += shift;
+        a->nodes[i == 0 ? job->task.node : i + shift] = node;
+    }
+    a->num += job->out.num - 1;
 }
 /* END SOLUTION */
 
@@ -259,46 +345,70 @@ pl_status bvh_build(bvh *out, const scene *s, int max_leaf_size)
     int n = scene_prim_count(s);
     if (n == 0) return PL_OK;
 
-    /* A binary tree whose leaves hold at least one primitive has at most 2n - 1 nodes. */
-    size_t max_nodes = 2 * (size_t)n - 1;
-    aabb *prim_box = malloc((size_t)n * sizeof *prim_box);
-    vec3 *centroid = malloc((size_t)n * sizeof *centroid);
-    out->nodes = malloc(max_nodes * sizeof *out->nodes);
-    out->prim_index = malloc((size_t)n * sizeof *out->prim_index);
-    pl_status status = prim_box && centroid && out->nodes && out->prim_index ? PL_OK : PL_ERR_NOMEM;
-    for (int i = 0; i < n && status == PL_OK; i++) {
-        prim_box[i] = scene_prim_bounds(s, i);
-        centroid[i] = aabb_centroid(prim_box[i]);
-        out->prim_index[i] = i;
+    build_prim *prims = malloc((size_t)n * sizeof *prims);
+    if (!prims) return PL_ERR_NOMEM;
+    for (int i = 0; i < n; i++) {
+        prims[i] = (build_prim){scene_prim_bounds(s, i), i};
         /* No bin can hold an infinite or NaN coordinate (the loaders reject them anyway). */
-        if (!vec3_is_finite(prim_box[i].min) || !vec3_is_finite(prim_box[i].max)) status = PL_ERR_INVALID;
-    }
-
-    if (status == PL_OK) {
-        /* Depth first with an explicit to-do list: it never holds more than one pending sibling
-         * per level, and the depth is bounded (SAH_MAX_DEPTH), so a fixed array suffices. */
-        build_input in = {prim_box, centroid, max_leaf_size};
-        build_task tasks[2 * BVH_MAX_DEPTH + 2];
-        int num_tasks = 0;
-        out->num_prims = n;
-        out->num_nodes = 1;
-        tasks[num_tasks++] = (build_task){0, 0, n, 0};
-        while (num_tasks > 0) {
-            build_task task = tasks[--num_tasks];
-            build_node(&in, out, task, tasks, &num_tasks);
+        if (!vec3_is_finite(prims[i].box.min) || !vec3_is_finite(prims[i].box.max)) {
+            free(prims);
+            return PL_ERR_INVALID;
         }
     }
-    free(prim_box);
-    free(centroid);
-    if (status != PL_OK) {
-        bvh_free(out);
-        return status;
+
+    /* The top of the tree, on this thread: the largest pending node is split until there are
+     * BUILD_SUBTREES of them or none is worth a thread. Each split adds two nodes. */
+    bvh_node top_nodes[2 * BUILD_SUBTREES];
+    node_array top = {top_nodes, 1};
+    subtree_job jobs[BUILD_SUBTREES + 1];
+    int num_jobs = 1;
+    jobs[0].task = (build_task){.node = 0, .begin = 0, .end = n, .depth = 0};
+    build_bounds(prims, n, &jobs[0].task.box, &jobs[0].task.cbox);
+    while (num_jobs < BUILD_SUBTREES) {
+        int largest = 0;
+        for (int i = 1; i < num_jobs; i++)
+            if (jobs[i].task.end - jobs[i].task.begin > jobs[largest].task.end - jobs[largest].task.begin) largest = i;
+        if (jobs[largest].task.end - jobs[largest].task.begin < BUILD_SUBTREE_MIN) break;
+        build_task children[2];
+        int num_children = 0;
+        build_node(prims, max_leaf_size, &top, jobs[largest].task, children, &num_children);
+        if (num_children == 0) break;  /* it became a leaf (cannot happen at this size) */
+        /* The node's children take its place in the list (left, then right). */
+        memmove(&jobs[largest + 2], &jobs[largest + 1], (size_t)(num_jobs - largest - 1) * sizeof *jobs);
+        jobs[largest].task = children[1];
+        jobs[largest + 1].task = children[0];
+        num_jobs++;
     }
 
-    /* Give back the nodes SAH did not need (leaves of several primitives). */
-    bvh_node *fit = realloc(out->nodes, (size_t)out->num_nodes * sizeof *fit);
-    if (fit) out->nodes = fit;
-    return PL_OK;
+    /* The subtrees, side by side; then one array: the top nodes, and each subtree's after them. */
+    for (int i = 0; i < num_jobs; i++) {
+        jobs[i].prims = prims;
+        jobs[i].max_leaf_size = max_leaf_size;
+    }
+    parallel_for(num_jobs, build_subtree_job, jobs);
+    size_t total = (size_t)top.num;
+    bool complete = true;
+    for (int i = 0; i < num_jobs; i++) {
+        complete = complete && jobs[i].out.nodes;
+        total += (size_t)jobs[i].out.num - 1;
+    }
+    node_array all = {complete ? malloc(total * sizeof(bvh_node)) : NULL, top.num};
+    out->prim_index = complete ? malloc((size_t)n * sizeof *out->prim_index) : NULL;
+    if (all.nodes && out->prim_index) {
+        memcpy(all.nodes, top.nodes, (size_t)top.num * sizeof *all.nodes);
+        for (int i = 0; i < num_jobs; i++) stitch_subtree(&all, &jobs[i]);
+        for (int i = 0; i < n; i++) out->prim_index[i] = prims[i].prim;
+        out->nodes = all.nodes;
+        out->num_nodes = all.num;
+        out->num_prims = n;
+    } else {
+        free(all.nodes);
+        free(out->prim_index);
+        out->prim_index = NULL;
+    }
+    for (int i = 0; i < num_jobs; i++) free(jobs[i].out.nodes);
+    free(prims);
+    return out->nodes ? PL_OK : PL_ERR_NOMEM;
     /* END SOLUTION */
     /* STUB: *out = (bvh){0}; return PL_TODO("2.2", "bvh_build"); */
 }

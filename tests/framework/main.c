@@ -17,8 +17,9 @@ int output_tests(void);   /* a render's outputs as one unit */
 int lights_tests(void);
 int sampler_tests(void);
 int stats_tests(void);    /* the statistics the tests and the grader share (framework/stats.c) */
-int spawn_tests(void);
-int placement_tests(void);  /* a scene renders the same wherever it sits (framework/dae.c's origin) */    /* leaving a surface: offset ray origins (framework/spawn.c) */
+int spawn_tests(void);      /* leaving a surface: offset ray origins (framework/spawn.c) */
+int placement_tests(void);  /* a scene renders the same wherever it sits (framework/dae.c's origin) */
+int parallel_tests(void);   /* parallel_for: every call once, the work counted for the caller */
 
 int main(void)
 {
@@ -43,5 +44,6 @@ int main(void)
     failed += trace_tests();
     failed += spawn_tests();
     failed += placement_tests();
+    failed += parallel_tests();
     return failed ? 1 : 0;
 }
