@@ -10,29 +10,29 @@ typedef struct {
     void (*job)(void *arg, int i);
     void *arg;
     int count;
-    atomic_int next;       /* the next index nobody has taken */
-    pthread_mutex_t lock;  /* guards work */
-    work_counts work;      /* what the helper threads counted, for the caller */
+    atomic_int next;  /* the next index nobody has taken */
 } parallel_run;
+
+/* One helper thread's share of a run, and what it counted: counters are per thread, so the caller
+ * adds each helper's to its own after the join. */
+typedef struct {
+    parallel_run *run;
+    work_counts work;
+} helper_slot;
 
 static void run_calls(parallel_run *run)
 {
-    for (int i = atomic_fetch_add(&run->next, 1); i < run->count; i = atomic_fetch_add(&run->next, 1))
+    /* Each thread takes one index past the end before it stops; near INT_MAX that wraps (atomic
+     * arithmetic wraps, it is not undefined), so a negative index ends the loop too. */
+    for (int i = atomic_fetch_add(&run->next, 1); i >= 0 && i < run->count; i = atomic_fetch_add(&run->next, 1))
         run->job(run->arg, i);
 }
 
-/* A helper thread: its calls, then its counts handed over (counters are per thread). */
 static void *helper(void *p)
 {
-    parallel_run *run = p;
-    (void)counters_take();  /* a new thread counts from zero; this only makes it plain */
-    run_calls(run);
-    work_counts w = counters_take();
-    pthread_mutex_lock(&run->lock);
-    run->work.rays += w.rays;
-    run->work.node_visits += w.node_visits;
-    run->work.prim_tests += w.prim_tests;
-    pthread_mutex_unlock(&run->lock);
+    helper_slot *slot = p;
+    run_calls(slot->run);
+    slot->work = counters_take();  /* a new thread counts from zero: all of it is this run's */
     return NULL;
 }
 
@@ -45,13 +45,18 @@ int parallel_threads(void)
 void parallel_for(int count, void (*job)(void *arg, int i), void *arg)
 {
     if (count <= 0) return;
-    parallel_run run = {job, arg, count, 0, PTHREAD_MUTEX_INITIALIZER, {0, 0, 0}};
-    int wanted = parallel_threads() < count ? parallel_threads() : count;
-    pthread_t helpers[PARALLEL_MAX_THREADS];
+    parallel_run run = {job, arg, count, 0};
+    int threads = parallel_threads(), wanted = threads < count ? threads : count;
+    pthread_t tid[PARALLEL_MAX_THREADS];
+    helper_slot slots[PARALLEL_MAX_THREADS];
     int started = 0;
-    while (started < wanted - 1 && pthread_create(&helpers[started], NULL, helper, &run) == 0) started++;
-    run_calls(&run);  /* the calling thread works too */
-    for (int i = 0; i < started; i++) pthread_join(helpers[i], NULL);
-    counters_add(run.work);
-    pthread_mutex_destroy(&run.lock);
+    for (; started < wanted - 1; started++) {
+        slots[started] = (helper_slot){&run, {0, 0, 0}};
+        if (pthread_create(&tid[started], NULL, helper, &slots[started]) != 0) break;
+    }
+    run_calls(&run);  /* the calling thread works too; alone when no helper could start */
+    for (int i = 0; i < started; i++) {
+        pthread_join(tid[i], NULL);
+        counters_add(slots[i].work);
+    }
 }
