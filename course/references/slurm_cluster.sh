@@ -62,8 +62,17 @@ CONF
     echo "SLURM_CONF=$SLURM_CONF"
     ;;
 down)
+    # Each daemon is stopped and waited for (10 s at most): slurmctld saves its state as it exits,
+    # and a caller that removes DIR at once would race those writes ("Directory not empty").
     for pid in "$dir/slurmd.pid" "$dir/slurmctld.pid" "$dir/munge/munged.pid"; do
-        [ -f "$pid" ] && kill "$(cat "$pid")" 2>/dev/null || true
+        [ -f "$pid" ] || continue
+        p=$(cat "$pid")
+        kill "$p" 2>/dev/null || continue
+        i=0
+        while kill -0 "$p" 2>/dev/null && [ $i -lt 100 ]; do
+            sleep 0.1
+            i=$((i + 1))
+        done
     done
     ;;
 *)

@@ -21,7 +21,9 @@ fi
 make -s bin/pathtracer bin/references
 
 tmp=$(mktemp -d /tmp/pathlab-slurm.XXXXXX)
-cleanup() { course/references/slurm_cluster.sh down "$tmp/cluster" || true; rm -rf "$tmp"; }
+# The daemons are waited for as they stop; a job step's helper (slurmstepd) may still write for a
+# moment after, so a first removal that finds a directory filling up is tried once more.
+cleanup() { course/references/slurm_cluster.sh down "$tmp/cluster" || true; rm -rf "$tmp" 2>/dev/null || { sleep 1; rm -rf "$tmp"; }; }
 trap cleanup EXIT INT TERM
 eval "$(course/references/slurm_cluster.sh up "$tmp/cluster")"
 export SLURM_CONF
