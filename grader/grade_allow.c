@@ -10,7 +10,8 @@
  * counters_add_*, counters_trace_*: framework/counters.h) could hide the work a BVH does from the
  * work-per-ray verdict; scene builders and the render loops are the framework's to drive, not a task's. What is
  * left is what the tasks need: math, random numbers, samplers, the scene, BVH, light and BSDF
- * accessors, the intersection entry points and the stub helpers. */
+ * accessors, the intersection entry points, the stub helpers, and parallel_for, whose threads the
+ * sandbox confines like the process's own and whose counted work it hands back to the caller. */
 #include "grade_inspect.h"
 #include <stdio.h>
 #include <string.h>
