@@ -125,7 +125,6 @@ static bool sandbox_confines(const grade_sandbox *s)
     return s->no_network;
 }
 
-/* mkdir -p: the default out/grade may be the first thing made under out/. */
 /* The report folder holds this run's pages and pictures only: the PNGs and pages an earlier run left
  * (another part's cases) are removed, regular files directly inside it and nothing else. */
 static void clear_report(const char *report)
@@ -142,6 +141,7 @@ static void clear_report(const char *report)
     if (d) closedir(d);
 }
 
+/* mkdir -p: the default out/grade may be the first thing made under out/. */
 static bool make_dir(const char *path)
 {
     char buf[4096];

@@ -325,6 +325,64 @@ static void stitch_subtree(node_array *a, const subtree_job *job)
     }
     a->num += job->out.num - 1;
 }
+
+/* Primitives a pending task covers. */
+static inline int task_size(const build_task *t) { return t->end - t->begin; }
+
+/* The top of the tree, on this thread: the largest pending node is split (into top; each split
+ * adds two nodes) until there are BUILD_SUBTREES of them or none is worth a thread. Fills jobs with
+ * the pending nodes, left to right, and returns how many. */
+static int split_top(build_prim *prims, int max_leaf_size, build_task root, node_array *top, subtree_job *jobs)
+{
+    int num_jobs = 1;
+    jobs[0].task = root;
+    while (num_jobs < BUILD_SUBTREES) {
+        int largest = 0;
+        for (int i = 1; i < num_jobs; i++)
+            if (task_size(&jobs[i].task) > task_size(&jobs[largest].task)) largest = i;
+        if (task_size(&jobs[largest].task) < BUILD_SUBTREE_MIN) break;
+        build_task children[2];
+        int num_children = 0;
+        build_node(prims, max_leaf_size, top, jobs[largest].task, children, &num_children);
+        if (num_children == 0) break;  /* it became a leaf (cannot happen at this size) */
+        /* The node's children take its place in the list (left, then right). */
+        memmove(&jobs[largest + 2], &jobs[largest + 1], (size_t)(num_jobs - largest - 1) * sizeof *jobs);
+        jobs[largest].task = children[1];
+        jobs[largest + 1].task = children[0];
+        num_jobs++;
+    }
+    for (int i = 0; i < num_jobs; i++) {
+        jobs[i].prims = prims;
+        jobs[i].max_leaf_size = max_leaf_size;
+    }
+    return num_jobs;
+}
+
+/* One node array, the top nodes and each subtree's after them, and prim_index in the records'
+ * final order; frees the subtrees' arrays. PL_ERR_NOMEM (a subtree or this) leaves *out empty. */
+static pl_status assemble_tree(bvh *out, const node_array *top, subtree_job *jobs, int num_jobs,
+                               const build_prim *prims, int n)
+{
+    size_t total = (size_t)top->num;
+    bool complete = true;
+    for (int i = 0; i < num_jobs; i++) {
+        complete = complete && jobs[i].out.nodes;
+        total += (size_t)jobs[i].out.num - 1;
+    }
+    node_array all = {complete ? malloc(total * sizeof(bvh_node)) : NULL, top->num};
+    int *prim_index = complete ? malloc((size_t)n * sizeof *prim_index) : NULL;
+    if (all.nodes && prim_index) {
+        memcpy(all.nodes, top->nodes, (size_t)top->num * sizeof *all.nodes);
+        for (int i = 0; i < num_jobs; i++) stitch_subtree(&all, &jobs[i]);
+        for (int i = 0; i < n; i++) prim_index[i] = prims[i].prim;
+        *out = (bvh){all.nodes, all.num, prim_index, n};
+    } else {
+        free(all.nodes);
+        free(prim_index);
+    }
+    for (int i = 0; i < num_jobs; i++) free(jobs[i].out.nodes);
+    return out->nodes ? PL_OK : PL_ERR_NOMEM;
+}
 /* END SOLUTION */
 
 /* === PART 2 | TASK 2.2 | bvh_build =================================================
@@ -356,59 +414,17 @@ pl_status bvh_build(bvh *out, const scene *s, int max_leaf_size)
         }
     }
 
-    /* The top of the tree, on this thread: the largest pending node is split until there are
-     * BUILD_SUBTREES of them or none is worth a thread. Each split adds two nodes. */
+    /* The top on this thread, the subtrees side by side, then one tree. */
     bvh_node top_nodes[2 * BUILD_SUBTREES];
     node_array top = {top_nodes, 1};
     subtree_job jobs[BUILD_SUBTREES + 1];
-    int num_jobs = 1;
-    jobs[0].task = (build_task){.node = 0, .begin = 0, .end = n, .depth = 0};
-    build_bounds(prims, n, &jobs[0].task.box, &jobs[0].task.cbox);
-    while (num_jobs < BUILD_SUBTREES) {
-        int largest = 0;
-        for (int i = 1; i < num_jobs; i++)
-            if (jobs[i].task.end - jobs[i].task.begin > jobs[largest].task.end - jobs[largest].task.begin) largest = i;
-        if (jobs[largest].task.end - jobs[largest].task.begin < BUILD_SUBTREE_MIN) break;
-        build_task children[2];
-        int num_children = 0;
-        build_node(prims, max_leaf_size, &top, jobs[largest].task, children, &num_children);
-        if (num_children == 0) break;  /* it became a leaf (cannot happen at this size) */
-        /* The node's children take its place in the list (left, then right). */
-        memmove(&jobs[largest + 2], &jobs[largest + 1], (size_t)(num_jobs - largest - 1) * sizeof *jobs);
-        jobs[largest].task = children[1];
-        jobs[largest + 1].task = children[0];
-        num_jobs++;
-    }
-
-    /* The subtrees, side by side; then one array: the top nodes, and each subtree's after them. */
-    for (int i = 0; i < num_jobs; i++) {
-        jobs[i].prims = prims;
-        jobs[i].max_leaf_size = max_leaf_size;
-    }
+    build_task root = {.node = 0, .begin = 0, .end = n, .depth = 0};
+    build_bounds(prims, n, &root.box, &root.cbox);
+    int num_jobs = split_top(prims, max_leaf_size, root, &top, jobs);
     parallel_for(num_jobs, build_subtree_job, jobs);
-    size_t total = (size_t)top.num;
-    bool complete = true;
-    for (int i = 0; i < num_jobs; i++) {
-        complete = complete && jobs[i].out.nodes;
-        total += (size_t)jobs[i].out.num - 1;
-    }
-    node_array all = {complete ? malloc(total * sizeof(bvh_node)) : NULL, top.num};
-    out->prim_index = complete ? malloc((size_t)n * sizeof *out->prim_index) : NULL;
-    if (all.nodes && out->prim_index) {
-        memcpy(all.nodes, top.nodes, (size_t)top.num * sizeof *all.nodes);
-        for (int i = 0; i < num_jobs; i++) stitch_subtree(&all, &jobs[i]);
-        for (int i = 0; i < n; i++) out->prim_index[i] = prims[i].prim;
-        out->nodes = all.nodes;
-        out->num_nodes = all.num;
-        out->num_prims = n;
-    } else {
-        free(all.nodes);
-        free(out->prim_index);
-        out->prim_index = NULL;
-    }
-    for (int i = 0; i < num_jobs; i++) free(jobs[i].out.nodes);
+    pl_status st = assemble_tree(out, &top, jobs, num_jobs, prims, n);
     free(prims);
-    return out->nodes ? PL_OK : PL_ERR_NOMEM;
+    return st;
     /* END SOLUTION */
     /* STUB: *out = (bvh){0}; return PL_TODO("2.2", "bvh_build"); */
 }
