@@ -15,8 +15,11 @@ LTO     ?= 1   # 0: no link-time optimisation (the grader's builds: objects hold
 STB     ?= auto  # auto: the system's stb where pkg-config finds it, else third_party/stb; vendored: always third_party/stb
 PKGS    := libxml-2.0 stb jansson zlib OpenEXR
 TPKGS   := cmocka
+# The course's parts: one folder each, parts/partN_<name>/ (a course's release holds the parts it
+# chose in course/course.mk, COURSE_PARTS). PART_SUITES: part1 part2 ..., in order.
+PART_SUITES := $(sort $(foreach d,$(wildcard parts/part*_*),$(firstword $(subst _, ,$(notdir $(d))))))
 # The test suites: tests/<suite>/ each, plus the course's own tools' suite where the tree has course/.
-SUITES  := framework grader part1 part2 part3 part4 part5 $(if $(wildcard course/course.mk),course)
+SUITES  := framework grader $(PART_SUITES) $(if $(wildcard course/course.mk),course)
 
 # ---- libraries: pkg-config first, checked before anything compiles ----------------------------
 # stb: Homebrew has no formula, so where pkg-config finds no stb the vendored headers are used.
@@ -70,6 +73,8 @@ cc_warning_off = $(shell $(CC) -Werror -W$(1) -E -x c /dev/null >/dev/null 2>&1 
 # -Wno-newline-eof: clang's -Wpedantic wants a final newline, which the vendored lodepng lacks.
 WARN     := -Wall -Wextra -Wpedantic -Wshadow -Wno-unused-parameter $(call cc_warning_off,newline-eof)
 CPPFLAGS += $(FEATURES) -MMD -MP $(shell pkg-config --cflags $(PKGS))
+# The framework calls a part of the second assignment only where the course has it (render.c, cli.c).
+CPPFLAGS += $(if $(filter part9,$(PART_SUITES)),-DPL_HAS_PART9)
 CFLAGS   += -std=c11 $(OPT) -g $(WARN) -pthread
 LDLIBS   += $(shell pkg-config --libs $(PKGS)) -lm -pthread
 ifeq ($(WERROR),1)
@@ -173,7 +178,7 @@ $(BUILD)/framework/sidecar.o $(BUILD)/framework/range.o: $(BUILD)/gen/version.h
 # ---- tests: one binary per suite, so a crash in one part costs no other -----------------------
 $(BUILD)/tests/%.o $(BUILD)/course/%.o: CPPFLAGS += $(shell pkg-config --cflags $(TPKGS))
 
-## test-<suite>: run one suite: test-part1 .. test-part5, test-framework, test-grader
+## test-<suite>: run one suite: test-part1 .. test-part5, test-part9 (where the course has it), test-framework, test-grader
 ## test-part3 FILTER='*hemisphere*': run only the tests whose names match (LIST=1: list them)
 define suite_rules
 $(BIN)/test-$(1): $(call suite_obj,$(1)) $(COMMON_OBJ) $(LIB_OBJ)

@@ -50,8 +50,13 @@ void cli_print_usage(FILE *f, const char *prog)
             "  -m N        max ray depth: 0 emission only, 1 direct light, ... (1)\n"
             "  -o 0|1      1: add up all bounces; 0: only the bounce at depth -m (1)\n"
             "  -e FILE     environment map (not supported yet)\n"
-            "  -b R        lens radius (0, or the -c file's; accepted, not used yet: the thin lens is a later part)\n"
-            "  -d D        focal distance (4.7, or the -c file's; likewise not used yet)\n"
+#ifdef PL_HAS_PART9
+            "  -b R        lens radius (0: a pinhole, or the -c file's): the thin lens of part 9\n"
+            "  -d D        focal distance: the plane of focus lies D in front of the camera (4.7, or the -c file's)\n"
+#else
+            "  -b R        lens radius (0, or the -c file's; accepted, not used: this course has no thin lens part)\n"
+            "  -d D        focal distance (4.7, or the -c file's; likewise not used)\n"
+#endif
             "  -f FILE     write the render: .png (tone-mapped), .hdr or .exr (linear), plus FILE.json\n"
             "  -r W H      image size in pixels (800 600)\n"
             "  -c FILE     CS184 camera settings file\n"
@@ -365,15 +370,25 @@ int cli_warn_noops(const options *o, const scene *s, pl_diag *d)
                        "-H or bounces (-m 2 and more) gather from them; light sampling has nothing to sample", name);
         said++;
     }
-    /* -b / -d: CS184's flags, parsed and checked, but no part uses a thin lens yet. */
+#ifdef PL_HAS_PART9
+    /* -d focuses a lens; with no lens (radius 0: no -b, and none from a -c file) the camera is a
+     * pinhole, sharp at every distance, and the focal distance changes nothing. */
+    if (o->focal_distance_given && !(camera_for_render(s, o).lens_radius > 0.0f)) {
+        pl_warn(d, "-d %g has no effect: the lens radius is 0, a pinhole camera, sharp at every distance (-b R gives it a "
+                   "lens)", (double)o->focal_distance);
+        said++;
+    }
+#else
+    /* -b / -d: CS184's flags, parsed and checked, but this course has no thin lens part. */
     if (o->lens_radius_given || o->focal_distance_given) {
         char given[96] = "";
         if (o->lens_radius_given) snprintf(given, sizeof given, "-b %g", (double)o->lens_radius);
         if (o->focal_distance_given)
             snprintf(given + strlen(given), sizeof given - strlen(given), "%s-d %g", o->lens_radius_given ? " and " : "",
                      (double)o->focal_distance);
-        pl_warn(d, "%s accepted but not used yet: the thin lens is a later part, so this render is a pinhole camera's", given);
+        pl_warn(d, "%s accepted but not used: this course has no thin lens part, so this render is a pinhole camera's", given);
         said++;
     }
+#endif
     return said;
 }

@@ -20,8 +20,8 @@ struct scene;
 
 /* Options and a scene that render without complaint yet do less than they seem to ask, each said
  * once through d (one "warning: ..." line on stderr by default): a scene with no lights (named by
- * its file), -b / -d (accepted for CS184's command line; the thin lens is a later part). Returns
- * how many warnings it gave. */
+ * its file), -d with no lens to focus (part 9's thin lens), or -b / -d where the course has no
+ * part 9 (accepted for CS184's command line). Returns how many warnings it gave. */
 int cli_warn_noops(const options *o, const struct scene *s, pl_diag *d);
 
 

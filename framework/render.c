@@ -8,6 +8,9 @@
 #include "../parts/part3_direct/part3.h"
 #include "../parts/part4_global/part4.h"
 #include "../parts/part5_adaptive/part5.h"
+#ifdef PL_HAS_PART9  /* the thin lens, in a course that teaches it (the Makefile defines it: parts/part9_*) */
+#include "../parts/part9_lens/part9.h"
+#endif
 #include <pthread.h>
 #include <stdatomic.h>
 #include <stdlib.h>
@@ -112,6 +115,16 @@ void render_pixel(const render_ctx *ctx, int x, int y, film_pixel *p)
         vec2 u = o->spp == 1 ? vec2_make(0.5f, 0.5f) : rng_uniform2(&g);  /* one sample: the centre */
         if (pl_trace) trace_sample_begin(s, u);
         ray r = pixel_sample_ray(&ctx->camera, x, y, ctx->width, ctx->height, u);
+#ifdef PL_HAS_PART9
+        /* A lens of some radius (-b): the pinhole ray through the lens. Its point on the lens is drawn
+         * only here, so a pinhole render draws the same numbers as before the lens existed. */
+        if (ctx->camera.lens_radius > 0.0f) {
+            vec2 lens_u = rng_uniform2(&g);
+            ray pinhole = r;
+            r = thin_lens_ray(&ctx->camera, pinhole, lens_u);
+            if (pl_trace) r = trace_lens_ray(&ctx->camera, pinhole, lens_u, r);
+        }
+#endif
         if (pl_trace) r = trace_camera_ray(r);
         /* A ray spanning no distance is no camera ray: task 1.1 or 1.4 is still a stub (or broken).
          * Show magenta, as every missing part does, rather than a black picture. */

@@ -37,9 +37,12 @@ static inline ray pl_todo_ray(const char *task, const char *fn)
     return ray_make(vec3_make(0, 0, 0), vec3_make(0, 0, -1), 0.0f, 0.0f);
 }
 
+static inline vec2 pl_todo_vec2(const char *task, const char *fn) { pl_todo_report(task, fn); return vec2_make(0.0f, 0.0f); }
+
 #define PL_TODO(task, fn) pl_todo_status(task, fn)
 #define PL_TODO_RGB(task, fn) pl_todo_rgb(task, fn)
 #define PL_TODO_FALSE(task, fn) pl_todo_false(task, fn)
 #define PL_TODO_RAY(task, fn) pl_todo_ray(task, fn)
+#define PL_TODO_VEC2(task, fn) pl_todo_vec2(task, fn)
 
 #endif

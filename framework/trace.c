@@ -290,6 +290,40 @@ ray trace_camera_ray(ray r)
     return r;
 }
 
+/* Part 9's lens ray beside the two facts that make it right, each recomputed here: it starts on the
+ * lens (the disc of radius R around the camera's position, in the camera's own X and Y) and passes
+ * through the pinhole ray's point on the plane of focus (D ahead along the view axis). The
+ * tolerances are float rounding's, scaled to the camera's distance from the scene's origin. */
+ray trace_lens_ray(const camera *c, ray pinhole, vec2 u, ray r)
+{
+    trace_log *t = pl_trace;
+    vec3 forward = mat4_dir(c->camera_to_world, vec3_make(0.0f, 0.0f, -1.0f));
+    vec3 focus = ray_at(&pinhole, c->focal_distance / vec3_dot(pinhole.d, forward));
+    vec3 offset = vec3_sub(r.o, c->position), to_focus = vec3_sub(focus, r.o);
+    float off_plane = vec3_dot(offset, forward);
+    float from_centre = vec3_length(vec3_sub(offset, vec3_scale(forward, off_plane)));
+    float miss = vec3_length(vec3_sub(to_focus, vec3_scale(r.d, vec3_dot(to_focus, r.d))));
+    float scale = 1.0f + vec3_length(c->position);
+    bool through = miss <= 1e-4f * (vec3_length(to_focus) + scale);  /* within rounding: the text says so */
+    char passes[64] = "passes through that point";
+    if (!through) snprintf(passes, sizeof passes, "passes %.3g from that point", (double)miss);
+    emit(t, "lens_ray",
+         json_pack("{s:o, s:o, s:o, s:o, s:o}", "focus", jpoint(t, focus), "lens_radius", jnum(c->lens_radius),
+                   "from_lens_centre", jnum(from_centre), "off_lens_plane", jnum(off_plane), "focus_miss", jnum(miss)),
+         "thin lens (task 9.2), u = (%.5g, %.5g): the pinhole ray meets the plane of focus (%.5g ahead) at " V3
+         "; the lens ray starts %.5g from the lens's centre (radius %.5g) and %s",
+         (double)u.x, (double)u.y, (double)c->focal_distance, PXYZ(focus), (double)from_centre, (double)c->lens_radius,
+         passes);
+    if (!(fabsf(off_plane) <= 1e-5f * scale) || !(from_centre <= c->lens_radius * (1.0f + 1e-4f) + 1e-6f * scale))
+        mark(t, "the lens ray starts off the lens: %.5g along the view axis and %.5g from the lens's centre (radius "
+                "%.5g); the lens is the disc of radius -b in the camera's own X and Y", (double)off_plane,
+             (double)from_centre, (double)c->lens_radius);
+    if (!through)
+        mark(t, "the lens ray misses the pinhole ray's point on the plane of focus by %.3g: that point would not be "
+                "sharp", (double)miss);
+    return r;
+}
+
 /* CS184's stopping rule, recomputed so the check shows its numbers beside the part's verdict. */
 bool trace_converged(int n, double s1, double s2, float tol, bool verdict)
 {

@@ -50,6 +50,7 @@ void trace_sample_end(rgb L);
 void trace_enter(pl_seam_id fn, const render_ctx *ctx, const ray *r, const hit *h);
 rgb trace_leave(pl_seam_id fn, rgb L);
 ray trace_camera_ray(ray r);
+ray trace_lens_ray(const camera *c, ray pinhole, vec2 u, ray r);  /* part 9's, beside its pinhole ray */
 bool trace_converged(int n, double s1, double s2, float tol, bool verdict);
 bool trace_intersect(const render_ctx *ctx, ray *r, hit *h);
 bool trace_occluded(const render_ctx *ctx, const ray *r);

@@ -1,5 +1,5 @@
 #!/bin/sh
-# The figures of every part's handout (handout/part1.md .. part5.md), one command each, written to
+# The figures of every part's handout (each handout/part<N>.md of the course), one command each, written to
 # out/figures/part<N>/. Run all:  make figures     One part:  handout/figures.sh part4
 # It builds what it needs first (bin/pathtracer, bin/imgtool and bin/acne_figure, through make), so it also works on a
 # fresh tree. Each command is printed before it runs, so it can be copied and changed.
@@ -15,8 +15,8 @@ spheres=scenes/cornell_spheres.dae
 empty=scenes/cornell_empty.dae
 only=${1:-all}
 case "$only" in
-    all|part1|part2|part3|part4|part5) ;;
-    *) echo "usage: handout/figures.sh [all|part1|part2|part3|part4|part5]" >&2; exit 2 ;;
+    all|part1|part2|part3|part4|part5|part9) ;;
+    *) echo "usage: handout/figures.sh [all|part1|part2|part3|part4|part5|part9]" >&2; exit 2 ;;
 esac
 
 ${MAKE:-make} --no-print-directory -s "$BIN/pathtracer" "$BIN/imgtool" "$BIN/acne_figure"
@@ -78,6 +78,13 @@ if want part5; then
     # 5.1: adaptive sampling and its sample-rate map (written beside it as *_rate.png)
     run $d/bunny_adaptive.png $T $R -s 1024 -a 64 0.05 -l 1 -m 5 $bunny
     run $d/spheres_adaptive.png $T $R -s 1024 -a 64 0.05 -l 1 -m 5 $spheres
+fi
+if want part9 && [ -d parts/part9_lens ]; then
+    d=$OUT/part9
+    # 9.2: a pinhole, then the lens focused on the front sphere (2.8 m), then on the back one (3.45 m)
+    run $d/spheres_pinhole.png $T $R -s 64 -l 2 -m 5 $spheres
+    run $d/spheres_focus_front.png $T $R -s 64 -l 2 -m 5 -b 0.1 -d 2.8 $spheres
+    run $d/spheres_focus_back.png $T $R -s 64 -l 2 -m 5 -b 0.1 -d 3.45 $spheres
 fi
 # "Debugging with a trace": the handout's traces of the parts asked for, as files beside the figures.
 BIN=$BIN sh handout/traces.sh --out "$OUT" $([ "$only" = all ] || echo "$only")

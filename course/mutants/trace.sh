@@ -4,10 +4,10 @@
 # catalogued student bug, a trace command and the "!!" line the bug must produce in it. The patch is
 # applied to a scratch copy (as course/mutants/run.sh does), bin/pathtracer built there, and the same
 # command run on the solution must print no "!!" line at all (a mark that fires on correct code is a
-# defect too). Then the same for correct code written differently: the solution and each of parts 3
-# and 4's correct alternatives (course/alternatives: other draw orders, roulette conventions, a
-# recursion) traced over a sweep of renders (-o 0 and -o 1, -H, one and several light samples, every
-# course scene) print no "!!" line. Last, the grader's pointer: a failing case's --trace-pixel command
+# defect too). Then the same for correct code written differently: the solution and each of parts
+# 3, 4 and 9's correct alternatives (course/alternatives: other draw orders, roulette conventions, a
+# recursion, another disc mapping) traced over a sweep of renders (-o 0 and -o 1, -H, one and
+# several light samples, a thin lens, every course scene) print no "!!" line. Last, the grader's pointer: a failing case's --trace-pixel command
 # shows the bug.
 # Usage: course/mutants/trace.sh           (make trace-mutants)
 set -u
@@ -29,7 +29,9 @@ part3-hemisphere-divides-by-light-samples-only|-r 64 48 -s 128 -m 1 -H -l 2 --tr
 part3-shadow-ray-from-raw-hit-point|-r 160 120 -s 64 -m 1 -l 4 --seed 160154358618 --trace-pixel 95 97 scenes/cornell_grazing.dae|the surface it starts on
 part4-no-roulette-compensation|-r 64 48 -s 16 -m 8 --trace-pixel 20 10 scenes/cornell_spheres.dae|does not divide the throughput
 part4-roulette-test-inverted|-r 64 48 -s 16 -m 8 --trace-pixel 20 10 scenes/cornell_spheres.dae|but divides the throughput by
-part5-standard-deviation-not-error|-r 64 48 -s 64 -l 4 -a 8 0.1 -m 1 --trace-pixel 32 30 scenes/cornell_spheres.dae|adaptive_converged says go on'
+part5-standard-deviation-not-error|-r 64 48 -s 64 -l 4 -a 8 0.1 -m 1 --trace-pixel 32 30 scenes/cornell_spheres.dae|adaptive_converged says go on
+part9-focus-along-the-ray|-r 64 48 -s 2 -m 0 -b 0.1 -d 2.8 --trace-pixel 5 5 scenes/cornell_spheres.dae|misses the pinhole ray's point on the plane of focus
+part9-lens-in-world-axes|-r 64 48 -s 2 -m 0 -b 0.1 -d 3 --trace-pixel 20 20 scenes/lights_point_dir.dae|the lens ray starts off the lens'
 # A scratch copy of the tree in $1 (the release objects reused: make rebuilds what changes).
 fresh_copy() {
     rm -rf "$1" && mkdir -p "$1"
@@ -67,9 +69,10 @@ done || failed=1
 [ $failed -eq 0 ] && echo "trace marks: every mutant marked, no mark on the solution"
 
 # Correct code, traced widely: no mark anywhere.
-sweep='-m 1 -l 4|-m 1 -l 4 -H|-m 2 -o 0 -l 1|-m 3 -o 0 -l 4|-m 5 -l 2|-m 5 -l 4 -H|-m 4 -o 0 --no-rr -l 2|-m 8 -o 1 -l 1'
+sweep='-m 1 -l 4|-m 1 -l 4 -H|-m 2 -o 0 -l 1|-m 3 -o 0 -l 4|-m 5 -l 2|-m 5 -l 4 -H|-m 4 -o 0 --no-rr -l 2|-m 8 -o 1 -l 1|-m 2 -l 2 -b 0.15 -d 3'
 scenes='cornell_spheres cornell_two_lights lights_point_dir cornell_grazing'
-for alt in solution "$root"/course/alternatives/part3-*.patch "$root"/course/alternatives/part4-*.patch; do
+for alt in solution "$root"/course/alternatives/part3-*.patch "$root"/course/alternatives/part4-*.patch \
+           "$root"/course/alternatives/part9-*.patch; do
     name=$(basename "$alt" .patch) dir=$root
     if [ "$alt" != solution ]; then
         dir="$scratch/alt-$name"
