@@ -94,7 +94,7 @@ check_hidden() {
 # The autograder bundle (release/autograder.zip, unzipped into $LOGS/bundle as Gradescope does):
 # setup.sh and run_autograder at its top and executable; the solutions (every parts/ file the same
 # as the repository's, solution markers included); every grading case and reference, hidden ones
-# included, byte for byte; no build outputs, .git or out/.
+# included, byte for byte; nothing of a part the course left out; no build outputs, .git or out/.
 check_bundle() {
     what="(k) release/autograder.zip holds setup.sh and run_autograder (executable), the solutions, every case and reference, hidden ones included"
     zip=release/autograder.zip
@@ -116,9 +116,16 @@ for i in z.infolist():
     done
     n=0
     while IFS= read -r f; do
+        if part_left_out "$f"; then
+            [ -e "$dir/$f" ] && problems="$problems; $f is of a part the course left out (COURSE_PARTS=\"$COURSE_PARTS\")"
+            continue
+        fi
         n=$((n + 1))
         cmp -s "$f" "$dir/$f" || problems="$problems; $f missing or different"
     done < <(find parts grading reference_images -type f | sort)
+    for d in "$dir"/tests/part*; do
+        [ -d "$d" ] && part_left_out "tests/${d##*/}/x" && problems="$problems; tests/${d##*/} is of a part the course left out"
+    done
     grep -qF "$MARK_BEGIN" "$dir"/parts/*/*.c 2>/dev/null || problems="$problems; no solution in its parts/"
     [ -s "$dir/grading/hidden/cases.json" ] && [ -n "$(find "$dir/reference_images/hidden" -name '*.exr' 2>/dev/null)" ] ||
         problems="$problems; no hidden cases or references"

@@ -11,6 +11,30 @@ MARK_INSTRUCTOR_BEGIN='<!-- BEGIN'' INSTRUCTOR -->'
 MARK_INSTRUCTOR_END='<!-- END'' INSTRUCTOR -->'
 
 die() { echo "${0##*/}: $*" >&2; exit 2; }
+
+# The course's parts (course/course.mk's COURSE_PARTS, which make passes on): the release, the
+# bundle and their check hold these parts and nothing of the others.
+COURSE_PARTS=${COURSE_PARTS:-1 2 3 4 5}
+for n in $COURSE_PARTS; do
+    case "$n" in [1-9]) ;; *) die "COURSE_PARTS=\"$COURSE_PARTS\": expected part numbers 1 to 9, such as \"1 2 3 4 5\"" ;; esac
+    [ -n "$(find parts -maxdepth 1 -name "part${n}_*" -type d 2>/dev/null)" ] ||
+        die "COURSE_PARTS names part $n, but the repository has no parts/part${n}_*/ folder"
+done
+# Whether part $1 is one of the course's.
+part_chosen() { case " $COURSE_PARTS " in *" $1 "*) return 0 ;; esac; return 1; }
+# Whether file $1 belongs to a part the course left out: its folder, its suite, its handout text,
+# its references.
+part_left_out() {
+    local n
+    case "$1" in
+        parts/part[1-9]_*) n=${1#parts/part} ;;
+        tests/part[1-9]/*) n=${1#tests/part} ;;
+        handout/part[1-9].md|handout/part[1-9]_*) n=${1#handout/part} ;;
+        reference_images/part[1-9]/*|reference_images/hidden/part[1-9]/*) n=${1#*images/}; n=${n#hidden/}; n=${n#part} ;;
+        *) return 1 ;;
+    esac
+    ! part_chosen "${n%%[!0-9]*}"
+}
 absolute() { case "$1" in /*) echo "$1" ;; *) echo "$PWD/$1" ;; esac; }
 code_version() { git describe --always --dirty 2>/dev/null || echo unknown; }
 
@@ -31,6 +55,7 @@ build_output() {
 # cases and their references, anything named as solution material.
 excluded() {
     build_output "$1" && return 0
+    part_left_out "$1" && return 0
     case "$1" in
         .ci/*|course/*|grading/hidden/*|reference_images/hidden/*) return 0 ;;
         */solution/*|solution/*|*.solution.*) return 0 ;;
@@ -44,6 +69,7 @@ excluded() {
 # bundle's top by bundle), the handout, benchmarks or the fuzzer, nor build outputs.
 bundle_excluded() {
     build_output "$1" && return 0
+    part_left_out "$1" && return 0
     case "$1" in
         Makefile|README.md|framework/*|parts/*|grader/*|grading/*|reference_images/*|scenes/*|third_party/*|tools/*|tests/*) return 1 ;;
     esac
@@ -66,17 +92,26 @@ list_files() {
 
 # ---- copying into the student tree ---------------------------------------------------------------
 
-# Copies markdown file $1 to $2 without its instructor sections; fails, naming the line, on a
-# section left open or a stray END.
+# Copies markdown file $1 to $2 without its instructor sections, and with the sections of a part
+# (<!-- BEGIN PART 9 --> ... <!-- END PART 9 -->: what a document says of one part) only where the
+# course has that part; the part markers themselves are dropped. Fails, naming the line, on a
+# section left open, nested or a stray END.
 strip_markdown() {
-    awk -v b="$MARK_INSTRUCTOR_BEGIN" -v e="$MARK_INSTRUCTOR_END" -v name="$1" '
+    awk -v b="$MARK_INSTRUCTOR_BEGIN" -v e="$MARK_INSTRUCTOR_END" -v name="$1" -v parts=" $COURSE_PARTS " '
         { t = $0; gsub(/^[ \t]+|[ \t\r]+$/, "", t) }
         t == b { if (open) { printf "%s:%d: nested instructor section (opened at line %d)\n", name, NR, open > "/dev/stderr"; bad = 1; exit 2 }
                  open = NR; next }
         t == e { if (!open) { printf "%s:%d: END INSTRUCTOR without a BEGIN\n", name, NR > "/dev/stderr"; bad = 1; exit 2 }
                  open = 0; next }
-        !open { print }
-        END { if (!bad && open) { printf "%s:%d: instructor section never closed\n", name, open > "/dev/stderr"; exit 2 } }
+        t ~ /^<!-- BEGIN PART [1-9] -->$/ {
+                 if (part) { printf "%s:%d: nested part section (opened at line %d)\n", name, NR, part > "/dev/stderr"; bad = 1; exit 2 }
+                 part = NR; n = substr(t, 17, 1); drop = index(parts, " " n " ") == 0; next }
+        t ~ /^<!-- END PART [1-9] -->$/ {
+                 if (!part || substr(t, 15, 1) != n) { printf "%s:%d: END PART without its BEGIN\n", name, NR > "/dev/stderr"; bad = 1; exit 2 }
+                 part = 0; drop = 0; next }
+        !open && !drop { print }
+        END { if (!bad && open) { printf "%s:%d: instructor section never closed\n", name, open > "/dev/stderr"; exit 2 }
+              if (!bad && part) { printf "%s:%d: part section never closed\n", name, part > "/dev/stderr"; exit 2 } }
     ' "$1" >"$2"
 }
 
