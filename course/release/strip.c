@@ -302,7 +302,7 @@ static bool stub_names(const char *code, size_t len, const strip_task *t)
     for (const char *s = code; s < end; s++) {
         if (!starts(s, (size_t)(end - s), "PL_TODO")) continue;
         const char *c = s + strlen("PL_TODO");
-        while (c < end && (isupper((unsigned char)*c) || *c == '_')) c++;
+        while (c < end && (isupper((unsigned char)*c) || isdigit((unsigned char)*c) || *c == '_')) c++;  /* PL_TODO_VEC2 */
         char want_id[32], want_fn[80];
         snprintf(want_id, sizeof want_id, "\"%s\"", t->id);
         snprintf(want_fn, sizeof want_fn, "\"%s\"", t->function);

@@ -262,6 +262,21 @@ static void test_strip_tasks__lists_banners_in_order(void **state)
     free(tasks);
 }
 
+/* A stub macro's name may hold digits (PL_TODO_VEC2, part 9's): it still names its task. */
+static void test_strip_tasks__stub_macro_with_digits_names_its_task(void **state)
+{
+    (void)state;
+    const char *in = BANNER("9", "9.1", "f") "vec2 f(void)\n{\n    " BEGIN "\n    return v;\n    " END "\n    "
+                     STUB("return PL_TODO_VEC2(\"9.1\", \"f\");") "\n}\n";
+    pl_diag diag = pl_diag_default();
+    strip_task *tasks;
+    int n;
+    if (tasks_of(in, &tasks, &n, &diag) != PL_OK) fail_msg("strip_tasks failed: %s", diag.error);
+    assert_int_equal(1, n);
+    assert_string_equal("9.1", tasks[0].id);
+    free(tasks);
+}
+
 static void test_strip_tasks__file_without_banners_has_no_tasks(void **state)
 {
     (void)state;
@@ -333,6 +348,7 @@ int strip_tests(void)
         cmocka_unit_test(test_strip__rejects_swapped_and_plural_markers),
         cmocka_unit_test(test_strip__rejects_region_in_function_body_without_stub),
         cmocka_unit_test(test_strip_tasks__lists_banners_in_order),
+        cmocka_unit_test(test_strip_tasks__stub_macro_with_digits_names_its_task),
         cmocka_unit_test(test_strip_tasks__file_without_banners_has_no_tasks),
         cmocka_unit_test(test_strip_tasks__rejects_stub_naming_another_task),
         cmocka_unit_test(test_strip_tasks__rejects_banner_without_stub),
