@@ -15,7 +15,9 @@
 
 #define GRADE_MAX_CASES 16
 #define GRADE_MAX_FLAGS 16
-#define GRADE_NUM_PARTS 5
+#define GRADE_NUM_PARTS 5         /* the parts with grading cases (grading/cases.json): 1..5 */
+#define GRADE_MAX_PART 9          /* a course's part folders, parts/part1_* .. parts/part9_*: those present
+                                     are laid out in every grading tree (headers; objects closed) */
 #define GRADE_MAX_TASKS 8         /* a part's unit-test tasks ("unit_tasks" in cases.json) */
 #define GRADE_MAX_MATCH 4         /* test-name prefixes per task */
 #define GRADE_MAX_TESTS 256       /* tests in one suite: the course's largest has ~40 */

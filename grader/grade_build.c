@@ -198,9 +198,9 @@ static bool lay_out_sources(const char *course, const char *submitted, const cha
     if (mkdir(to, 0755) != 0) return false;
     for (int i = 0; i < m->count; i++)
         if (!copy_file(submitted, to, m->names[i], GRADE_SOURCE_BYTES)) return false;
-    for (int k = 1; k <= GRADE_NUM_PARTS; k++) {
+    for (int k = 1; k <= GRADE_MAX_PART; k++) {
         char other[256];
-        if (!grade_part_folder(course, k, other, sizeof other)) return false;
+        if (!grade_part_folder(course, k, other, sizeof other)) continue;  /* not in this course */
         grade_path(from, sizeof from, "%s/parts/%s", course, other);
         grade_path(to, sizeof to, "%s/parts/%s", src, other);
         if (!copy_headers(from, to)) return false;
@@ -353,9 +353,9 @@ static bool lay_out_tree(const char *course, const char *folder, const char *tre
         char *cp[] = {"cp", "-a", from, (char *)tree, NULL};
         if (stat(from, &st) == 0 && !run_trusted(cp, log)) return false;
     }
-    for (int k = 1; k <= GRADE_NUM_PARTS; k++) {
+    for (int k = 1; k <= GRADE_MAX_PART; k++) {
         char other[256], from[4200], to[4200], objects[4200];
-        if (!grade_part_folder(course, k, other, sizeof other)) return false;
+        if (!grade_part_folder(course, k, other, sizeof other)) continue;  /* not in this course */
         grade_path(from, sizeof from, "%s/parts/%s", course, other);
         grade_path(to, sizeof to, "%s/parts/%s", tree, other);
         grade_path(objects, sizeof objects, "%s/" GRADE_OBJECTS "/parts/%s", tree, other);
