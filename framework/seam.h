@@ -32,7 +32,9 @@
     X(direct_importance, "3.5")              \
     X(at_least_one_bounce_radiance, "4.1")   \
     X(russian_roulette, "4.2")               \
-    X(adaptive_converged, "5.1")
+    X(adaptive_converged, "5.1")             \
+    X(lens_sample_disk, "9.1")               \
+    X(thin_lens_ray, "9.2")
 
 #define PL_SEAM_FRAMEWORK_FUNCTIONS(X)       \
     X(render_intersect, 1)                   \

@@ -15,9 +15,8 @@
 
 #define GRADE_MAX_CASES 16
 #define GRADE_MAX_FLAGS 16
-#define GRADE_NUM_PARTS 5         /* the parts with grading cases (grading/cases.json): 1..5 */
-#define GRADE_MAX_PART 9          /* a course's part folders, parts/part1_* .. parts/part9_*: those present
-                                     are laid out in every grading tree (headers; objects closed) */
+#define GRADE_MAX_PART 9          /* parts are numbered 1..9 (folders parts/part<N>_<name>); a course has some
+                                     of them: those grading/cases.json lists and its tree holds are graded */
 #define GRADE_MAX_TASKS 8         /* a part's unit-test tasks ("unit_tasks" in cases.json) */
 #define GRADE_MAX_MATCH 4         /* test-name prefixes per task */
 #define GRADE_MAX_TESTS 256       /* tests in one suite: the course's largest has ~40 */
@@ -63,7 +62,7 @@ typedef struct {
 } grade_task;
 
 typedef struct {
-    int part;                           /* 1..5 */
+    int part;                           /* 1..9; 0: cases.json does not list this part */
     double unit_points;                 /* the sum of the tasks' points */
     int unit_tests;                     /* the tests its suite runs to its end ("unit_tests" in cases.json) */
     grade_task tasks[GRADE_MAX_TASKS];
@@ -74,7 +73,7 @@ typedef struct {
 
 typedef struct {
     double family_alpha;
-    grade_part_spec parts[GRADE_NUM_PARTS];
+    grade_part_spec parts[GRADE_MAX_PART];  /* parts[n - 1] is part n's */
 } grade_spec;
 
 /* grading/cases.json, plus the hidden cases of hidden_path when that file exists (NULL: none). */
@@ -143,7 +142,7 @@ typedef struct {
     uint64_t seed;             /* drawn at grading time, recorded */
     char unprotected[256];     /* the protections this machine could not give student code, or "" */
     double seconds;
-    grade_part_result parts[GRADE_NUM_PARTS];
+    grade_part_result parts[GRADE_MAX_PART];
     int num_parts;
 } grade_result;
 

@@ -183,25 +183,32 @@ static pl_status read_tasks(const char *path, json_t *tasks, grade_part_spec *p,
     return PL_OK;
 }
 
-/* Adds the cases of one file's "parts" to out; base says whether parts must list all five. */
+/* Adds the cases of one file's "parts" to out. The base file (grading/cases.json) lists the course's
+ * parts, each once, in increasing order, with its unit tests; the hidden file adds cases to parts the
+ * base lists. */
 static pl_status read_parts(const char *path, json_t *root, bool base, grade_spec *out, pl_diag *diag)
 {
     pl_status checked = check_members(path, "the top level", root, root_members, diag);
     if (checked != PL_OK) return checked;
     json_t *parts = json_object_get(root, "parts");
-    if (!json_is_array(parts) || (base && json_array_size(parts) != GRADE_NUM_PARTS))
+    if (!json_is_array(parts) || (base && json_array_size(parts) == 0))
         return pl_fail(diag, PL_ERR_PARSE, "%s: expected \"parts\": %s", path,
-                       base ? "one entry per part, 1 to 5" : "an array");
+                       base ? "one entry per part of the course, in increasing order" : "an array");
+    int last = 0;
     for (size_t k = 0; k < json_array_size(parts); k++) {
         json_t *pj = json_array_get(parts, k), *cases = json_object_get(pj, "cases");
         char where[32];
         snprintf(where, sizeof where, "parts[%zu]", k);
         if ((checked = check_members(path, where, pj, part_members, diag)) != PL_OK) return checked;
         int part = (int)json_integer_value(json_object_get(pj, "part"));
-        if (part < 1 || part > GRADE_NUM_PARTS || (base && part != (int)k + 1) || !json_is_array(cases))
-            return pl_fail(diag, PL_ERR_PARSE, "%s: parts[%zu]: expected \"part\" 1..5 (in order) and \"cases\"",
-                           path, k);
+        if (part < 1 || part > GRADE_MAX_PART || (base && part <= last) || !json_is_array(cases))
+            return pl_fail(diag, PL_ERR_PARSE, "%s: parts[%zu]: expected \"part\" 1..%d (each once, in increasing "
+                           "order) and \"cases\"", path, k, GRADE_MAX_PART);
+        last = part;
         grade_part_spec *p = &out->parts[part - 1];
+        if (!base && p->part != part)
+            return pl_fail(diag, PL_ERR_PARSE, "%s: parts[%zu]: part %d has hidden cases, but %s does not list it",
+                           path, k, part, GRADE_CASES);
         p->part = part;
         if (base) {
             p->unit_points = json_number_value(json_object_get(pj, "unit_points"));
@@ -269,7 +276,7 @@ void grade_case_command(const grade_case *k, const char *bin, const char *scene,
 void grade_spec_free(grade_spec *s)
 {
     if (!s) return;
-    for (int k = 0; k < GRADE_NUM_PARTS; k++)
+    for (int k = 0; k < GRADE_MAX_PART; k++)
         for (int i = 0; i < s->parts[k].num_cases; i++)
             for (int f = 0; f < GRADE_MAX_FLAGS; f++) {
                 free(s->parts[k].cases[i].flags[f]);

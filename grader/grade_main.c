@@ -64,7 +64,7 @@ static int calibrate(const grade_env *base, const grade_spec *spec, const char *
 {
     int worst = 0;
     printf("%-28s %6s %9s %9s %8s  p-value deciles\n", "case", "runs", "failures", "confirmed", "alpha");
-    for (int k = 0; k < GRADE_NUM_PARTS; k++) {
+    for (int k = 0; k < GRADE_MAX_PART; k++) {
         char digit[2] = {(char)('1' + k), 0};
         if (!strstr(parts, digit)) continue;
         const grade_part_spec *p = &spec->parts[k];
@@ -195,13 +195,44 @@ static bool setup_ok(const grade_env *env, const char *outdir, const char *parts
 static void grade_parts(const grade_env *env, grade_spec *spec, const char *parts, grade_result *result)
 {
     double t0 = clock_seconds();
-    for (int k = 0; k < GRADE_NUM_PARTS; k++) {
+    for (int k = 0; k < GRADE_MAX_PART; k++) {
         char digit[2] = {(char)('1' + k), 0};
         if (!strstr(parts, digit)) continue;
         fprintf(stderr, "grade: part %d ...\n", k + 1);
         grade_part(env, spec, &spec->parts[k], &result->parts[result->num_parts++]);
         result->seconds = clock_seconds() - t0;
     }
+}
+
+/* The course's parts as "1,2,3,4,5": each part the tree at root holds (a folder parts/part<N>_<name>)
+ * and, given a spec, grading/cases.json lists. A course that left a part out (COURSE_PARTS) has no
+ * folder for it, whatever cases.json says. */
+static void course_parts(const char *root, const grade_spec *spec, char *out, size_t size)
+{
+    size_t n = 0;
+    out[0] = '\0';
+    for (int k = 1; k <= GRADE_MAX_PART && n < size; k++) {
+        char folder[256];
+        if ((spec && spec->parts[k - 1].part != k) || !grade_part_folder(root, k, folder, sizeof folder)) continue;
+        n += (size_t)snprintf(out + n, size - n, "%s%d", n ? "," : "", k);
+    }
+}
+
+/* --parts against the course's: NULL, or what is wrong (a part the course lacks would be skipped
+ * without a word). */
+static const char *check_parts(const char *asked, const char *course)
+{
+    static char why[160];
+    for (const char *c = asked; *c; c++) {
+        if (*c == ',') continue;
+        if (*c < '1' || *c > '9' || (c[1] && c[1] != ','))
+            return "--parts: expected part numbers separated by commas, such as 1,3";
+        if (!strchr(course, *c)) {
+            snprintf(why, sizeof why, "--parts: part %c is not one of this course's (%s)", *c, course);
+            return why;
+        }
+    }
+    return NULL;
 }
 
 /* --prebuild: the course's objects built ahead of time (setup.sh, when the image is made), so that
@@ -212,7 +243,9 @@ static int prebuild_course(const char *root)
     grade_path(work, sizeof work, "%s/" GRADE_PREBUILD, root);
     if (!make_dir(work) || chmod(work, 0700) != 0) return usage("--prebuild: cannot create " GRADE_PREBUILD);
     grade_env env = {.root = root, .work = work};
-    if (!grade_tree_course_build(&env, "1,2,3,4,5", why, sizeof why)) {
+    char parts[2 * GRADE_MAX_PART + 1];
+    course_parts(root, NULL, parts, sizeof parts);
+    if (!grade_tree_course_build(&env, parts, why, sizeof why)) {
         fprintf(stderr, "grade: --prebuild: %s\n", why);
         return 3;
     }
@@ -260,7 +293,7 @@ typedef struct {
 /* Reads argv into a; NULL, or what was wrong. */
 static const char *parse_args(int argc, char **argv, grade_args *a)
 {
-    *a = (grade_args){.out = "out/grade", .parts = "1,2,3,4,5", .threads = 2};
+    *a = (grade_args){.out = "out/grade", .threads = 2};  /* .parts NULL: the course's (course_parts) */
     for (int i = 1; i < argc; i++) {
         const char *f = argv[i], *v = i + 1 < argc ? argv[i + 1] : NULL;
         if (!strcmp(f, "--public")) a->public_only = true;
@@ -293,7 +326,10 @@ static int handout_tables(bool write)
         return 2;
     }
     int code = 0;
-    for (int k = 0; k < GRADE_NUM_PARTS; k++) {
+    char parts[2 * GRADE_MAX_PART + 1];
+    course_parts(".", &spec, parts, sizeof parts);
+    for (int k = 0; k < GRADE_MAX_PART; k++) {
+        if (!strchr(parts, '1' + k)) continue;  /* a part the course has not (or cases.json does not list) */
         char path[64];
         grade_handout_path(k + 1, path, sizeof path);
         if (grade_handout_update(path, &spec.parts[k], write, &diag) != PL_OK) {
@@ -330,13 +366,23 @@ static const char *open_folders(const grade_args *a, grade_folders *f)
     return NULL;
 }
 
-/* The cases, and the course's references checked before anyone is graded: a broken one stops the
- * run as the course's error (exit 2), never a check skipped or a student's 0. */
-static bool load_course(const char *root, const grade_args *a, grade_spec *spec)
+/* The cases, the parts to grade (--parts, checked against the course's; by default the course's),
+ * and the course's references checked before anyone is graded: a broken one stops the run as the
+ * course's error (exit 2), never a check skipped or a student's 0. */
+static bool load_course(const char *root, grade_args *a, grade_spec *spec)
 {
     pl_diag diag = pl_diag_default();
     if (grade_spec_load(GRADE_CASES, GRADE_HIDDEN_CASES, spec, &diag) != PL_OK) {
         fprintf(stderr, "grade: %s\n", diag.error);
+        return false;
+    }
+    static char parts[2 * GRADE_MAX_PART + 1];
+    course_parts(root, spec, parts, sizeof parts);
+    const char *bad = a->parts ? check_parts(a->parts, parts) : NULL;
+    if (!a->parts) a->parts = parts;
+    if (bad || !parts[0]) {
+        fprintf(stderr, "grade: %s\n", bad ? bad : "this tree has none of the parts grading/cases.json lists");
+        grade_spec_free(spec);
         return false;
     }
     if (grade_refs_check(root, spec, a->parts, a->public_only, &diag) != PL_OK) {

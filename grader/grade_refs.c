@@ -149,7 +149,7 @@ static pl_status check_json(const char *ref_exr, const grade_case *k, int part, 
 
 pl_status grade_refs_check(const char *root, const grade_spec *spec, const char *parts, bool public_only, pl_diag *diag)
 {
-    for (int p = 0; p < GRADE_NUM_PARTS; p++) {
+    for (int p = 0; p < GRADE_MAX_PART; p++) {
         char digit[2] = {(char)('1' + p), 0};
         if (!strstr(parts, digit)) continue;
         for (int i = 0; i < spec->parts[p].num_cases; i++) {

@@ -68,12 +68,12 @@ bool grade_tree_course_build(const grade_env *env, const char *parts, char *why,
     }
     /* The renderer, the recipes, and the split suites of the parts to grade only: each part's
      * subject (whose objects a submission's link reuses) and judge. */
-    char programs[2 * GRADE_NUM_PARTS][32];
-    char *make[16 + 2 * GRADE_NUM_PARTS] = {"make", "-C", course, GRADE_MAKE_ARGS, "bin/pathtracer",
+    char programs[2 * GRADE_MAX_PART][32];
+    char *make[16 + 2 * GRADE_MAX_PART] = {"make", "-C", course, GRADE_MAKE_ARGS, "bin/pathtracer",
                                             GRADE_OBJECTS "/grade-recipes.txt"};
     int argc = 10;  /* after make -C course, the 5 arguments, bin/pathtracer and the recipes */
     static const char *const per_part[] = {"bin/subject-part%d", "bin/judge-part%d"};
-    for (int k = 1; k <= GRADE_NUM_PARTS; k++)
+    for (int k = 1; k <= GRADE_MAX_PART; k++)
         for (int j = 0; j < 2 && strchr(parts, '0' + k); j++) {
             snprintf(programs[2 * (k - 1) + j], sizeof programs[0], per_part[j], k);
             make[argc++] = programs[2 * (k - 1) + j];

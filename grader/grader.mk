@@ -34,7 +34,7 @@ $(GRADE_RECIPES): FORCE
 	   echo 'objects $(BUILD)'; \
 	   echo 'compile $(filter-out -MMD -MP,$(CPPFLAGS)) $(CFLAGS)'; \
 	   echo '$(call grade_link,$(BIN)/pathtracer,$(BUILD)/framework/main.o $(LIB_OBJ))'; \
-	   $(foreach n,1 2 3 4 5,\
+	   $(foreach n,$(patsubst part%,%,$(PART_SUITES)),\
 	   echo '$(call grade_link,$(BIN)/test-part$(n),$(call suite_obj,part$(n)) $(COMMON_OBJ) $(LIB_OBJ),$(shell pkg-config --libs $(TPKGS)))'; \
 	   echo '$(call grade_link,$(BIN)/subject-part$(n),$(foreach f,$(call part_fns,$(n)),-Wl$(comma)--wrap=$(f)) $(call suite_obj,part$(n)) $(COMMON_OBJ) $(LIB_OBJ) $(call seam_obj,subject,record,$(n)),$(shell pkg-config --libs $(TPKGS)))';) \
 	 } >$@.tmp && mv $@.tmp $@
@@ -72,7 +72,7 @@ test-grade-confirm: $(BIN)/grade $(BIN)/pathtracer $(BIN)/test-part3  ## a faili
 # part 1 of hostile submissions; as root it also sweeps the file system as student code for secrets
 # (STRIP_TOOL, the course's stub maker from course/course.mk, makes its stubbed submission: where
 # the tree has none, the sweep is skipped).
-test-grader-process: $(BIN)/grade $(BIN)/grade-probe $(BIN)/test-grader $(foreach n,1 2 3 4 5,$(BIN)/test-part$(n))  ## the grader's containment, at process level
+test-grader-process: $(BIN)/grade $(BIN)/grade-probe $(BIN)/test-grader $(addprefix $(BIN)/test-,$(PART_SUITES))  ## the grader's containment, at process level
 	$(if $(STRIP_TOOL),$(Q)$(MAKE) --no-print-directory $(STRIP_TOOL))
 	$(Q)STRIP_TOOL='$(STRIP_TOOL)' sh tests/grader/sandbox.sh
 

@@ -81,14 +81,17 @@ same() {
     else problem "part $1, $2: split and direct verdicts differ:"; diff "$work/a" "$work/b" | sed 's/^/      /'; fi
 }
 
+# The parts the tree has (parts/part<N>_*/), in order.
+parts=$(cd "$root/parts" && ls -d part[1-9]_* | sed 's/^part\([1-9]\)_.*/\1/' | sort -n | tr '\n' ' ')
+
 # wanted STAGE: the parts a stage runs on, or none when SPLIT_CHECK_STAGES leaves it out.
 wanted() {
-    case $stages in *" $1 "*) echo 1 2 3 4 5 ;; esac
+    case $stages in *" $1 "*) echo $parts ;; esac
 }
 
 # ---- 1. the solution --------------------------------------------------------------------------
 all_bins=""
-for n in 1 2 3 4 5; do all_bins="$all_bins bin/subject-part$n bin/judge-part$n bin/test-part$n"; done
+for n in $parts; do all_bins="$all_bins bin/subject-part$n bin/judge-part$n bin/test-part$n"; done
 build $all_bins
 for n in $(wanted solution); do
     start=$(date +%s)
@@ -115,7 +118,7 @@ done
 # ---- 3. the attacks -----------------------------------------------------------------------------
 for attack in $(case $stages in *" attacks "*) ls "$root"/course/judge/attacks/*.c ;; esac); do
     name=$(basename "$attack" .c)
-    n=$(sed -n 's/^#include "part\([1-5]\)\.h"$/\1/p' "$attack")
+    n=$(sed -n 's/^#include "part\([1-9]\)\.h"$/\1/p' "$attack")
     folder=$(basename "$(dirname "$(ls "$root"/parts/part${n}_*/part$n.h)")")
     # The tests an attack is graded on, when its header names them ("Graded on <pattern>"): part 2's
     # whole suite takes half a minute.

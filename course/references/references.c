@@ -495,7 +495,7 @@ static int cases_to_render(const grade_spec *spec, const ref_options *o, ref_cas
 {
     uint64_t code = fnv_sources(fnv_sources(1469598103934665603ull, "framework"), "parts");
     int n = 0;
-    for (int k = 0; k < GRADE_NUM_PARTS; k++)
+    for (int k = 0; k < GRADE_MAX_PART; k++)
         for (int i = 0; i < spec->parts[k].num_cases; i++) {
             const grade_case *c = &spec->parts[k].cases[i];
             if (!wanted(c, k + 1, o->num_names, o->names)) continue;
@@ -574,7 +574,7 @@ int main(int argc, char **argv)
         return 2;
     }
     /* The cases asked for, with their keys; the ones up to date are left alone. */
-    static ref_case cases[GRADE_NUM_PARTS * GRADE_MAX_CASES];
+    static ref_case cases[GRADE_MAX_PART * GRADE_MAX_CASES];
     int n = cases_to_render(&spec, &o, cases), code_exit = 0;
     if (n < 0) code_exit = 1;
     else if (o.status) print_queue();

@@ -1,6 +1,6 @@
 /* Instructor tooling: not part of any assignment.
  * bin/release_points [CASES [HIDDEN]]: each part's points as the grader reads them (the same
- * grade_spec_load as bin/grade), one line per part: "PART UNIT PUBLIC HIDDEN", where UNIT is the
+ * grade_spec_load as bin/grade), one line per part it lists: "PART UNIT PUBLIC HIDDEN", where UNIT is the
  * unit-test suite's points, PUBLIC the public image cases' and HIDDEN the hidden ones'. The release
  * (course/release/cut) writes the GitHub Classroom workflow (UNIT + PUBLIC per part: what
  * `make grade PARTS=N` grades) and the autograder bundle's fallback results from it.
@@ -25,11 +25,12 @@ int main(int argc, char **argv)
         fprintf(stderr, "release_points: %s\n", diag.error);
         return 2;
     }
-    for (int k = 0; k < GRADE_NUM_PARTS; k++) {
+    for (int k = 0; k < GRADE_MAX_PART; k++) {
         const grade_part_spec *p = &spec.parts[k];
+        if (!p->part) continue;  /* not a part cases.json lists */
         double pub = 0, hid = 0;
         for (int i = 0; i < p->num_cases; i++) *(p->cases[i].hidden ? &hid : &pub) += p->cases[i].points;
-        printf("%d %g %g %g\n", p->part ? p->part : k + 1, p->unit_points, pub, hid);
+        printf("%d %g %g %g\n", p->part, p->unit_points, pub, hid);
     }
     grade_spec_free(&spec);
     return 0;

@@ -10,7 +10,7 @@
 part_dir    = $(dir $(wildcard parts/*/part$(1).h))
 part_obj    = $(patsubst %.c,$(BUILD)/%.o,$(wildcard $(call part_dir,$(1))*.c))
 paren      := (
-part_fns    = $(shell sed -n 's/^[a-z_]* [*]*\([a-z_0-9]*\)[$(paren)].*/\1/p' $(wildcard parts/*/part$(1).h))
+part_fns    = $(shell sed -n 's/^[a-z_0-9]* [*]*\([a-z_0-9]*\)[$(paren)].*/\1/p' $(wildcard parts/*/part$(1).h))
 seam_obj    = $(addprefix $(BUILD)/grader/seam/$(1)/,seam.o $(2).o seam_part$(3).o)
 
 # ld --wrap redirects only calls the linker resolves: link-time optimisation resolves calls inside its
@@ -39,4 +39,5 @@ $(BIN)/judge-part$(1): $(call suite_obj,part$(1)) $(COMMON_OBJ) $(filter-out $(c
 	@mkdir -p $$(dir $$@)
 	$$(Q)$$(CC) $$(LDFLAGS) -o $$@ $$^ $$(LDLIBS) $$(shell pkg-config --libs $(TPKGS))
 endef
-$(foreach n,1 2 3 4 5,$(eval $(call split_rules,$(n))))
+# One pair for each part the course has (the Makefile's PART_SUITES: its part folders).
+$(foreach n,$(patsubst part%,%,$(PART_SUITES)),$(eval $(call split_rules,$(n))))

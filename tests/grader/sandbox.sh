@@ -33,7 +33,8 @@ rm -rf "$out"
 mkdir -p "$out"
 
 # 1. the expected counts are the suites' own
-for n in 1 2 3 4 5; do
+for n in $(jq -r '.parts[].part' grading/cases.json); do
+    ls -d parts/part${n}_* >/dev/null 2>&1 || continue  # a part the course left out
     want=$(sed -n "/\"part\": $n,/,/unit_tests/s/.*\"unit_tests\": *\([0-9]*\).*/\1/p" grading/cases.json)
     mkdir -p "$out/suite$n"
     CMOCKA_MESSAGE_OUTPUT=xml CMOCKA_XML_FILE="$PWD/$out/suite$n/%g.xml" bin/test-part$n >/dev/null 2>&1 ||
@@ -42,7 +43,7 @@ for n in 1 2 3 4 5; do
     [ "$got" = "$want" ] || fail "part $n: cases.json says unit_tests $want, the suite runs $got"
     # Every test belongs to exactly one task, and each task's "tests" is how many it has.
     sed -n 's/.*<testcase name="test_\([^"]*\)".*/\1/p' "$out/suite$n"/*.xml > "$out/suite$n/names"
-    jq -r ".parts[$((n - 1))].unit_tasks[] | \"\(.task) \(.tests) \(.match | join(\" \"))\"" grading/cases.json > "$out/suite$n/tasks"
+    jq -r ".parts[] | select(.part == $n) | .unit_tasks[] | \"\(.task) \(.tests) \(.match | join(\" \"))\"" grading/cases.json > "$out/suite$n/tasks"
     while read -r test; do
         owners=0
         while read -r task count prefixes; do
