@@ -46,7 +46,10 @@ verdicts() { jq -r '.tests[] | select(.visibility == "visible") | "\(.name)\t\(.
 # Grades tree $1 (patch $2 applied, or none) on part(s) $3 both ways and compares.
 compare() {
     name=$1 patch=$2 parts=$3 tree=$work/$1
-    cp -a "$STUDENT" "$tree" && cp -a parts/. "$tree/parts/" || { fail "$name: cannot copy the release"; return; }
+    cp -a "$STUDENT" "$tree" || { fail "$name: cannot copy the release"; return; }
+    for d in "$STUDENT"/parts/*/; do  # the solutions of the release's parts (the course's, no other)
+        d=$(basename "$d") && cp -a "parts/$d/." "$tree/parts/$d/" || { fail "$name: cannot copy parts/$d"; return; }
+    done
     if [ -n "$patch" ] && ! patch -s -p1 -d "$tree" <"course/mutants/$patch.patch"; then
         fail "$name: the patch no longer applies"; return
     fi
@@ -79,6 +82,17 @@ compare() {
 
 echo "== make grade without the sandbox vs the autograder (seed $SEED)"
 compare solution "" 1,3,5
+# A part the release left out (COURSE_PARTS) is not the tree's to grade, whatever cases.json lists:
+# asking for it says so, naming the parts there are.
+for n in 6 7 8 9; do
+    ls -d parts/part${n}_* >/dev/null 2>&1 && ! ls -d "$STUDENT"/parts/part${n}_* >/dev/null 2>&1 || continue
+    if as_student solution "bin/grade --parts $n --out out/grade-left-out" >"$work/left-out.log" 2>&1; then
+        fail "solution: bin/grade --parts $n grades a part the release left out" "$work/left-out.log"
+    elif grep -q "part $n is not one of this course's" "$work/left-out.log"; then
+        pass "solution: bin/grade --parts $n says part $n is not one of this course's ($(sed -n "s/.*this course's (\(.*\))/\1/p" "$work/left-out.log"))"
+    else fail "solution: bin/grade --parts $n should say the part is not the course's" "$work/left-out.log"; fi
+    break
+done
 compare part1-pixel-corner-not-centre part1-pixel-corner-not-centre 1
 compare part3-bsdf-without-pi part3-bsdf-without-pi 3
 # A comparison that cannot fail proves nothing: the bugs must have lost points.

@@ -160,6 +160,26 @@ static void test_cases__every_member_known_and_typed(void **state)
     assert_non_null(strstr(load_edited("0,/160,/s//4096,/; 0,/120$/s//4096/"), "at most 2097152 pixels"));
 }
 
+/* The course's parts: each once, in increasing order, numbered 1..9; hidden cases only for a part
+ * the base file lists (a hidden part 7 in a course without one would be graded with no unit tests). */
+static void test_cases__parts_listed_once_in_order_and_hidden_ones_listed_too(void **state)
+{
+    (void)state;
+    assert_non_null(strstr(load_edited("s/\"part\": 9,/\"part\": 5,/"), "parts[5]: expected \"part\" 1..9 (each once, in increasing order)"));
+    assert_non_null(strstr(load_edited("s/\"part\": 9,/\"part\": 10,/"), "parts[5]: expected \"part\" 1..9"));
+    assert_non_null(strstr(load_edited("s/\"part\": 2,/\"part\": 6,/"), "parts[2]: expected \"part\" 1..9"));
+    char hidden[128];
+    snprintf(hidden, sizeof hidden, "%s/hidden.json", scratch);
+    FILE *f = fopen(hidden, "w");
+    assert_non_null(f);
+    fputs("{\"parts\": [{\"part\": 7, \"cases\": []}]}\n", f);
+    fclose(f);
+    grade_spec spec;
+    pl_diag d = pl_diag_default();
+    assert_int_equal(PL_ERR_PARSE, grade_spec_load(GRADE_CASES, hidden, &spec, &d));
+    assert_non_null(strstr(d.error, "part 7 has hidden cases, but grading/cases.json does not list it"));
+}
+
 /* The tasks' shares must account for every unit point and every test: a share left out would be a
  * point nobody can earn, a test left out one that costs nothing. */
 static void test_cases__task_shares_add_up_to_the_part(void **state)
@@ -501,6 +521,7 @@ int readers_tests(void)
         cmocka_unit_test(test_refs__the_json_a_check_needs_is_required),
         cmocka_unit_test(test_refs__the_film_must_be_the_cases),
         cmocka_unit_test(test_cases__every_member_known_and_typed),
+        cmocka_unit_test(test_cases__parts_listed_once_in_order_and_hidden_ones_listed_too),
         cmocka_unit_test(test_cases__task_shares_add_up_to_the_part),
         cmocka_unit_test(test_score__a_task_earns_its_share_when_all_its_tests_pass),
         cmocka_unit_test(test_cases__image_cases_weigh_at_least_the_unit_tests),
