@@ -86,6 +86,7 @@ typedef struct trace_log {
     trace_direct direct;
     int marks;
     int stubs_marked;       /* pl_todo_count() when the last stub was marked */
+    const char *camera_ray_by;  /* who made the sample's camera ray, for its mark: part 1, or part 9's lens */
 } trace_log;
 
 /* ---- output: one line of the tree, as text or as a JSON event ------------------------------- */
@@ -286,7 +287,9 @@ ray trace_camera_ray(ray r)
                                     jnum(r.min_t), "max_t", jnum(r.max_t)),
          "camera ray from " V3 " along " V3 ", t in [%.5g, %.5g]", PXYZ(r.o), XYZ(r.d), (double)r.min_t, (double)r.max_t);
     if (!(r.max_t > r.min_t))
-        mark(t, "the camera ray spans no distance: pixel_sample_ray or camera_generate_ray is a stub or broken");
+        mark(t, "the camera ray spans no distance: %s is a stub or broken",
+             t->camera_ray_by ? t->camera_ray_by : "pixel_sample_ray or camera_generate_ray");
+    t->camera_ray_by = NULL;
     return r;
 }
 
@@ -297,6 +300,13 @@ ray trace_camera_ray(ray r)
 ray trace_lens_ray(const camera *c, ray pinhole, vec2 u, ray r)
 {
     trace_log *t = pl_trace;
+    /* A pinhole ray that spans no distance is part 1's doing, a lens ray that does not part 9's: the
+     * camera ray's mark (trace_camera_ray, next) names the one that made it. */
+    if (!(pinhole.max_t > pinhole.min_t)) return r;
+    if (!(r.max_t > r.min_t)) {
+        t->camera_ray_by = "thin_lens_ray (task 9.2)";
+        return r;
+    }
     vec3 forward = mat4_dir(c->camera_to_world, vec3_make(0.0f, 0.0f, -1.0f));
     vec3 focus = ray_at(&pinhole, c->focal_distance / vec3_dot(pinhole.d, forward));
     vec3 offset = vec3_sub(r.o, c->position), to_focus = vec3_sub(focus, r.o);
