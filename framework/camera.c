@@ -131,12 +131,6 @@ camera camera_cs184_framing(const camera *c, aabb bounds, int width, int height)
     return out;
 }
 
-void camera_apply_lens_flags(camera *c, const options *o)
-{
-    if (o->lens_radius_given) c->lens_radius = o->lens_radius;
-    if (o->focal_distance_given) c->focal_distance = o->focal_distance;
-}
-
 bool camera_uses_cs184_framing(const scene *s, const options *o)
 {
     if (o->framing != FRAMING_AUTO) return o->framing == FRAMING_CS184;

@@ -64,8 +64,13 @@ camera camera_default_framing(aabb bounds);
 camera camera_cs184_framing(const camera *c, aabb bounds, int width, int height);
 
 /* The -b / -d flags: each replaces the camera's value only when it was given on the command line,
- * so a -c settings file's lens survives when they are not. */
-void camera_apply_lens_flags(camera *c, const options *o);
+ * so a -c settings file's lens survives when they are not. Inline: the command line's warnings
+ * (cli.c, linked into the grader too) ask it which lens a render will have. */
+static inline void camera_apply_lens_flags(camera *c, const options *o)
+{
+    if (o->lens_radius_given) c->lens_radius = o->lens_radius;
+    if (o->focal_distance_given) c->focal_distance = o->focal_distance;
+}
 
 /* Whether a render of s under o frames it CS184's way: --camera cs184 says so, --camera literal
  * says not, and by default a file in the course's profile (scene.course_profile, dae.h) is, unless

@@ -373,7 +373,9 @@ int cli_warn_noops(const options *o, const scene *s, pl_diag *d)
 #ifdef PL_HAS_PART9
     /* -d focuses a lens; with no lens (radius 0: no -b, and none from a -c file) the camera is a
      * pinhole, sharp at every distance, and the focal distance changes nothing. */
-    if (o->focal_distance_given && !(camera_for_render(s, o).lens_radius > 0.0f)) {
+    camera lens = s->has_camera ? s->camera : (camera){.lens_radius = CAMERA_DEFAULT_LENS_RADIUS};
+    camera_apply_lens_flags(&lens, o);
+    if (o->focal_distance_given && !(lens.lens_radius > 0.0f)) {
         pl_warn(d, "-d %g has no effect: the lens radius is 0, a pinhole camera, sharp at every distance (-b R gives it a "
                    "lens)", (double)o->focal_distance);
         said++;
