@@ -4,9 +4,8 @@
 # course/alternatives/*.patch is a correct implementation of one part, written from the handout and
 # the headers in another algorithm and another rounding than the solution's. Each is applied to a
 # copy of parts/ and graded as a submission with bin/grade (part isolation: its own part among the
-# solution's others), once per seed; every grading must give that part full marks. A part with no
-# image cases yet (part 9) is judged by its suite at each seed instead. A patch that no longer applies
-# or a grading below full marks fails the run.
+# solution's others), once per seed; every grading must give that part full marks. A patch that no
+# longer applies or a grading below full marks fails the run.
 # Usage: course/alternatives/grade.sh [-s "SEEDS"] [patch ...]
 #   -s "1 2 3"  grade at these seeds (CI: fixed); default: ALT_SEEDS fresh seeds (3) from the kernel
 # (make calibrate-alternatives [ALT_SEEDS=3])
@@ -32,24 +31,6 @@ for patch in "$@"; do
     cp -a "$root/parts" "$sub/"
     if ! patch -s -p1 -d "$sub" < "$patch"; then
         echo "BROKEN  $name: the patch no longer applies"; broken=$((broken + 1)); continue
-    fi
-    # A part the grader has no image cases for yet (grading/cases.json: part 9) is judged by its own
-    # suite alone, in a scratch copy of the tree holding the patched part, at each seed.
-    if ! grep -qE "\"part\": *$part," "$root/grading/cases.json"; then
-        tree="$scratch/$name/tree"
-        mkdir -p "$tree" && (cd "$root" && cp -a Makefile framework tests scenes third_party "$tree"/) &&
-            cp -a "$sub/parts" "$tree/" && mkdir -p "$tree/build" && cp -a "$root/build/release" "$tree/build/" 2>/dev/null
-        if ! make -C "$tree" --no-print-directory "bin/test-part$part" > "$scratch/$name/build.txt" 2>&1; then
-            echo "BROKEN  $name: does not build (see $scratch/$name/build.txt)"; broken=$((broken + 1)); continue
-        fi
-        for seed in $seeds; do
-            if (cd "$tree" && PL_TEST_SEED=$seed "bin/test-part$part" > "$scratch/$name/seed$seed.txt" 2>&1); then
-                echo "FULL    $name: make test-part$part passes at seed $seed (part $part has no image cases yet)"; full=$((full + 1))
-            else
-                echo "SHORT   $name: make test-part$part fails at seed $seed (see $scratch/$name/seed$seed.txt)"; short=$((short + 1))
-            fi
-        done
-        continue
     fi
     for seed in $seeds; do
         out="$scratch/$name/seed$seed"
