@@ -31,7 +31,7 @@ part4-no-roulette-compensation|-r 64 48 -s 16 -m 8 --trace-pixel 20 10 scenes/co
 part4-roulette-test-inverted|-r 64 48 -s 16 -m 8 --trace-pixel 20 10 scenes/cornell_spheres.dae|but divides the throughput by
 part5-standard-deviation-not-error|-r 64 48 -s 64 -l 4 -a 8 0.1 -m 1 --trace-pixel 32 30 scenes/cornell_spheres.dae|adaptive_converged says go on
 stub:parts/part9_lens/lens.c|-r 64 48 -s 2 -m 0 -b 0.1 -d 2.8 --trace-pixel 40 20 scenes/cornell_spheres.dae|the camera ray spans no distance: thin_lens_ray (task 9.2) is a stub
-part9-focus-along-the-ray|-r 64 48 -s 2 -m 0 -b 0.1 -d 2.8 --trace-pixel 5 5 scenes/cornell_spheres.dae|misses the pinhole ray's point on the plane of focus
+part9-focus-along-the-ray|-r 64 48 -s 2 -m 0 -b 0.1 -d 2.8 --trace-pixel 5 5 scenes/cornell_spheres.dae|the lens ray misses the pinhole ray
 part9-lens-in-world-axes|-r 64 48 -s 2 -m 0 -b 0.1 -d 3 --trace-pixel 20 20 scenes/lights_point_dir.dae|the lens ray starts off the lens'
 # A scratch copy of the tree in $1 (the release objects reused: make rebuilds what changes).
 fresh_copy() {
