@@ -140,8 +140,10 @@ strip=${STRIP_TOOL:-}  # the course's stub maker (course/course.mk), absent from
 if [ "$(id -u)" = 0 ] && { [ -z "$strip" ] || [ ! -x "$strip" ]; }; then
     echo "  (no stub maker, not the course's own tree: the sweep is skipped)"
 elif [ "$(id -u)" = 0 ]; then
-    # The needles, hex: solution lines (40+ characters, 8 a file), 48 bytes from the middle of each
-    # reference EXR and of each hidden file. Kept in a file only root can read.
+    # The needles, hex: solution lines (40+ characters, 8 a file), 48 bytes at a quarter, the middle
+    # and three quarters of each reference EXR and of each hidden file (three: a chunk the public
+    # files share is dropped below, and a hidden cases.json is mostly the same JSON as the public
+    # one). Kept in a file only root can read.
     needles=$out/needles
     hexof() { od -An -tx1 -v | tr -d ' \n'; }
     : >"$needles.raw"
@@ -155,8 +157,10 @@ elif [ "$(id -u)" = 0 ]; then
     # grade holds the same bytes; its EXR, the reference itself, is.)
     for f in $(find reference_images grading/hidden -type f); do
         case "$f" in reference_images/part*/*.png) continue ;; esac
-        size=$(wc -c <"$f"); [ "$size" -ge 96 ] || continue
-        tail -c +$((size / 2)) "$f" | head -c 48 | hexof >>"$needles.raw"; echo >>"$needles.raw"
+        size=$(wc -c <"$f"); [ "$size" -ge 192 ] || continue
+        for at in $((size / 4)) $((size / 2)) $((size * 3 / 4)); do
+            tail -c +"$at" "$f" | head -c 48 | hexof >>"$needles.raw"; echo >>"$needles.raw"
+        done
     done
     # A secret the student release also holds is no secret (a solution line that repeats framework
     # code, a hidden scene's chunk that a public scene shares): those needles are dropped.
