@@ -8,6 +8,7 @@
 #include "cli.h"
 #include "dae.h"
 #include "camera.h"
+#include "envmap.h"
 #include <errno.h>
 #include <limits.h>
 #include <stdlib.h>
@@ -49,7 +50,11 @@ void cli_print_usage(FILE *f, const char *prog)
             "  -t N        render threads (1); also --threads N\n"
             "  -m N        max ray depth: 0 emission only, 1 direct light, ... (1)\n"
             "  -o 0|1      1: add up all bounces; 0: only the bounce at depth -m (1)\n"
-            "  -e FILE     environment map (not supported yet)\n"
+#ifdef PL_HAS_PART8
+            "  -e FILE     environment map: a latitude-longitude OpenEXR image lighting the scene from afar (part 8)\n"
+#else
+            "  -e FILE     environment map: a latitude-longitude OpenEXR image, seen where rays leave the scene\n"
+#endif
 #ifdef PL_HAS_PART9
             "  -b R        lens radius (0: a pinhole, or the -c file's): the thin lens of part 9\n"
             "  -d D        focal distance: the plane of focus lies D in front of the camera (4.7, or the -c file's)\n"
@@ -299,7 +304,6 @@ static pl_status check_options(const options *o, pl_diag *d)
     if (o->sample_end > o->spp)
         return pl_fail(d, PL_ERR_INVALID, "--samples %d:%d: B must be at most -s %d", o->sample_begin, o->sample_end, o->spp);
     if (check_trace_flags(o, d) != PL_OK) return PL_ERR_INVALID;
-    if (o->envmap) return pl_fail(d, PL_ERR_INVALID, "-e %s: environment maps are not supported yet", o->envmap);
     if (o->film_fd >= 0 && (o->output || o->heatmap))
         return pl_fail(d, PL_ERR_INVALID, "--film-fd %d: the film goes to the descriptor; no -f or --heatmap with it", o->film_fd);
     return PL_OK;
@@ -370,6 +374,14 @@ int cli_warn_noops(const options *o, const scene *s, pl_diag *d)
                        "-H or bounces (-m 2 and more) gather from them; light sampling has nothing to sample", name);
         said++;
     }
+#ifndef PL_HAS_PART8
+    /* -e: the framework shows the map where rays leave the scene; lighting by it is part 8's. */
+    if (s->env && !o->normals) {
+        pl_warn(d, "-e %s: this course has no environment light part, so the map is seen where rays leave the scene "
+                   "but lights nothing", s->env->path);
+        said++;
+    }
+#endif
 #ifdef PL_HAS_PART9
     /* -d focuses a lens; with no lens (radius 0: no -b, and none from a -c file) the camera is a
      * pinhole, sharp at every distance, and the focal distance changes nothing. */

@@ -56,4 +56,22 @@ pl_status exr_read_info(const char *path, exr_info *info, int *width, int *heigh
 /* Whether the render was adaptive (-a in its command): its pixels hold from 1 to N samples. */
 bool exr_info_adaptive(const exr_info *info);
 
+/* ---- any RGB image: environment maps (envmap.h) ----------------------------------------------
+ * Unlike a film, such an image comes from anywhere (a sky tool, an HDRI library): every
+ * compression OpenEXR decodes, half or float, R G B of any single-part scanline file, other
+ * channels ignored. Texels are interleaved R G B floats, row 0 the top of the data window. */
+typedef struct {
+    int width, height;
+    float *texels;  /* 3 * width * height floats (owned by whoever read or made it) */
+} exr_rgb_image;
+
+/* Writes user (an exr_rgb_image) as R, G, B floats, ZIP: the output module's encoder type. */
+pl_status exr_encode_rgb(FILE *f, const void *user, pl_diag *diag);
+
+/* Reads path's R, G and B as floats (out->texels allocated here; free it). Refused, naming the file and
+ * what was expected: a tiled or multi-part file, a missing or subsampled R, G or B, more than
+ * max_side texels a side or max_pixels in all (checked before anything is allocated), and any value
+ * that is not finite (named by its position and channel); values below 0 read as 0, with a warning. */
+pl_status exr_read_rgb(const char *path, int max_side, long max_pixels, exr_rgb_image *out, pl_diag *diag);
+
 #endif

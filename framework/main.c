@@ -12,6 +12,7 @@
 #include "cli.h"
 #include "clock.h"
 #include "dae.h"
+#include "envmap.h"
 #include "camera_file.h"
 #include "render.h"
 #include "sidecar.h"
@@ -115,6 +116,16 @@ static int load(const options *o, scene *s, const char *prog)
                                        (float)(s->camera.position.y - s->origin[1]),
                                        (float)(s->camera.position.z - s->origin[2]));
         s->has_camera = true;
+    }
+    /* -e: the map is the scene's (scene_free releases it), so every later step finds it there. */
+    if (o->envmap) {
+        s->env = calloc(1, sizeof *s->env);
+        pl_status st = s->env ? envmap_load(o->envmap, s->env, &diag)
+                              : pl_fail(&diag, PL_ERR_NOMEM, "-e %s: out of memory", o->envmap);
+        if (st != PL_OK) {
+            scene_free(s);
+            return fail(prog, &diag, 2);
+        }
     }
     return 0;
 }

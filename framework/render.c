@@ -3,6 +3,7 @@
 #include "check.h"
 #include "clock.h"
 #include "counters.h"
+#include "envmap.h"
 #include "trace.h"
 #include "../parts/part1_raygen/part1.h"  /* call sites of the parts (framework/README.md) */
 #include "../parts/part3_direct/part3.h"
@@ -83,8 +84,12 @@ rgb radiance_estimate(const render_ctx *ctx, ray *r, rng *g)
     /* Normal shading reads h->n only and spawns no ray: the hit's refinement is skipped (the trace
      * keeps its own path, which describes the hit in full). */
     bool found = o->normals && !pl_trace ? accel_intersect_bare(ctx->accel, r, &h) : render_intersect(ctx, r, &h);
-    if (!found) return rgb_gray(0.0f);
-    if (o->normals) return SEAM_RGB(normal_shade, ctx, r, &h, normal_shade(&h));
+    if (o->normals) return found ? SEAM_RGB(normal_shade, ctx, r, &h, normal_shade(&h)) : rgb_gray(0.0f);
+    /* A ray that leaves the scene sees the environment map, if any: emission seen directly, counted
+     * when zero_bounce_radiance's would be. */
+    if (!found)
+        return ctx->scene->env && (o->accumulate || o->max_depth == 0) ? envmap_radiance(ctx->scene->env, r->d)
+                                                                      : rgb_gray(0.0f);
 
     /* Emission seen directly counts when bounces accumulate, or when it is the only bounce asked for. */
     rgb L = (o->accumulate || o->max_depth == 0) ? SEAM_RGB(zero_bounce_radiance, ctx, r, &h, zero_bounce_radiance(ctx, r, &h))

@@ -3,6 +3,7 @@
 #include "buf.h"
 #include "check.h"
 #include "counters.h"
+#include "envmap.h"
 #include "spawn.h"
 #include "../parts/part1_raygen/part1.h"  /* call sites of the parts (framework/README.md) */
 #include <stdlib.h>
@@ -17,6 +18,8 @@ void scene_free(scene *s)
     if (!s) return;
     void *owned[] = {s->triangles, s->spheres, s->materials, s->lights};
     for (size_t i = 0; i < sizeof owned / sizeof owned[0]; i++) free(owned[i]);
+    envmap_free(s->env);
+    free(s->env);
     memset(s, 0, sizeof *s);
 }
 

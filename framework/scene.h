@@ -16,6 +16,8 @@
 #include "ray.h"
 #include "camera.h"
 
+struct envmap;
+
 /* What the file asked for. Parts 1-5 shade every material as diffuse + emission; the others load
  * (with one warning) so course scenes that use them still render. */
 typedef enum {
@@ -84,6 +86,8 @@ typedef struct scene {
      * its file's origin renders with the precision of one at it: float has 1/16 m steps at 10^6 m.
      * Add it back to report a position in the file's coordinates (the trace does). */
     double origin[3];
+    /* -e's environment map (envmap.h), owned; NULL for none. Rays that leave the scene see it. */
+    struct envmap *env;
 } scene;
 
 /* Releases the arrays and zeroes s. NULL-safe. */

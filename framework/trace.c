@@ -9,6 +9,7 @@
  * throughput, the roulette's verdict): a line marked !! is a place where the two disagree. The
  * trace runs the very render code on one pixel, so it shows what the render computed, not a model. */
 #include "trace.h"
+#include "envmap.h"
 #include "accel.h"
 #include "frame.h"
 #include "sampler.h"
@@ -365,8 +366,14 @@ static void describe_hit(trace_log *t, const char *role, const ray *r, bool foun
 {
     const scene *s = t->ctx->scene;
     if (!found) {
-        emit(t, "miss", json_pack("{s:s, s:o, s:o}", "role", role, "origin", jpoint(t, r->o), "direction", jvec(r->d)),
-             "%s from " V3 " along " V3 ": misses everything", role, PXYZ(r->o), XYZ(r->d));
+        /* A camera ray that leaves the scene sees the environment map (render.c adds it). */
+        bool sees_map = s->env && !strcmp(role, "camera ray");
+        rgb Le = sees_map ? envmap_radiance(s->env, r->d) : rgb_gray(0.0f);
+        char seen[128] = "";
+        if (sees_map) snprintf(seen, sizeof seen, "; sees the environment map: radiance " V3, RGB(Le));
+        json_t *ev = json_pack("{s:s, s:o, s:o}", "role", role, "origin", jpoint(t, r->o), "direction", jvec(r->d));
+        if (sees_map && ev) json_object_set_new(ev, "environment", jrgb(Le));
+        emit(t, "miss", ev, "%s from " V3 " along " V3 ": misses everything%s", role, PXYZ(r->o), XYZ(r->d), seen);
         return;
     }
     bool tri = h->prim < s->num_triangles;

@@ -1,8 +1,8 @@
 # The fuzzers (not part of any assignment): libFuzzer through Debian's clang, with ASan + UBSan, one
 # per reader of files pathlab did not write itself:
 #   scene  the scene loader (fuzz_scene.c; seeds fuzz/corpus, dictionary fuzz/dae.dict)
-#   film   the film reader and --merge (fuzz_film.c; seeds: tests/data/make_hostile_films.py's films
-#          and a real render's two ranges)
+#   film   the film reader, --merge and the environment map reader (fuzz_film.c; seeds:
+#          tests/data/make_hostile_films.py's films, a real render's two ranges, a small sky map)
 #   json   the grader's cases and reference JSON readers (fuzz_json.c; seeds grading/ and
 #          reference_images/ JSON)
 #   suite  the grader's test-results reader (fuzz_suite.c; seeds: part 1's suite's own XML)
@@ -46,12 +46,13 @@ bin/fuzz/fuzz_%: $(FUZZ_BUILD)/fuzz/fuzz_%.o $(FUZZ_LIB_OBJ)
 	$(Q)$(FUZZ_CC) -fsanitize=fuzzer,address,undefined -o $@ $^ $(LDLIBS) $(GRADER_LIBS)
 
 # The seeds are the project's own files, made fresh: what pathlab writes and reads.
-fuzz-seeds: $(BIN)/pathtracer $(BIN)/test-part1
+fuzz-seeds: $(BIN)/pathtracer $(BIN)/imgtool $(BIN)/test-part1
 	@rm -rf $(FUZZ_BUILD)/seeds && mkdir -p $(FUZZ_SEEDS_film) $(FUZZ_SEEDS_json) $(FUZZ_SEEDS_suite)
 	$(Q)python3 tests/data/make_hostile_films.py $(FUZZ_SEEDS_film) >/dev/null && rm $(FUZZ_SEEDS_film)/manifest.txt
 	$(Q)for r in 0:1 1:2; do $(BIN)/pathtracer -q -r 8 6 -s 2 --samples $$r -f $(FUZZ_SEEDS_film)/render$${r%:*}.exr \
 	      scenes/cornell_spheres.dae || exit 1; rm $(FUZZ_SEEDS_film)/render$${r%:*}.json; done
 	$(Q)cat $(FUZZ_SEEDS_film)/render0.exr $(FUZZ_SEEDS_film)/render1.exr > $(FUZZ_SEEDS_film)/render_pair.exr
+	$(Q)$(BIN)/imgtool sky $(FUZZ_SEEDS_film)/sky.exr 16 8
 	$(Q)n=0; for f in grading/cases.json $(wildcard grading/hidden/cases.json) reference_images/*/*.json; do \
 	      n=$$((n + 1)); cp $$f $(FUZZ_SEEDS_json)/$$n.json; done
 	$(Q)CMOCKA_MESSAGE_OUTPUT=xml CMOCKA_XML_FILE='$(FUZZ_SEEDS_suite)/%g.xml' $(BIN)/test-part1 >/dev/null 2>&1 || true

@@ -2,9 +2,10 @@
  * The film fuzzer (libFuzzer, `make fuzz FUZZ_TARGET=film`): every input is one or two range files
  * as a broken copy or an attacker would write them (a second OpenEXR magic number, past the first
  * file's start, begins the second file). Each is read and checked (exr_read_info, exr_read: the
- * strict reader) and then both are merged by `pathtracer --merge` itself (range_merge_main) into a
- * scratch file. Refusals are the expected outcome; only crashes, sanitizer reports, leaks and
+ * strict reader) and as an environment map (envmap_load: exr.h's reader of any RGB image), and then
+ * both are merged by `pathtracer --merge` itself (range_merge_main) into a scratch file. Refusals are the expected outcome; only crashes, sanitizer reports, leaks and
  * allocations over the 1 GB limit (-malloc_limit_mb) count. */
+#include "../framework/envmap.h"
 #include "../framework/exr.h"
 #include "../framework/range.h"
 #include <stdio.h>
@@ -51,6 +52,8 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
         int w, h;
         exr_read_info(in[k], &info, &w, &h, &quiet);
         if (exr_read(in[k], &f, &info, &quiet) == PL_OK) film_free(&f);
+        envmap e;
+        if (envmap_load(in[k], &e, &quiet) == PL_OK) envmap_free(&e);
     }
     char *argv[] = {"pathtracer", "--merge", "-q", "-f", out, in[0], split < size ? in[1] : NULL, NULL};
     range_merge_main(split < size ? 7 : 6, argv, "fuzz");

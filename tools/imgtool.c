@@ -9,12 +9,18 @@
  *   imgtool sub A B OUT.png|OUT.hdr       max(A - B, 0) per channel, e.g. indirect light alone =
  *                                         (-m 5 render) - (-m 1 render)
  *   imgtool montage OUT.png A.png B.png   PNGs of one size side by side, to see a ladder of figures
+ *   imgtool sky OUT.exr [W H]             environment maps (-e) made here, free to ship: a clear sky
+ *   imgtool studio OUT.exr [W H]          with a sun, or a dark studio with three soft boxes; W x H
+ *                                         texels, 512 x 256 by default (framework/envmap.h)
  *
  * Exit status: 0 done, 1 an image could not be read or written, 2 bad usage. */
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include "../framework/envmap.h"
+#include "../framework/exr.h"
 #include "../framework/image.h"
+#include "../framework/output.h"
 #include "../framework/stats.h"
 
 #define MONTAGE_MAX 32
@@ -131,10 +137,89 @@ done:
     return status;
 }
 
+/* ---- sky, studio: environment maps made in code ------------------------------------------------- */
+/* Each texel holds the radiance at its centre's direction (envmap.h's mapping), so a map of any size
+ * is the same sky. The figures are radiance in the scenes' units, chosen so that the Cornell boxes'
+ * materials come out at a similar brightness as under their own lights. */
+
+/* The angle in radians between unit directions a and b. */
+static float angle_between(vec3 a, vec3 b) { return acosf(fminf(1.0f, fmaxf(-1.0f, vec3_dot(a, b)))); }
+
+/* A clear sky: blue overhead, pale at the horizon, a sun 3 degrees across (2.6 W/m^2 of irradiance at
+ * normal incidence, about what the sky gives a surface facing up) 35 degrees above the horizon, and
+ * a dim brown ground below the horizon. */
+static rgb sky_radiance(vec3 d)
+{
+    vec3 sun = vec3_normalize(vec3_make(-0.6f, 0.574f, -0.557f));  /* elevation 35 degrees */
+    if (angle_between(d, sun) < deg_to_rad(1.5f)) return rgb_make(1250.0f, 1150.0f, 1000.0f);
+    if (d.y < 0.0f) return rgb_make(0.12f, 0.10f, 0.08f);
+    float t = powf(1.0f - d.y, 3.0f);  /* 0 overhead, 1 at the horizon */
+    rgb zenith = rgb_make(0.20f, 0.38f, 0.85f), horizon = rgb_make(0.85f, 0.90f, 1.0f);
+    return rgb_add(rgb_scale(zenith, 1.0f - t), rgb_scale(horizon, t));
+}
+
+/* A photographer's studio: a dark room, a large key light up and to one side, a dimmer fill on the
+ * other, a narrow strip behind; each a box of constant radiance in (elevation, azimuth). */
+static rgb studio_radiance(vec3 d)
+{
+    vec2 a = envmap_angles(d);
+    float elev = 90.0f - rad_to_deg(a.x), azim = rad_to_deg(a.y);
+    struct { float e0, e1, a0, a1; float L; } box[] = {
+        {25.0f, 55.0f, 200.0f, 240.0f, 12.0f},  /* key */
+        {5.0f, 30.0f, 300.0f, 330.0f, 3.0f},    /* fill */
+        {10.0f, 70.0f, 85.0f, 95.0f, 8.0f},     /* strip behind */
+    };
+    for (size_t i = 0; i < sizeof box / sizeof box[0]; i++)
+        if (elev >= box[i].e0 && elev < box[i].e1 && azim >= box[i].a0 && azim < box[i].a1) return rgb_gray(box[i].L);
+    return d.y < 0.0f ? rgb_gray(0.05f) : rgb_gray(0.02f);
+}
+
+static int cmd_envmap(const char *kind, const char *out, int w, int h)
+{
+    rgb (*radiance)(vec3) = strcmp(kind, "sky") == 0 ? sky_radiance : studio_radiance;
+    pl_diag d = pl_diag_default();
+    output_set set;
+    if (output_plan_merge(&set, out, NULL, 0, &d) != PL_OK) {
+        fprintf(stderr, "imgtool: %s\n", d.error);
+        return 1;
+    }
+    exr_rgb_image img = {w, h, malloc(3 * (size_t)w * (size_t)h * sizeof(float))};
+    int status = 1;
+    if (!img.texels) fprintf(stderr, "imgtool: out of memory\n");
+    for (int y = 0; img.texels && y < h; y++)
+        for (int x = 0; x < w; x++) {
+            float theta = ((float)y + 0.5f) * PL_PI / (float)h, phi = ((float)x + 0.5f) * 2.0f * PL_PI / (float)w;
+            rgb L = radiance(envmap_direction(theta, phi));
+            float *t = &img.texels[3 * ((size_t)y * w + x)];
+            t[0] = L.r, t[1] = L.g, t[2] = L.b;
+        }
+    if (img.texels) {
+        output_bind(&set, OUTPUT_IMAGE, exr_encode_rgb, &img);
+        if (output_write(&set, OUTPUT_IMAGE, OUTPUT_IMAGE, &d) != PL_OK) fprintf(stderr, "imgtool: %s\n", d.error);
+        else status = 0;
+    }
+    free(img.texels);
+    output_free(&set);
+    return status;
+}
+
+/* A map's size on the command line: 2 to ENVMAP_MAX_SIDE texels a side. */
+static bool parse_side(const char *s, int *out)
+{
+    char *end;
+    long v = strtol(s, &end, 10);
+    if (*s == 0 || *end != 0 || v < 2 || v > ENVMAP_MAX_SIDE) {
+        fprintf(stderr, "imgtool: %s: expected a size of 2 to %d texels\n", s, ENVMAP_MAX_SIDE);
+        return false;
+    }
+    *out = (int)v;
+    return true;
+}
+
 static int usage(void)
 {
     fprintf(stderr, "usage: imgtool stats FILE | mean FILE | relmse CANDIDATE REFERENCE | sub A B OUT |\n"
-                    "       montage OUT.png A.png B.png ... (at most %d)\n", MONTAGE_MAX);
+                    "       montage OUT.png A.png B.png ... (at most %d) | sky|studio OUT.exr [W H]\n", MONTAGE_MAX);
     return 2;
 }
 
@@ -147,5 +232,10 @@ int main(int argc, char **argv)
     if (strcmp(cmd, "sub") == 0 && argc == 5) return cmd_pair(argv[2], argv[3], argv[4]);
     if (strcmp(cmd, "montage") == 0 && argc >= 4 && argc - 3 <= MONTAGE_MAX)
         return cmd_montage(argv[2], argc - 3, argv + 3);
+    if ((strcmp(cmd, "sky") == 0 || strcmp(cmd, "studio") == 0) && (argc == 3 || argc == 5)) {
+        int w = 512, h = 256;
+        if (argc == 5 && (!parse_side(argv[3], &w) || !parse_side(argv[4], &h))) return 2;
+        return cmd_envmap(cmd, argv[2], w, h);
+    }
     return usage();
 }

@@ -20,6 +20,7 @@ int stats_tests(void);    /* the statistics the tests and the grader share (fram
 int spawn_tests(void);      /* leaving a surface: offset ray origins (framework/spawn.c) */
 int placement_tests(void);  /* a scene renders the same wherever it sits (framework/dae.c's origin) */
 int parallel_tests(void);   /* parallel_for: every call once, the work counted for the caller */
+int envmap_tests(void);     /* environment maps: the mapping, reading one, a render seeing it */
 
 int main(void)
 {
@@ -45,5 +46,6 @@ int main(void)
     failed += spawn_tests();
     failed += placement_tests();
     failed += parallel_tests();
+    failed += envmap_tests();
     return failed ? 1 : 0;
 }

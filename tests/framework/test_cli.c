@@ -5,6 +5,9 @@
 #include "../../framework/camera.h"
 #include "../../framework/cli.h"
 #include "../../framework/dae.h"
+#include "../../framework/envmap.h"
+#include <stdio.h>
+#include <stdlib.h>
 #include <string.h>
 
 /* Parses a NULL-terminated list of arguments (after the program name). */
@@ -103,7 +106,6 @@ static void test_cli__bad_values_are_named(void **state)
     expect_error((const char *[]){"--bogus", "s.dae", NULL}, "unknown option '--bogus'");
     expect_error((const char *[]){NULL}, "expected a scene file");
     expect_error((const char *[]){"a.dae", "b.dae", NULL}, "expected one scene file");
-    expect_error((const char *[]){"-e", "sky.exr", "s.dae", NULL}, "not supported yet");
     expect_error((const char *[]){"--camera", "orbit", "s.dae", NULL}, "--camera: expected literal or cs184, got 'orbit'");
     expect_error((const char *[]){"s.dae", "--camera", NULL}, "--camera: expected literal or cs184, got 'nothing'");
 }
@@ -216,6 +218,28 @@ static void test_cli_warn_noops__lens_flags_that_change_nothing(void **state)
 }
 #endif
 
+/* -e in a course without part 8: the map is seen, and the warning says it lights nothing; not with
+ * --normals, where no map is seen either. */
+static void test_cli_warn_noops__an_environment_map_without_its_part(void **state)
+{
+    (void)state;
+#ifdef PL_HAS_PART8
+    skip();
+#else
+    scene s;
+    floor_scene(&s, true, false);
+    s.env = calloc(1, sizeof *s.env);
+    assert_int_equal(PL_OK, envmap_make_constant(s.env, 4, 2, rgb_gray(1.0f)));
+    snprintf(s.env->path, sizeof s.env->path, "sky.exr");
+    warn_log w = noops((const char *[]){"-e", "sky.exr", "s.dae", NULL}, &s);
+    assert_int_equal(1, w.count);
+    assert_non_null(strstr(w.all, "-e sky.exr: this course has no environment light part, so the map is seen where rays "
+                                  "leave the scene but lights nothing"));
+    assert_int_equal(0, noops((const char *[]){"--normals", "-e", "sky.exr", "s.dae", NULL}, &s).count);
+    scene_free(&s);
+#endif
+}
+
 /* The status line names the framing in use and the option that gives the other. */
 static void test_camera_framing_line__names_the_framing_and_the_other(void **state)
 {
@@ -259,6 +283,7 @@ int cli_tests(void)
         cmocka_unit_test(test_cli__camera_option_selects_the_framing),
         cmocka_unit_test(test_cli_warn_noops__a_scene_without_lights_says_its_image_is_black),
         cmocka_unit_test(test_cli_warn_noops__lens_flags_that_change_nothing),
+        cmocka_unit_test(test_cli_warn_noops__an_environment_map_without_its_part),
         cmocka_unit_test(test_camera_framing_line__names_the_framing_and_the_other),
     };
     return cmocka_run_group_tests_name("cli", tests, NULL, NULL);

@@ -1,0 +1,79 @@
+/* Environment maps (envmap.h): reading one, and the latitude-longitude mapping. */
+#include "envmap.h"
+#include "exr.h"
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+
+/* ---- making and freeing ------------------------------------------------------------------------ */
+
+static pl_status envmap_alloc(envmap *e, int width, int height, pl_diag *diag)
+{
+    memset(e, 0, sizeof *e);
+    if (width < 1 || height < 1 || width > ENVMAP_MAX_SIDE || height > ENVMAP_MAX_SIDE ||
+        (long)width * height > ENVMAP_MAX_TEXELS)
+        return pl_fail(diag, PL_ERR_INVALID, "an environment map of %dx%d texels: expected 1 to %d a side and at "
+                       "most %ld in all", width, height, ENVMAP_MAX_SIDE, ENVMAP_MAX_TEXELS);
+    e->texels = malloc((size_t)width * height * sizeof *e->texels);
+    if (!e->texels) return pl_fail(diag, PL_ERR_NOMEM, "out of memory for a %dx%d environment map", width, height);
+    e->width = width, e->height = height;
+    return PL_OK;
+}
+
+pl_status envmap_make_constant(envmap *e, int width, int height, rgb L)
+{
+    pl_status s = envmap_alloc(e, width, height, NULL);
+    for (long k = 0; s == PL_OK && k < (long)width * height; k++) e->texels[k] = L;
+    return s;
+}
+
+pl_status envmap_load(const char *path, envmap *e, pl_diag *diag)
+{
+    memset(e, 0, sizeof *e);
+    exr_rgb_image img;
+    pl_status s = exr_read_rgb(path, ENVMAP_MAX_SIDE, ENVMAP_MAX_TEXELS, &img, diag);
+    if (s == PL_OK) s = envmap_alloc(e, img.width, img.height, diag);
+    for (long k = 0; s == PL_OK && k < (long)img.width * img.height; k++)
+        e->texels[k] = rgb_make(img.texels[3 * k], img.texels[3 * k + 1], img.texels[3 * k + 2]);
+    if (s == PL_OK) snprintf(e->path, sizeof e->path, "%s", path);
+    free(img.texels);
+    return s;
+}
+
+void envmap_free(envmap *e)
+{
+    if (!e) return;
+    free(e->texels);
+    memset(e, 0, sizeof *e);
+}
+
+/* ---- the mapping ------------------------------------------------------------------------------- */
+
+vec2 envmap_angles(vec3 d)
+{
+    float len = vec3_length(d);
+    float y = len > 0.0f ? d.y / len : 1.0f;
+    /* Rounding can take |y| a hair past 1, where acos is NaN. */
+    float theta = acosf(fminf(1.0f, fmaxf(-1.0f, y)));
+    return vec2_make(theta, atan2f(-d.z, d.x) + PL_PI);
+}
+
+vec3 envmap_direction(float theta, float phi)
+{
+    float s = sinf(theta);
+    /* x = cos(phi - pi) sin(theta), z = -sin(phi - pi) sin(theta): CS184's, written without the shift. */
+    return vec3_make(-cosf(phi) * s, cosf(theta), sinf(phi) * s);
+}
+
+rgb envmap_texel(const envmap *e, int x, int y) { return e->texels[(size_t)y * e->width + x]; }
+
+rgb envmap_radiance(const envmap *e, vec3 d)
+{
+    vec2 a = envmap_angles(d);
+    /* phi = 2 pi (d.z = -0 on the -x axis) and theta = pi land one past the last texel: clamped. */
+    int x = (int)(a.y * (0.5f / PL_PI) * (float)e->width);
+    int y = (int)(a.x / PL_PI * (float)e->height);
+    x = x < 0 ? 0 : x >= e->width ? e->width - 1 : x;
+    y = y < 0 ? 0 : y >= e->height ? e->height - 1 : y;
+    return envmap_texel(e, x, y);
+}

@@ -1,0 +1,46 @@
+/* An environment map: radiance arriving from infinitely far away in every direction, stored as a
+ * latitude-longitude (equirectangular) image, read from an OpenEXR file (`-e map.exr`).
+ *
+ * The mapping is CS184's, so its maps and its renders line up with ours:
+ *   theta = acos(d.y)             in [0, pi]:  0 is straight up (world +Y), the top row;
+ *   phi   = atan2(-d.z, d.x) + pi in [0, 2 pi]: the column, left to right;
+ *   texel (x, y) spans phi in [x, x + 1) * 2 pi / width and theta in [y, y + 1) * pi / height.
+ * Radiance is piecewise constant: a direction sees the texel it falls in, with no filtering, so
+ * the radiance a sampler returns and the one a ray that leaves the scene sees are the same
+ * function, and a texel's share of the sphere is exactly what its solid angle says. */
+#ifndef PL_ENVMAP_H
+#define PL_ENVMAP_H
+
+#include "part_api.h"
+#include "status.h"
+#include "vec.h"
+
+/* The maps a render accepts: 8192 texels a side, 2^24 in all (a 4096x2048 HDRI is 2^23). A map is
+ * read whole into memory, 12 bytes a texel. */
+#define ENVMAP_MAX_SIDE 8192
+#define ENVMAP_MAX_TEXELS (1L << 24)
+
+typedef struct envmap {
+    int width, height;  /* texels: phi across, theta down */
+    rgb *texels;        /* width * height, row-major, row 0 at theta = 0 (owned) */
+    char path[512];     /* the file it came from ("" for a map made in code) */
+} envmap;
+
+/* Reads a map (exr.h's exr_read_rgb: any single-part scanline RGB file, every value finite; values
+ * below 0 read as 0, with a warning). Errors name the file and what was expected. */
+pl_status envmap_load(const char *path, envmap *e, pl_diag *diag);
+/* A map of width x height texels, every one radiance L (tests, the constant sky). */
+pl_status envmap_make_constant(envmap *e, int width, int height, rgb L);
+/* Releases the texels and zeroes e. NULL-safe. */
+void envmap_free(envmap *e);
+
+/* The angles of direction d (need not be unit): (theta, phi) as above. */
+PL_PART_API vec2 envmap_angles(vec3 d);
+/* The unit direction of angles (theta, phi): the inverse of envmap_angles. */
+PL_PART_API vec3 envmap_direction(float theta, float phi);
+/* The radiance arriving from direction d: the texel d falls in. */
+PL_PART_API rgb envmap_radiance(const envmap *e, vec3 d);
+/* The texel (x, y) itself; x in [0, width), y in [0, height). */
+PL_PART_API rgb envmap_texel(const envmap *e, int x, int y);
+
+#endif
