@@ -78,6 +78,9 @@ void cli_print_usage(FILE *f, const char *prog)
             "  --cs184-camera    the same as --camera cs184\n"
             "  --no-bvh          intersect by linear scan even when part 2 is implemented\n"
             "  --no-rr           no Russian roulette: every path runs to -m bounces (part 4)\n"
+#ifdef PL_HAS_PART8
+            "  --env-uniform     sample -e's map uniformly over the sphere (task 8.1), not by importance\n"
+#endif
             "  --leaf-size N     BVH max primitives per leaf (4)\n"
             "  --max-primitives N  refuse scenes with more triangles + spheres (2000000; guards memory)\n"
             "  --max-instances N   refuse scenes whose nodes expand to more instances (1000000; guards time)\n"
@@ -218,6 +221,7 @@ static int parse_long_flag(int argc, char **argv, int i, options *o, pl_status *
     }
     else if (!strcmp(a, "--no-bvh")) o->linear_scan = true;
     else if (!strcmp(a, "--no-rr")) o->no_roulette = true;
+    else if (!strcmp(a, "--env-uniform")) o->env_uniform = true;
     else if (!strcmp(a, "--leaf-size")) *s = parse_int(a, VALUE(1), 1, 255, &o->max_leaf_size, d), taken = 1;
     else if (!strcmp(a, "--max-primitives")) {
         int v = 0;
@@ -381,7 +385,18 @@ int cli_warn_noops(const options *o, const scene *s, pl_diag *d)
                    "but lights nothing", s->env->path);
         said++;
     }
+#else
+    /* -H finds light only by hitting emitters; a map is reached by light sampling alone. */
+    if (s->env && o->hemisphere && !o->normals && o->max_depth >= 1) {
+        pl_warn(d, "-H with -e %s: hemisphere sampling finds light only where its rays hit an emitter, so the map lights "
+                   "nothing (without -H it lights through light sampling)", s->env->path);
+        said++;
+    }
 #endif
+    if (o->env_uniform && !s->env) {
+        pl_warn(d, "--env-uniform has no effect: there is no environment map (-e map.exr)");
+        said++;
+    }
 #ifdef PL_HAS_PART9
     /* -d focuses a lens; with no lens (radius 0: no -b, and none from a -c file) the camera is a
      * pinhole, sharp at every distance, and the focal distance changes nothing. */

@@ -2,6 +2,7 @@
 #include "envmap.h"
 #include "exr.h"
 #include <math.h>
+#include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 
@@ -76,4 +77,54 @@ rgb envmap_radiance(const envmap *e, vec3 d)
     x = x < 0 ? 0 : x >= e->width ? e->width - 1 : x;
     y = y < 0 ? 0 : y >= e->height ? e->height - 1 : y;
     return envmap_texel(e, x, y);
+}
+
+/* ---- part 8's tables ------------------------------------------------------------------------- */
+
+pl_status env_distribution_alloc(env_distribution *d, int width, int height)
+{
+    memset(d, 0, sizeof *d);
+    d->marginal_cdf = calloc((size_t)height + 1, sizeof *d->marginal_cdf);
+    d->conditional_cdf = calloc((size_t)height * ((size_t)width + 1), sizeof *d->conditional_cdf);
+    if (!d->marginal_cdf || !d->conditional_cdf) {
+        env_distribution_free(d);
+        return PL_ERR_NOMEM;
+    }
+    d->width = width, d->height = height;
+    return PL_OK;
+}
+
+void env_distribution_free(env_distribution *d)
+{
+    if (!d) return;
+    free(d->marginal_cdf);
+    free(d->conditional_cdf);
+    memset(d, 0, sizeof *d);
+}
+
+/* Whether c, of n intervals (n + 1 entries), is a CDF; if not, why says what is wrong with it. */
+static bool cdf_ok(const float *c, int n, const char *name, char *why, size_t size)
+{
+    if (c[0] != 0.0f) return snprintf(why, size, "%s: entry 0 is %g, expected 0", name, (double)c[0]), false;
+    for (int i = 1; i <= n; i++)
+        if (!isfinite(c[i]) || c[i] < c[i - 1])
+            return snprintf(why, size, "%s: entry %d is %g, below entry %d's %g or not a number", name, i, (double)c[i],
+                            i - 1, (double)c[i - 1]), false;
+    if (fabsf(c[n] - 1.0f) > 1e-5f) return snprintf(why, size, "%s: entry %d, the last, is %g: expected 1", name, n, (double)c[n]), false;
+    return true;
+}
+
+bool env_distribution_check(env_distribution *d, char *why, size_t size)
+{
+    d->valid = false;
+    if (!cdf_ok(d->marginal_cdf, d->height, "marginal_cdf", why, size)) return false;
+    for (int y = 0; y < d->height; y++) {
+        char name[48];
+        snprintf(name, sizeof name, "conditional_cdf row %d", y);
+        /* A row the marginal never draws may hold anything finite in order; it must still be a CDF,
+         * so that a sampler reading it cannot run off its end. */
+        if (!cdf_ok(d->conditional_cdf + (size_t)y * (d->width + 1), d->width, name, why, size)) return false;
+    }
+    d->valid = true;
+    return true;
 }

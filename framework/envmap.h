@@ -14,6 +14,7 @@
 #include "part_api.h"
 #include "status.h"
 #include "vec.h"
+#include <stddef.h>
 
 /* The maps a render accepts: 8192 texels a side, 2^24 in all (a 4096x2048 HDRI is 2^23). A map is
  * read whole into memory, 12 bytes a texel. */
@@ -42,5 +43,25 @@ PL_PART_API vec3 envmap_direction(float theta, float phi);
 PL_PART_API rgb envmap_radiance(const envmap *e, vec3 d);
 /* The texel (x, y) itself; x in [0, width), y in [0, height). */
 PL_PART_API rgb envmap_texel(const envmap *e, int x, int y);
+
+/* ---- importance sampling the map: part 8's tables -----------------------------------------------
+ * A texel (x, y) is drawn in two steps, each inverting a cumulative distribution (CDF): first its
+ * row y from the marginal CDF, then its column x from row y's conditional CDF. The framework
+ * allocates the tables (zeroed) and frees them; part 8's env_build_distribution fills them. */
+typedef struct env_distribution {
+    int width, height;       /* the map's */
+    float *marginal_cdf;     /* height + 1 entries: P(row < y); [0] = 0, [height] = 1 */
+    float *conditional_cdf;  /* height rows of width + 1 entries: row y's P(column < x | y); each row
+                                [0] = 0, [width] = 1 (a row of no weight: any CDF, it is never drawn) */
+    bool valid;              /* env_distribution_check found them to be CDFs */
+} env_distribution;
+
+pl_status env_distribution_alloc(env_distribution *d, int width, int height);
+/* Releases the tables and zeroes d. NULL-safe. */
+void env_distribution_free(env_distribution *d);
+/* Whether d's tables are CDFs: finite, from 0, never decreasing, ending at 1 (within 1e-5, the
+ * rounding of a float sum). Sets d->valid; when they are not, why names the first entry that is
+ * not ("conditional_cdf row 3: entry 5 is 0.2, below entry 4's 0.3"). */
+bool env_distribution_check(env_distribution *d, char *why, size_t size);
 
 #endif

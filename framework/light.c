@@ -6,6 +6,13 @@
 #include "sampler.h"
 #include "spawn.h"
 #include "trace.h"
+#include "envmap.h"
+#include "todo.h"
+#ifdef PL_HAS_PART8
+#include "../parts/part8_envlight/part8.h"  /* call sites of the parts (framework/README.md) */
+#endif
+#include <math.h>
+#include <stdlib.h>
 #include <string.h>
 
 bool light_is_delta(const light *l)
@@ -110,6 +117,27 @@ static bool sample_ambient(const light *l, vec2 u, light_sample *out)
     return out->pdf > 0.0f;
 }
 
+/* The environment map, through part 8: importance sampling by its tables (task 8.4), or uniform
+ * sampling of the sphere (task 8.1) under --env-uniform. Tables that are not CDFs (a stubbed or
+ * broken task 8.2) light the scene in the stubs' magenta from straight up, so the picture says so
+ * rather than crashing a sampler that trusts them. Without part 8 the light does not exist. */
+static bool sample_environment(const light *l, vec2 u, light_sample *out)
+{
+    out->dist = INFINITY;
+    out->point = vec3_make(0.0f, 0.0f, 0.0f);  /* at infinity: unused */
+    out->is_delta = false;
+    out->pdf = 0.0f;
+#ifdef PL_HAS_PART8
+    if (!l->env_dist) out->L = env_sample_uniform(l->env, u, &out->wi, &out->pdf);
+    else if (l->env_dist->valid) out->L = env_sample_importance(l->env, l->env_dist, u, &out->wi, &out->pdf);
+    else out->wi = vec3_make(0.0f, 1.0f, 0.0f), out->pdf = 1.0f, out->L = rgb_magenta();
+#else
+    (void)l, (void)u;
+    out->wi = vec3_make(0.0f, 1.0f, 0.0f), out->L = rgb_gray(0.0f);
+#endif
+    return out->pdf > 0.0f && isfinite(out->pdf);
+}
+
 static bool sample_light(const light *l, vec3 p, vec2 u, light_sample *out)
 {
     switch (l->kind) {
@@ -118,6 +146,7 @@ static bool sample_light(const light *l, vec3 p, vec2 u, light_sample *out)
     case LIGHT_DIRECTIONAL: return sample_directional(l, out);
     case LIGHT_AREA:        return sample_area(l, p, u, out);
     case LIGHT_AMBIENT:     return sample_ambient(l, u, out);
+    case LIGHT_ENVIRONMENT: return sample_environment(l, u, out);
     }
     return false;
 }
@@ -145,3 +174,25 @@ bool light_sample_L(const light *l, vec3 p, vec2 u, light_sample *out)
     if (pl_trace) trace_light(l, p, u, ok, out);
     return ok;
 }
+
+#ifdef PL_HAS_PART8
+pl_status light_add_environment(scene *s, bool uniform, pl_diag *diag)
+{
+    light l;
+    memset(&l, 0, sizeof l);
+    l.kind = LIGHT_ENVIRONMENT;
+    l.env = s->env;
+    if (!uniform) {
+        s->env_dist = calloc(1, sizeof *s->env_dist);
+        if (!s->env_dist || env_distribution_alloc(s->env_dist, s->env->width, s->env->height) != PL_OK)
+            return pl_fail(diag, PL_ERR_NOMEM, "-e %s: out of memory for the importance-sampling tables", s->env->path);
+        env_build_distribution(s->env, s->env_dist);
+        char why[160];
+        if (!env_distribution_check(s->env_dist, why, sizeof why))
+            pl_warn(diag, "task 8.2, env_build_distribution: %s; the environment lights in magenta until its tables "
+                          "are CDFs", why);
+        l.env_dist = s->env_dist;
+    }
+    return scene_add_light(s, l) >= 0 ? PL_OK : pl_fail(diag, PL_ERR_NOMEM, "out of memory for a light");
+}
+#endif

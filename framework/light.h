@@ -7,6 +7,7 @@
 
 #include <stdbool.h>
 #include "scene.h"
+#include "status.h"
 
 typedef struct {
     rgb L;        /* incident radiance arriving at p along -wi (already attenuated for point/spot) */
@@ -26,6 +27,11 @@ PL_PART_API bool light_sample_L(const light *l, vec3 p, vec2 u, light_sample *ou
  * direction (its unit normal on that side), with no attenuation. Every area light is made here, so
  * that its area and spawn_ray_to_light's offset terms are never left for its maker to fill. */
 light light_make_area(vec3 position, vec3 edge_u, vec3 edge_v, vec3 direction, rgb radiance);
+
+/* Makes s->env a light (LIGHT_ENVIRONMENT) with part 8: with uniform (--env-uniform) sampled by
+ * task 8.1; otherwise by task 8.4 from the tables task 8.2 builds here, which are checked first
+ * (tables that are not CDFs get a warning naming the entry, and the light shines magenta). */
+pl_status light_add_environment(scene *s, bool uniform, pl_diag *diag);
 
 /* True for lights with a single direction (one sample per shading point suffices). */
 PL_PART_API bool light_is_delta(const light *l);

@@ -13,6 +13,7 @@
 #include "clock.h"
 #include "dae.h"
 #include "envmap.h"
+#include "light.h"
 #include "camera_file.h"
 #include "render.h"
 #include "sidecar.h"
@@ -122,6 +123,10 @@ static int load(const options *o, scene *s, const char *prog)
         s->env = calloc(1, sizeof *s->env);
         pl_status st = s->env ? envmap_load(o->envmap, s->env, &diag)
                               : pl_fail(&diag, PL_ERR_NOMEM, "-e %s: out of memory", o->envmap);
+#ifdef PL_HAS_PART8
+        /* With part 8 the map is also a light; its tables are built now, once for the render. */
+        if (st == PL_OK) st = light_add_environment(s, o->env_uniform, &diag);
+#endif
         if (st != PL_OK) {
             scene_free(s);
             return fail(prog, &diag, 2);

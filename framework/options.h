@@ -20,6 +20,7 @@ typedef struct {
     int max_depth;            /* -m: max ray depth, 0 = emission only (1) */
     bool accumulate;          /* -o 1: sum all bounces; -o 0: only the bounce at depth -m (1) */
     const char *envmap;       /* -e: environment map file (envmap.h), NULL for none */
+    bool env_uniform;         /* --env-uniform: part 8 samples the map uniformly (task 8.1), not by its tables */
     float lens_radius;        /* -b: aperture radius (0) */
     float focal_distance;     /* -d: focal distance (4.7) */
     bool lens_radius_given;   /* -b given: it replaces the camera's (a -c file's) lens radius */

@@ -17,7 +17,7 @@
 #include <string.h>
 #include <strings.h>
 
-#define MAX_INPUT_BYTES ((size_t)1 << 30)  /* a scene or camera file hashed into the key */
+#define MAX_INPUT_BYTES ((size_t)1 << 30)  /* a scene, camera or map file hashed into the key */
 
 /* ---- provenance: what makes two ranges pieces of one render ---------------------------------- */
 
@@ -53,7 +53,7 @@ static void image_flags(const options *o, char *out, size_t size)
     const struct { bool on; const char *flag; } flags[] = {
         {o->hemisphere, " -H"}, {o->normals, " --normals"}, {o->framing == FRAMING_CS184, " --cs184-camera"},
         {o->framing == FRAMING_LITERAL, " --camera literal"},
-        {o->linear_scan, " --no-bvh"}, {o->no_roulette, " --no-rr"}};
+        {o->linear_scan, " --no-bvh"}, {o->no_roulette, " --no-rr"}, {o->envmap && o->env_uniform, " --env-uniform"}};
     for (size_t i = 0; i < sizeof flags / sizeof flags[0]; i++)
         if (flags[i].on && n >= 0 && (size_t)n < size) n += snprintf(out + n, size - (size_t)n, "%s", flags[i].flag);
     if (o->adaptive && n >= 0 && (size_t)n < size)
@@ -73,14 +73,15 @@ pl_status range_info_as(const options *o, const char *version, exr_info *info, p
     memset(info, 0, sizeof *info);
     char flags[512];
     image_flags(o, flags, sizeof flags);
-    snprintf(info->command, sizeof info->command, "pathtracer %s%s%s %s", flags, o->camera_file ? " -c " : "",
-             o->camera_file ? o->camera_file : "", o->scene_path);
+    snprintf(info->command, sizeof info->command, "pathtracer %s%s%s%s%s %s", flags, o->envmap ? " -e " : "",
+             o->envmap ? o->envmap : "", o->camera_file ? " -c " : "", o->camera_file ? o->camera_file : "", o->scene_path);
     snprintf(info->version, sizeof info->version, "%s", version);
     uint64_t h = 0xcbf29ce484222325ull;  /* FNV-1a's offset basis */
     h = fnv1a(h, version, strlen(version) + 1);
     h = fnv1a(h, flags, strlen(flags) + 1);
     pl_status s = hash_file(&h, o->scene_path, "scene", diag);
     if (s == PL_OK && o->camera_file) s = hash_file(&h, o->camera_file, "camera settings", diag);
+    if (s == PL_OK && o->envmap) s = hash_file(&h, o->envmap, "environment map", diag);
     if (s != PL_OK) return s;
     snprintf(info->render_key, sizeof info->render_key, "%016" PRIx64, h);
     info->seed = o->seed;

@@ -20,6 +20,8 @@ void scene_free(scene *s)
     for (size_t i = 0; i < sizeof owned / sizeof owned[0]; i++) free(owned[i]);
     envmap_free(s->env);
     free(s->env);
+    env_distribution_free(s->env_dist);
+    free(s->env_dist);
     memset(s, 0, sizeof *s);
 }
 

@@ -17,6 +17,7 @@
 #include "camera.h"
 
 struct envmap;
+struct env_distribution;
 
 /* What the file asked for. Parts 1-5 shade every material as diffuse + emission; the others load
  * (with one warning) so course scenes that use them still render. */
@@ -52,7 +53,8 @@ typedef enum {
     LIGHT_DIRECTIONAL,  /* at infinity: radiance = irradiance on a surface facing it (W/m^2) */
     LIGHT_SPOT,         /* point with a cone: intensity on the axis, falloff outside */
     LIGHT_AREA,         /* CGL parallelogram, one-sided: radiance = emitted radiance */
-    LIGHT_AMBIENT       /* CS184: uniform radiance from the whole upper hemisphere (world +Y) */
+    LIGHT_AMBIENT,      /* CS184: uniform radiance from the whole upper hemisphere (world +Y) */
+    LIGHT_ENVIRONMENT   /* -e's map, at infinity in every direction: radiance per texel (envmap.h) */
 } light_kind;
 
 typedef struct {
@@ -68,6 +70,10 @@ typedef struct {
     float falloff_exp;     /* spot: exponent of the cos falloff inside the cone */
     float leave_base;      /* area: how far short of it a shadow ray ends, along direction:   */
     float leave_per_m;     /*   leave_base + leave_per_m * distance (light_make_area, spawn.h) */
+    /* environment: the map, and part 8's tables for importance sampling it (NULL: the map is
+     * sampled uniformly, --env-uniform); both the scene's */
+    const struct envmap *env;
+    const struct env_distribution *env_dist;
 } light;
 
 typedef struct scene {
@@ -86,8 +92,11 @@ typedef struct scene {
      * its file's origin renders with the precision of one at it: float has 1/16 m steps at 10^6 m.
      * Add it back to report a position in the file's coordinates (the trace does). */
     double origin[3];
-    /* -e's environment map (envmap.h), owned; NULL for none. Rays that leave the scene see it. */
+    /* -e's environment map (envmap.h), owned; NULL for none. Rays that leave the scene see it, and
+     * in a course with part 8 it is also a light (LIGHT_ENVIRONMENT) whose importance-sampling
+     * tables env_dist holds (owned; NULL when the map is sampled uniformly). */
     struct envmap *env;
+    struct env_distribution *env_dist;
 } scene;
 
 /* Releases the arrays and zeroes s. NULL-safe. */

@@ -33,6 +33,10 @@
     X(at_least_one_bounce_radiance, "4.1")   \
     X(russian_roulette, "4.2")               \
     X(adaptive_converged, "5.1")             \
+    X(env_sample_uniform, "8.1")             \
+    X(env_build_distribution, "8.2")         \
+    X(env_pdf, "8.3")                        \
+    X(env_sample_importance, "8.4")          \
     X(lens_sample_disk, "9.1")               \
     X(thin_lens_ray, "9.2")
 
@@ -41,6 +45,10 @@
     X(render_occluded, 1)                    \
     X(one_bounce_radiance, 1)                \
     X(light_sample_L, 1)                     \
+    X(envmap_radiance, 0)                    \
+    X(envmap_texel, 0)                       \
+    X(envmap_direction, 0)                   \
+    X(envmap_angles, 0)                      \
     X(rng_uniform, 1)                        \
     X(light_is_delta, 0)                     \
     X(scene_prim_intersect, 0)               \

@@ -489,6 +489,35 @@ bool trace_occluded(const render_ctx *ctx, const ray *r)
 
 /* One light sample, with what it adds by the framework's own visibility test: the shadow ray the
  * framework would spawn (spawn_ray_to_light), so the trace and a correct part agree on every sample. */
+/* An environment sample against the two facts that make it one (part 8): its radiance is the map's
+ * in its direction, and its pdf is the density of the way it was drawn: 1 / (4 pi) for uniform
+ * sampling (task 8.1), p(x, y) w h / (2 pi^2 sin(theta)) from the tables for importance sampling
+ * (tasks 8.3, 8.4). A direction on a texel's edge may be given either texel: not judged there. */
+static void check_environment(trace_log *t, const light *l, const light_sample *ls)
+{
+    const envmap *e = l->env;
+    vec2 a = envmap_angles(ls->wi);
+    double u = a.y / (2.0 * PL_PI) * e->width, v = a.x / PL_PI * e->height;
+    int x = (int)fmin(fmax(floor(u), 0.0), e->width - 1), y = (int)fmin(fmax(floor(v), 0.0), e->height - 1);
+    if (fabs(u - floor(u + 0.5)) < 1e-4 || fabs(v - floor(v + 0.5)) < 1e-4) return;
+    rgb want = envmap_texel(e, x, y);
+    if (ls->L.r != want.r || ls->L.g != want.g || ls->L.b != want.b)
+        mark(t, "the environment sample's radiance " V3 " is not the map's in its direction, texel (%d, %d): " V3
+             " (return the radiance of the direction you chose)", RGB(ls->L), x, y, RGB(want));
+    double pdf = 1.0 / (4.0 * PL_PI);
+    const env_distribution *d = l->env_dist;
+    if (d) {
+        const float *row = d->conditional_cdf + (size_t)y * (e->width + 1);
+        double p = ((double)d->marginal_cdf[y + 1] - d->marginal_cdf[y]) * ((double)row[x + 1] - row[x]);
+        double sin_theta = hypot(ls->wi.x, ls->wi.z) / vec3_length(ls->wi);
+        pdf = p * e->width * e->height / (2.0 * PL_PI * PL_PI * sin_theta);
+    }
+    if (!(fabs(ls->pdf - pdf) <= 1e-3 * pdf))
+        mark(t, "the environment sample's pdf %.6g is not the density of its direction, %.6g (%s)", (double)ls->pdf, pdf,
+             d ? "texel (x, y)'s probability in the tables times w h / (2 pi^2 sin(theta)): task 8.3, handout/part8.md"
+               : "uniform over the sphere: 1 / (4 pi), task 8.1");
+}
+
 void trace_light(const light *l, vec3 p, vec2 u, bool ok, const light_sample *ls)
 {
     trace_log *t = pl_trace;
@@ -524,13 +553,15 @@ void trace_light(const light *l, vec3 p, vec2 u, bool ok, const light_sample *ls
          json_pack("{s:i, s:b, s:o, s:o, s:o, s:o, s:o, s:b, s:o}", "light", (int)index, "ok", 1, "direction", jvec(ls->wi),
                    "distance", jnum(ls->dist), "pdf", jnum(ls->pdf), "radiance", jrgb(ls->L), "cosine",
                    jnum(cosine), "occluded", !visible, "contribution", jrgb(visible ? c : rgb_gray(0))),
-         "light %ld: direction " V3 ", distance %.6g, pdf %.6g, radiance " V3 ", cos %.5g, %s, adds " V3, index,
+         "light %ld%s: direction " V3 ", distance %.6g, pdf %.6g, radiance " V3 ", cos %.5g, %s, adds " V3, index,
+         l->kind != LIGHT_ENVIRONMENT ? "" : l->env_dist ? " (the environment map, task 8.4)" : " (the environment map, task 8.1)",
          XYZ(ls->wi), (double)ls->dist, (double)ls->pdf, RGB(ls->L), (double)cosine,
          cosine <= 0.0f ? "light behind the surface (cos <= 0)" : visible ? "visible" : "occluded",
          RGB(visible ? c : rgb_gray(0)));
     if (!rgb_is_black(bright))
         mark(t, "bsdf_f is " V3 " here: a diffuse f is at most 1/pi = 0.3183, or the surface reflects more light "
              "than it receives", RGB(bright));
+    if (l->kind == LIGHT_ENVIRONMENT && l->env) check_environment(t, l, ls);
 }
 
 /* A draw from the generator during part 4's path: the first four of each vertex are kept, so the

@@ -15,8 +15,8 @@ spheres=scenes/cornell_spheres.dae
 empty=scenes/cornell_empty.dae
 only=${1:-all}
 case "$only" in
-    all|part1|part2|part3|part4|part5|part9) ;;
-    *) echo "usage: handout/figures.sh [all|part1|part2|part3|part4|part5|part9]" >&2; exit 2 ;;
+    all|part1|part2|part3|part4|part5|part8|part9) ;;
+    *) echo "usage: handout/figures.sh [all|part1|part2|part3|part4|part5|part8|part9]" >&2; exit 2 ;;
 esac
 
 ${MAKE:-make} --no-print-directory -s "$BIN/pathtracer" "$BIN/imgtool" "$BIN/acne_figure"
@@ -78,6 +78,13 @@ if want part5; then
     # 5.1: adaptive sampling and its sample-rate map (written beside it as *_rate.png)
     run $d/bunny_adaptive.png $T $R -s 1024 -a 64 0.05 -l 1 -m 5 $bunny
     run $d/spheres_adaptive.png $T $R -s 1024 -a 64 0.05 -l 1 -m 5 $spheres
+fi
+if want part8 && [ -d parts/part8_envlight ]; then
+    d=$OUT/part8
+    # 8.1 against 8.4: the sky at the same samples, uniform then by importance; then the studio, all bounces
+    run $d/sky_uniform.png $T $R -s 16 -m 1 --env-uniform -e scenes/sky.exr scenes/env_shapes.dae
+    run $d/sky_importance.png $T $R -s 16 -m 1 -e scenes/sky.exr scenes/env_shapes.dae
+    run $d/studio.png $T $R -s 64 -m 5 -e scenes/studio.exr scenes/env_shapes.dae
 fi
 if want part9 && [ -d parts/part9_lens ]; then
     d=$OUT/part9
