@@ -122,6 +122,20 @@ static pl_status exr_fail(pl_diag *diag, const char *what, exr_result_t r)
     return pl_fail(diag, PL_ERR_IO, "%s: OpenEXR: %s", what, exr_get_default_error_message(r));
 }
 
+/* A write context on file's descriptor, stored in *fd (OpenEXR's write_at reads it there, so it must
+ * outlive the context). Whatever file has buffered goes first: OpenEXR writes at offsets from 0. */
+static exr_result_t start_write(FILE *file, int *fd, const char *name, exr_context_t *x)
+{
+    exr_context_initializer_t init = EXR_DEFAULT_CONTEXT_INITIALIZER;
+    *fd = fileno(file);
+    init.user_data = fd;
+    init.write_fn = write_at;
+    init.error_handler_fn = quiet_errors;
+    *x = NULL;
+    fflush(file);
+    return exr_start_write(x, name, EXR_WRITE_FILE_DIRECTLY, &init);
+}
+
 /* The provenance as five string attributes (range.c says what each is for); numbers as decimal
  * text, which the reader parses back strictly. */
 static exr_result_t set_attributes(exr_context_t x, const exr_info *info)
@@ -172,18 +186,12 @@ pl_status exr_encode(FILE *file, const void *user, pl_diag *diag)
 {
     const exr_image *img = user;
     const film *f = img->film;
-    int fd = fileno(file);
+    int fd;
     channel table[NUM_CHANNELS];
     channel_table(table);
-
-    exr_context_initializer_t init = EXR_DEFAULT_CONTEXT_INITIALIZER;
-    init.user_data = &fd;
-    init.write_fn = write_at;
-    init.error_handler_fn = quiet_errors;
     exr_context_t x = NULL;
     int part = 0;
-    fflush(file);  /* anything buffered in f goes first; OpenEXR writes at offsets from 0 */
-    exr_result_t r = exr_start_write(&x, "film.exr", EXR_WRITE_FILE_DIRECTLY, &init);
+    exr_result_t r = start_write(file, &fd, "film.exr", &x);
     if (r == EXR_ERR_SUCCESS) r = exr_add_part(x, "film", EXR_STORAGE_SCANLINE, &part);
     /* ZIP (zlib) is lossless and deterministic: the same film gives the same bytes. */
     if (r == EXR_ERR_SUCCESS) r = exr_initialize_required_attr_simple(x, part, f->width, f->height, EXR_COMPRESSION_ZIP);
@@ -452,15 +460,10 @@ pl_status exr_read(const char *path, film *out, exr_info *info, pl_diag *diag)
 pl_status exr_encode_rgb(FILE *file, const void *user, pl_diag *diag)
 {
     const exr_rgb_image *img = user;
-    int fd = fileno(file);
-    exr_context_initializer_t init = EXR_DEFAULT_CONTEXT_INITIALIZER;
-    init.user_data = &fd;
-    init.write_fn = write_at;
-    init.error_handler_fn = quiet_errors;
+    int fd;
     exr_context_t x = NULL;
     int part = 0;
-    fflush(file);
-    exr_result_t r = exr_start_write(&x, "image.exr", EXR_WRITE_FILE_DIRECTLY, &init);
+    exr_result_t r = start_write(file, &fd, "image.exr", &x);
     if (r == EXR_ERR_SUCCESS) r = exr_add_part(x, "image", EXR_STORAGE_SCANLINE, &part);
     if (r == EXR_ERR_SUCCESS) r = exr_initialize_required_attr_simple(x, part, img->width, img->height, EXR_COMPRESSION_ZIP);
     for (int c = 0; c < 3 && r == EXR_ERR_SUCCESS; c++) {

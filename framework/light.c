@@ -7,7 +7,6 @@
 #include "spawn.h"
 #include "trace.h"
 #include "envmap.h"
-#include "todo.h"
 #ifdef PL_HAS_PART8
 #include "../parts/part8_envlight/part8.h"  /* call sites of the parts (framework/README.md) */
 #endif

@@ -32,7 +32,9 @@ part4-roulette-test-inverted|-r 64 48 -s 16 -m 8 --trace-pixel 20 10 scenes/corn
 part5-standard-deviation-not-error|-r 64 48 -s 64 -l 4 -a 8 0.1 -m 1 --trace-pixel 32 30 scenes/cornell_spheres.dae|adaptive_converged says go on
 stub:parts/part9_lens/lens.c|-r 64 48 -s 2 -m 0 -b 0.1 -d 2.8 --trace-pixel 40 20 scenes/cornell_spheres.dae|the camera ray spans no distance: thin_lens_ray (task 9.2) is a stub
 part9-focus-along-the-ray|-r 64 48 -s 2 -m 0 -b 0.1 -d 2.8 --trace-pixel 5 5 scenes/cornell_spheres.dae|the lens ray misses the pinhole ray
-part9-lens-in-world-axes|-r 64 48 -s 2 -m 0 -b 0.1 -d 3 --trace-pixel 20 20 scenes/lights_point_dir.dae|the lens ray starts off the lens'
+part9-lens-in-world-axes|-r 64 48 -s 2 -m 0 -b 0.1 -d 3 --trace-pixel 20 20 scenes/lights_point_dir.dae|the lens ray starts off the lens
+part8-pdf-missing-sine|-r 32 24 -s 1 -m 1 -l 3 -e scenes/sky.exr --trace-pixel 6 3 scenes/env_shapes.dae|is not the density of its direction
+part8-conditional-row-stride-width|-r 32 24 -s 4 -m 1 -l 4 -e scenes/sky.exr --trace-pixel 6 3 scenes/env_shapes.dae|is not the density of its direction'
 # A scratch copy of the tree in $1 (the release objects reused: make rebuilds what changes).
 fresh_copy() {
     rm -rf "$1" && mkdir -p "$1"
@@ -71,9 +73,11 @@ done || failed=1
 
 # Correct code, traced widely: no mark anywhere.
 sweep='-m 1 -l 4|-m 1 -l 4 -H|-m 2 -o 0 -l 1|-m 3 -o 0 -l 4|-m 5 -l 2|-m 5 -l 4 -H|-m 4 -o 0 --no-rr -l 2|-m 8 -o 1 -l 1|-m 2 -l 2 -b 0.15 -d 3'
-scenes='cornell_spheres cornell_two_lights lights_point_dir cornell_grazing'
+scenes='cornell_spheres cornell_two_lights lights_point_dir cornell_grazing env_shapes'
+# env_shapes has no light of its own: it is swept under its two maps instead (part 8).
+env_sweep='-m 1 -l 4 -e scenes/sky.exr|-m 3 -l 2 --env-uniform -e scenes/studio.exr|-m 2 -l 2 -e scenes/studio.exr'
 for alt in solution "$root"/course/alternatives/part3-*.patch "$root"/course/alternatives/part4-*.patch \
-           "$root"/course/alternatives/part9-*.patch; do
+           "$root"/course/alternatives/part8-*.patch "$root"/course/alternatives/part9-*.patch; do
     name=$(basename "$alt" .patch) dir=$root
     if [ "$alt" != solution ]; then
         dir="$scratch/alt-$name"
@@ -83,7 +87,7 @@ for alt in solution "$root"/course/alternatives/part3-*.patch "$root"/course/alt
     marks=0 traces=0 first=
     for scene in $scenes; do
         for pixel in "20 10" "33 30" "50 40"; do
-            echo "$sweep" | tr '|' '\n' > "$scratch/sweep.txt"
+            if [ "$scene" = env_shapes ]; then echo "$env_sweep"; else echo "$sweep"; fi | tr '|' '\n' > "$scratch/sweep.txt"
             while read -r flags; do
                 cmd="$flags -r 64 48 -s 16 --seed 7 --trace-pixel $pixel scenes/$scene.dae"
                 n=$(cd "$dir" && bin/pathtracer $cmd 2>/dev/null | grep -c '^ *!! ')
