@@ -24,18 +24,6 @@ rgb env_sample_uniform(const envmap *e, vec2 u, vec3 *wi, float *pdf)
     /* STUB: *wi = vec3_make(0.0f, 1.0f, 0.0f); *pdf = 1.0f; return PL_TODO_RGB("8.1", "env_sample_uniform"); */
 }
 
-/* === PART 8 | TASK 8.2 | env_build_distribution =======================================
- * The tables that importance-sample the map (handout/part8.md, section 8.2).
- * In:  e, the map (e->width x e->height texels); d, tables the framework allocated for it.
- * Out: d->marginal_cdf[y] = P(row < y) and, for each row y, d->conditional_cdf[y (width + 1) + x]
- *      = P(column < x | row y), for texel weights w(x, y) = luminance(texel) * sin(theta_y),
- *      theta_y the polar angle of row y's centre, (y + 1/2) pi / height.
- * Must: each table starts at 0, never decreases and ends at 1; a texel's probability is
- *       proportional to its weight (sin(theta) because a row near a pole covers less of the
- *       sphere); a row of weight 0 still gets a CDF (any, say uniform): it is never drawn; an all-
- *       black map gets uniform tables.
- * Test: make test-part8
- * ====================================================================================== */
 /* BEGIN SOLUTION */
 /* Turns n weights into a CDF of n + 1 entries, summed in double; all-zero weights give the uniform
  * CDF. Returns the weights' total. */
@@ -65,6 +53,18 @@ static double row_weight(const envmap *e, int y, int unused)
 }
 /* END SOLUTION */
 
+/* === PART 8 | TASK 8.2 | env_build_distribution =======================================
+ * The tables that importance-sample the map (handout/part8.md, section 8.2).
+ * In:  e, the map (e->width x e->height texels); d, tables the framework allocated for it.
+ * Out: d->marginal_cdf[y] = P(row < y) and, for each row y, d->conditional_cdf[y (width + 1) + x]
+ *      = P(column < x | row y), for texel weights w(x, y) = luminance(texel) * sin(theta_y),
+ *      theta_y the polar angle of row y's centre, (y + 1/2) pi / height.
+ * Must: each table starts at 0, never decreases and ends at 1; a texel's probability is
+ *       proportional to its weight (sin(theta) because a row near a pole covers less of the
+ *       sphere); a row of weight 0 still gets a CDF (any, say uniform): it is never drawn; an all-
+ *       black map gets uniform tables.
+ * Test: make test-part8
+ * ====================================================================================== */
 void env_build_distribution(const envmap *e, env_distribution *d)
 {
     /* BEGIN SOLUTION */
@@ -103,18 +103,6 @@ float env_pdf(const envmap *e, const env_distribution *d, vec3 wi)
     /* STUB: return (float)PL_TODO_FALSE("8.3", "env_pdf"); */
 }
 
-/* === PART 8 | TASK 8.4 | env_sample_importance ==========================================
- * The environment light sampled in proportion to its brightness (handout/part8.md, 8.4).
- * In:  e, d (task 8.2's tables); u in [0,1)^2, uniform.
- * Out: the row y with marginal_cdf[y] <= u.y < marginal_cdf[y + 1], then the column x with the
- *      same property in row y's conditional CDF for u.x, each found by binary search (O(log n));
- *      the point within the texel where each number fell within its step, as angles
- *      theta = (y + fy) pi / height, phi = (x + fx) 2 pi / width; *wi = envmap_direction(theta,
- *      phi); *pdf = env_pdf(e, d, *wi); returns the texel's radiance.
- * Must: the histogram of the directions matches env_pdf (chi-square); the mean of L cos / pdf
- *       equals task 8.1's (the same light), with far less noise on a map with a sun.
- * Test: make test-part8
- * ====================================================================================== */
 /* BEGIN SOLUTION */
 /* The interval i of a CDF of n intervals with cdf[i] <= u < cdf[i + 1]: never an empty one. */
 static int find_interval(const float *cdf, int n, float u)
@@ -129,6 +117,18 @@ static int find_interval(const float *cdf, int n, float u)
 }
 /* END SOLUTION */
 
+/* === PART 8 | TASK 8.4 | env_sample_importance ==========================================
+ * The environment light sampled in proportion to its brightness (handout/part8.md, 8.4).
+ * In:  e, d (task 8.2's tables); u in [0,1)^2, uniform.
+ * Out: the row y with marginal_cdf[y] <= u.y < marginal_cdf[y + 1], then the column x with the
+ *      same property in row y's conditional CDF for u.x, each found by binary search (O(log n));
+ *      the point within the texel where each number fell within its step, as angles
+ *      theta = (y + fy) pi / height, phi = (x + fx) 2 pi / width; *wi = envmap_direction(theta,
+ *      phi); *pdf = env_pdf(e, d, *wi); returns the texel's radiance.
+ * Must: the histogram of the directions matches env_pdf (chi-square); the mean of L cos / pdf
+ *       equals task 8.1's (the same light), with far less noise on a map with a sun.
+ * Test: make test-part8
+ * ====================================================================================== */
 rgb env_sample_importance(const envmap *e, const env_distribution *d, vec2 u, vec3 *wi, float *pdf)
 {
     /* BEGIN SOLUTION */
