@@ -368,8 +368,9 @@ static bool has_emitters(const scene *s)
 int cli_warn_noops(const options *o, const scene *s, pl_diag *d)
 {
     int said = 0;
-    /* No lights: light sampling has nothing to sample. Shading by normals needs none. */
-    if (s->num_lights == 0 && !o->normals) {
+    /* No lights: light sampling has nothing to sample. Shading by normals needs none, and a map (-e)
+     * is seen where rays leave the scene: the warning below says what it lights. */
+    if (s->num_lights == 0 && !o->normals && !s->env) {
         const char *name = s->path[0] ? s->path : "the scene";
         if (!has_emitters(s))
             pl_warn(d, "%s has no lights: the image will be black (it has no <light> and nothing emissive)", name);
