@@ -85,6 +85,7 @@ if want part8 && [ -d parts/part8_envlight ]; then
     run $d/sky_uniform.png $T $R -s 16 -m 1 --env-uniform -e scenes/sky.exr scenes/env_shapes.dae
     run $d/sky_importance.png $T $R -s 16 -m 1 -e scenes/sky.exr scenes/env_shapes.dae
     run $d/studio.png $T $R -s 64 -m 5 -e scenes/studio.exr scenes/env_shapes.dae
+    run $d/open_box_sky.png $T $R -s 64 -m 5 -e scenes/sky.exr scenes/cornell_open.dae
 fi
 if want part9 && [ -d parts/part9_lens ]; then
     d=$OUT/part9

@@ -20,6 +20,7 @@ static const scene_spec SCENES[] = {
     {"scenes/cornell_bunny.dae", 12 + 3674, 0, 1},
     {"scenes/lights_point_dir.dae", 20, 1, 2},
     {"scenes/env_shapes.dae", 20, 1, 0},  /* lit by an environment map (-e): no light of its own */
+    {"scenes/cornell_open.dae", 8, 2, 0},  /* the spheres' box without its ceiling, for an environment map */
     {"scenes/cornell_grazing.dae", 12, 2, 1},  /* 100 m out: its own test below */
     {"scenes/cornell_two_lights.dae", 14, 2, 2},  /* its own test below */
 };
