@@ -242,7 +242,7 @@ static void test_render__rays_that_leave_the_scene_see_the_map(void **state)
     bool part1_solved = pl_todo_count() == 0;
     tiny_world_destroy(w);
 
-    char map[128], out[128], cmd[512];
+    char map[128], out[128], cmd[1024];
     snprintf(map, sizeof map, "%s/constant.exr", dir);
     snprintf(out, sizeof out, "%s/seen.hdr", dir);
     float texels[3 * 4 * 2];
