@@ -514,7 +514,7 @@ static void check_environment(trace_log *t, const light *l, const light_sample *
     }
     if (!(fabs(ls->pdf - pdf) <= 1e-3 * pdf))
         mark(t, "the environment sample's pdf %.6g is not the density of its direction, %.6g (%s)", (double)ls->pdf, pdf,
-             d ? "texel (x, y)'s probability in the tables times w h / (2 pi^2 sin(theta)): task 8.3, handout/part8.md"
+             d ? "texel (x, y)'s probability in the tables times w h / (2 pi^2 sin(theta)): task 8.3"
                : "uniform over the sphere: 1 / (4 pi), task 8.1");
 }
 
