@@ -489,31 +489,50 @@ bool trace_occluded(const render_ctx *ctx, const ray *r)
 
 /* One light sample, with what it adds by the framework's own visibility test: the shadow ray the
  * framework would spawn (spawn_ray_to_light), so the trace and a correct part agree on every sample. */
+/* The density of direction w if drawn from texel (x, y): the tables' probability of the texel times
+ * the Jacobian w h / (2 pi^2 sin(theta)); 1 / (4 pi) for uniform sampling (no tables). */
+static double environment_pdf(const envmap *e, const env_distribution *d, int x, int y, vec3 w)
+{
+    if (!d) return 1.0 / (4.0 * PL_PI);
+    const float *row = d->conditional_cdf + (size_t)y * (e->width + 1);
+    double p = ((double)d->marginal_cdf[y + 1] - d->marginal_cdf[y]) * ((double)row[x + 1] - row[x]);
+    double sin_theta = hypot(w.x, w.z) / vec3_length(w);
+    return p * e->width * e->height / (2.0 * PL_PI * PL_PI * sin_theta);
+}
+
 /* An environment sample against the two facts that make it one (part 8): its radiance is the map's
  * in its direction, and its pdf is the density of the way it was drawn: 1 / (4 pi) for uniform
  * sampling (task 8.1), p(x, y) w h / (2 pi^2 sin(theta)) from the tables for importance sampling
- * (tasks 8.3, 8.4). A direction on a texel's edge may be given either texel: not judged there. */
+ * (tasks 8.3, 8.4). A direction within 1e-4 of a texel's edge may belong to either texel (its
+ * angles were rounded to floats): either one's radiance and density are right there. */
 static void check_environment(trace_log *t, const light *l, const light_sample *ls)
 {
     const envmap *e = l->env;
+    const env_distribution *d = l->env_dist;
     vec2 a = envmap_angles(ls->wi);
     double u = a.y / (2.0 * PL_PI) * e->width, v = a.x / PL_PI * e->height;
     int x = (int)fmin(fmax(floor(u), 0.0), e->width - 1), y = (int)fmin(fmax(floor(v), 0.0), e->height - 1);
-    if (fabs(u - floor(u + 0.5)) < 1e-4 || fabs(v - floor(v + 0.5)) < 1e-4) return;
+    /* The texel, and the one across each edge the direction is within 1e-4 of (phi wraps around). */
+    int xs[2] = {x, x}, ys[2] = {y, y};
+    if (u - floor(u) < 1e-4) xs[1] = (x + e->width - 1) % e->width;
+    else if (ceil(u) - u < 1e-4) xs[1] = (x + 1) % e->width;
+    if (v - floor(v) < 1e-4 && y > 0) ys[1] = y - 1;
+    else if (ceil(v) - v < 1e-4 && y < e->height - 1) ys[1] = y + 1;
+    bool radiance_ok = false, pdf_ok = false;
+    for (int i = 0; i < 2; i++)
+        for (int j = 0; j < 2; j++) {
+            rgb T = envmap_texel(e, xs[i], ys[j]);
+            radiance_ok |= ls->L.r == T.r && ls->L.g == T.g && ls->L.b == T.b;
+            double pdf = environment_pdf(e, d, xs[i], ys[j], ls->wi);
+            pdf_ok |= fabs(ls->pdf - pdf) <= 1e-3 * pdf;
+        }
     rgb want = envmap_texel(e, x, y);
-    if (ls->L.r != want.r || ls->L.g != want.g || ls->L.b != want.b)
+    if (!radiance_ok)
         mark(t, "the environment sample's radiance " V3 " is not the map's in its direction, texel (%d, %d): " V3
              " (return the radiance of the direction you chose)", RGB(ls->L), x, y, RGB(want));
-    double pdf = 1.0 / (4.0 * PL_PI);
-    const env_distribution *d = l->env_dist;
-    if (d) {
-        const float *row = d->conditional_cdf + (size_t)y * (e->width + 1);
-        double p = ((double)d->marginal_cdf[y + 1] - d->marginal_cdf[y]) * ((double)row[x + 1] - row[x]);
-        double sin_theta = hypot(ls->wi.x, ls->wi.z) / vec3_length(ls->wi);
-        pdf = p * e->width * e->height / (2.0 * PL_PI * PL_PI * sin_theta);
-    }
-    if (!(fabs(ls->pdf - pdf) <= 1e-3 * pdf))
-        mark(t, "the environment sample's pdf %.6g is not the density of its direction, %.6g (%s)", (double)ls->pdf, pdf,
+    if (!pdf_ok)
+        mark(t, "the environment sample's pdf %.6g is not the density of its direction, %.6g (%s)", (double)ls->pdf,
+             environment_pdf(e, d, x, y, ls->wi),
              d ? "texel (x, y)'s probability in the tables times w h / (2 pi^2 sin(theta)): task 8.3"
                : "uniform over the sphere: 1 / (4 pi), task 8.1");
 }
