@@ -141,9 +141,9 @@ if [ "$(id -u)" = 0 ] && { [ -z "$strip" ] || [ ! -x "$strip" ]; }; then
     echo "  (no stub maker, not the course's own tree: the sweep is skipped)"
 elif [ "$(id -u)" = 0 ]; then
     # The needles, hex: solution lines (40+ characters, 8 a file), 48 bytes at a quarter, the middle
-    # and three quarters of each reference EXR and of each hidden file (three: a chunk the public
-    # files share is dropped below, and a hidden cases.json is mostly the same JSON as the public
-    # one). Kept in a file only root can read.
+    # and three quarters of each reference EXR, and at every sixteenth of each hidden file (a chunk
+    # the public files share is dropped below, and a hidden cases.json is mostly the same JSON as
+    # the public one). Kept in a file only root can read.
     needles=$out/needles
     hexof() { od -An -tx1 -v | tr -d ' \n'; }
     : >"$needles.raw"
@@ -158,7 +158,12 @@ elif [ "$(id -u)" = 0 ]; then
     for f in $(find reference_images grading/hidden -type f); do
         case "$f" in reference_images/part*/*.png) continue ;; esac
         size=$(wc -c <"$f"); [ "$size" -ge 192 ] || continue
-        for at in $((size / 4)) $((size / 2)) $((size * 3 / 4)); do
+        # A hidden cases file is mostly JSON the public one shares: fifteen places, not three, so
+        # that some of its needles stay secret whatever the parts' cases look like.
+        case "$f" in grading/hidden/*) pieces=16 ;; *) pieces=4 ;; esac
+        i=1
+        while [ $i -lt $pieces ]; do
+            at=$((size * i / pieces)); i=$((i + 1))
             tail -c +"$at" "$f" | head -c 48 | hexof >>"$needles.raw"; echo >>"$needles.raw"
         done
     done
