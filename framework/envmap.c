@@ -71,11 +71,12 @@ rgb envmap_texel(const envmap *e, int x, int y) { return e->texels[(size_t)y * e
 rgb envmap_radiance(const envmap *e, vec3 d)
 {
     vec2 a = envmap_angles(d);
-    /* phi = 2 pi (d.z = -0 on the -x axis) and theta = pi land one past the last texel: clamped. */
-    int x = (int)(a.y * (0.5f / PL_PI) * (float)e->width);
-    int y = (int)(a.x / PL_PI * (float)e->height);
-    x = x < 0 ? 0 : x >= e->width ? e->width - 1 : x;
-    y = y < 0 ? 0 : y >= e->height ? e->height - 1 : y;
+    /* phi = 2 pi (d.z = -0 on the -x axis) and theta = pi land one past the last texel: clamped,
+     * before the conversion to int, so that a NaN direction (a broken part's ray) reads texel 0
+     * rather than converting NaN, which C leaves undefined. */
+    float u = a.y * (0.5f / PL_PI) * (float)e->width, v = a.x / PL_PI * (float)e->height;
+    int x = u >= 0.0f && u < (float)e->width ? (int)u : u >= (float)e->width ? e->width - 1 : 0;
+    int y = v >= 0.0f && v < (float)e->height ? (int)v : v >= (float)e->height ? e->height - 1 : 0;
     return envmap_texel(e, x, y);
 }
 

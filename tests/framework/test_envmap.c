@@ -82,6 +82,9 @@ static void test_envmap_radiance__the_texel_a_direction_falls_in(void **state)
     rgb left_neg = envmap_radiance(&e, vec3_make(-1, 0, -0.0f)), left_pos = envmap_radiance(&e, vec3_make(-1, 0, 1e-7f));
     assert_true(left_neg.r == 7.0f || left_neg.r == 0.0f);
     assert_true(left_pos.r == 0.0f);
+    /* A NaN direction (a broken part's ray) reads a texel of the map, never past it. */
+    rgb lost = envmap_radiance(&e, vec3_make(NAN, 0.0f, NAN));
+    assert_true(lost.r >= 0.0f && lost.r < 8.0f && lost.g >= 0.0f && lost.g < 4.0f);
     envmap_free(&e);
     assert_null(e.texels);
 }
