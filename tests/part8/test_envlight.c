@@ -95,6 +95,11 @@ static void texel_of(const envmap *e, vec3 w, int *x, int *y, double *fx, double
     *fx = u - *x, *fy = v - *y;
 }
 
+/* How far a correct density may be from the closed form near a pole, relative: sin(theta) from
+ * sinf(acosf(w.y)) in float (a natural way to write task 8.3) is off by about 6e-8 / sin(theta)^2
+ * of itself there, so 1e-6 / sin^2 allows it with room; elsewhere this adds nothing. */
+static double pole_rounding(double sin_theta) { return 1e-6 / (sin_theta * sin_theta); }
+
 /* The irradiance of map e on a surface facing +Y, per luminance: the closed form above. */
 static double irradiance_up(const envmap *e)
 {
@@ -291,7 +296,7 @@ static void test_env_pdf__closed_form_in_every_texel(void **state)
                 float pdf = env_pdf(&e, &d, w);
                 assert_implemented();
                 double want = texel_p(&d, x, y) * 16.0 * 8.0 / (2.0 * M_PI * M_PI * sin(theta));
-                if (!(fabs(pdf - want) <= 1e-4 * want + 1e-7)) {
+                if (!(fabs(pdf - want) <= (1e-4 + pole_rounding(sin(theta))) * want + 1e-7)) {
                     double ratio = want > 0.0 ? pdf / want : 0.0;
                     PL_FAIL("wrong: env_pdf at theta = %.4f, phi = %.4f (texel (%d, %d), probability %.5g) is %.6g, "
                             "expected p w h / (2 pi^2 sin(theta)) = %.6g%s", (double)theta, (double)phi, x, y,
@@ -413,7 +418,7 @@ static void test_env_sample_importance__pdf_and_radiance_are_the_directions(void
         /* sin(theta) from the direction itself: acos loses its digits near a pole. */
         double sin_theta = hypot(wi.x, wi.z) / vec3_length(wi);
         double want = texel_p(&d, x, y) * 16.0 * 8.0 / (2.0 * M_PI * M_PI * sin_theta);
-        if (!(fabs(pdf - want) <= 1e-3 * want))
+        if (!(fabs(pdf - want) <= (1e-3 + pole_rounding(sin_theta)) * want))
             PL_FAIL("wrong: env_sample_importance(u = (%.6f, %.6f)) set *pdf = %.6g for a direction in texel (%d, %d), "
                     "whose density is %.6g (env_pdf's closed form)", (double)u.x, (double)u.y, (double)pdf, x, y, want);
         rgb T = envmap_texel(&e, x, y);
