@@ -68,13 +68,19 @@ vec3 envmap_direction(float theta, float phi)
 
 rgb envmap_texel(const envmap *e, int x, int y) { return e->texels[(size_t)y * e->width + x]; }
 
-rgb envmap_radiance(const envmap *e, vec3 d)
+vec2 envmap_texel_coords(const envmap *e, vec3 d)
 {
     vec2 a = envmap_angles(d);
+    return vec2_make(a.y * (0.5f / PL_PI) * (float)e->width, a.x / PL_PI * (float)e->height);
+}
+
+rgb envmap_radiance(const envmap *e, vec3 d)
+{
     /* phi = 2 pi (d.z = -0 on the -x axis) and theta = pi land one past the last texel: clamped,
      * before the conversion to int, so that a NaN direction (a broken part's ray) reads texel 0
      * rather than converting NaN, which C leaves undefined. */
-    float u = a.y * (0.5f / PL_PI) * (float)e->width, v = a.x / PL_PI * (float)e->height;
+    vec2 c = envmap_texel_coords(e, d);
+    float u = c.x, v = c.y;
     int x = u >= 0.0f && u < (float)e->width ? (int)u : u >= (float)e->width ? e->width - 1 : 0;
     int y = v >= 0.0f && v < (float)e->height ? (int)v : v >= (float)e->height ? e->height - 1 : 0;
     return envmap_texel(e, x, y);

@@ -39,6 +39,9 @@ void envmap_free(envmap *e);
 PL_PART_API vec2 envmap_angles(vec3 d);
 /* The unit direction of angles (theta, phi): the inverse of envmap_angles. */
 PL_PART_API vec3 envmap_direction(float theta, float phi);
+/* Where direction d falls on the map, in texels: (x, y) with texel (floor x, floor y) holding it and
+ * the fractions saying where within it (envmap_radiance and the trace read it; not clamped). */
+vec2 envmap_texel_coords(const envmap *e, vec3 d);
 /* The radiance arriving from direction d: the texel d falls in. */
 PL_PART_API rgb envmap_radiance(const envmap *e, vec3 d);
 /* The texel (x, y) itself; x in [0, width), y in [0, height). */

@@ -509,8 +509,8 @@ static void check_environment(trace_log *t, const light *l, const light_sample *
 {
     const envmap *e = l->env;
     const env_distribution *d = l->env_dist;
-    vec2 a = envmap_angles(ls->wi);
-    double u = a.y / (2.0 * PL_PI) * e->width, v = a.x / PL_PI * e->height;
+    vec2 c = envmap_texel_coords(e, ls->wi);
+    double u = c.x, v = c.y;
     int x = (int)fmin(fmax(floor(u), 0.0), e->width - 1), y = (int)fmin(fmax(floor(v), 0.0), e->height - 1);
     /* The texel, and the one across each edge the direction is within 1e-4 of (phi wraps around). */
     int xs[2] = {x, x}, ys[2] = {y, y};
