@@ -36,7 +36,7 @@ $(BIN)/release_points: $(BUILD)/course/release/release_points.o $(BUILD)/grader/
 
 release: $(BIN)/strip_solutions $(BIN)/release_points  ## cut release/student and release/autograder.zip
 	$(Q)bash course/release/cut $(BIN)/strip_solutions $(BIN)/release_points
-	$(Q)bash course/release/bundle
+	$(Q)bash course/release/bundle $(BIN)/release_points
 
 release-check: release $(BIN)/imgtool  ## cut the release, then prove it sound (course/release/check says what)
 	$(Q)bash course/release/check $(BIN)/strip_solutions $(BIN)/imgtool $(BIN)/release_points

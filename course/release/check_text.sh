@@ -53,15 +53,28 @@ check_contents() {
     fi
 }
 
+# The parts the cases files of tree $1 list (read by the grader's own loader, bin/release_points;
+# $2: the hidden file's path, or /nonexistent for the student tree) against the course's: the
+# parts of the repository's files that COURSE_PARTS names, no more and no fewer. Prints the problem
+# ("; ...") or nothing.
+cases_parts_problem() {
+    local got want
+    got=$("$points_tool" "$1/grading/cases.json" "$1/$2" 2>&1 | awk '{ printf "%s ", $1 }')
+    want=$("$points_tool" grading/cases.json "$2" 2>&1 |
+        awk -v parts=" $COURSE_PARTS " 'index(parts, " " $1 " ") { printf "%s ", $1 }')
+    [ "$got" = "$want" ] || printf '; its cases files list parts %s(the course'"'"'s: %s)' "${got:-none }" "$want"
+}
+
 # Nothing hidden in the student tree: no grading/hidden or reference_images/hidden, no case marked
 # hidden in any JSON file (the grader's own case loader, bin/release_points, counts no hidden
 # points in its grading/cases.json), and no file with the bytes of a hidden file, under any name.
 check_hidden() {
-    what="(j) $OUT holds no hidden case, hidden scene or hidden reference"
+    what="(j) $OUT holds no hidden case, hidden scene or hidden reference, and no case of a part the course left out"
     problems=
     for d in grading/hidden reference_images/hidden; do
         [ -e "$OUT/$d" ] && problems="$problems; $d exists"
     done
+    problems="$problems$(cases_parts_problem "$OUT" /nonexistent)"
     marked=$(grep -rlE '"visibility"[[:space:]]*:[[:space:]]*"hidden"' "$OUT" 2>/dev/null | sed "s|^$OUT/||" | tr '\n' ' ')
     [ -n "$marked" ] && problems="$problems; cases marked hidden in: $marked"
     if [ -x "$points_tool" ]; then
@@ -96,7 +109,7 @@ check_hidden() {
 # as the repository's, solution markers included); every grading case and reference, hidden ones
 # included, byte for byte; nothing of a part the course left out; no build outputs, .git or out/.
 check_bundle() {
-    what="(k) release/autograder.zip holds setup.sh and run_autograder (executable), the solutions, every case and reference, hidden ones included"
+    what="(k) release/autograder.zip holds setup.sh and run_autograder (executable), the solutions, every case and reference of the course's parts, hidden ones included"
     zip=release/autograder.zip
     [ -s "$zip" ] || { fail "$what: $zip missing"; return; }
     dir=$LOGS/bundle
@@ -121,8 +134,10 @@ for i in z.infolist():
             continue
         fi
         n=$((n + 1))
+        cases_file "$f" && continue  # the course's parts only: checked below
         cmp -s "$f" "$dir/$f" || problems="$problems; $f missing or different"
     done < <(find parts grading reference_images -type f | sort)
+    problems="$problems$(cases_parts_problem "$dir" grading/hidden/cases.json)"
     for d in "$dir"/tests/part*; do
         [ -d "$d" ] && part_left_out "tests/${d##*/}/x" && problems="$problems; tests/${d##*/} is of a part the course left out"
     done

@@ -115,10 +115,19 @@ strip_markdown() {
     ' "$1" >"$2"
 }
 
+# Whether $1 is a grading cases file: the release copies it with the course's parts only.
+cases_file() { case "$1" in grading/cases.json|grading/hidden/cases.json) return 0 ;; esac; return 1; }
+
+# Copies cases file $1 to $2 with only the course's parts (COURSE_PARTS), through $points_tool
+# (bin/release_points --only): a course that stops after part 5 hands out no case of parts 6-9.
+copy_cases() { "$points_tool" --only "$COURSE_PARTS" "$1" "$2"; }
+
 # Copies one file $1 into tree $2 as a student gets it: C through the stripper ($strip) unless $3 is
-# 1 (its part is solved), markdown without instructor sections, anything else as is. Sets $stripped.
+# 1 (its part is solved), markdown without instructor sections, the cases file with the course's
+# parts only, anything else as is. Sets $stripped.
 copy_one() {
     stripped=0
+    cases_file "$1" && { copy_cases "$1" "$2/$1"; return; }
     case "$1" in
         *.c|*.h)
             [ "$3" = 1 ] && { cp -p -- "$1" "$2/$1"; return; }
