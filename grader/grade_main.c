@@ -20,9 +20,11 @@
 #include "grade_image.h"
 #include "grade_refs.h"
 #include "grade_tree.h"
+#include "sandbox.h"
 #include <dirent.h>
 #include <errno.h>
 #include <math.h>
+#include <signal.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -163,6 +165,48 @@ static bool make_sandbox_dir(char *out, size_t size)
     const char *tmp = getenv("TMPDIR") && getenv("TMPDIR")[0] == '/' ? getenv("TMPDIR") : "/tmp";
     grade_path(out, size, "%s/" GRADE_SANDBOX_NAME "XXXXXX", tmp);
     return mkdtemp(out) && chmod(out, 0711) == 0;
+}
+
+/* ---- the janitor ---------------------------------------------------------------------------- */
+
+/* A grading stopped from outside (an instructor's Ctrl-C, a CI job's timeout, `kill`) would leave
+ * its sandbox folder behind, with whatever the sandbox's user wrote in it, and its stages running
+ * until their own limits end them: they sit in process groups of their own, out of reach of a
+ * terminal's signal. So the grading runs in a child, and its parent, the janitor, waits: it hands
+ * on the signals that stop a grading, and when the grading has ended, however it ended, kills what
+ * is left of it (the orphans it adopted: the stages and their namespaces) and removes the folder. */
+static volatile sig_atomic_t janitor_child;
+
+static void janitor_forward(int sig)
+{
+    if (janitor_child > 0) kill((pid_t)janitor_child, sig);
+}
+
+/* Returns in the grading process (0), or -1 when there is no janitor (fork failed: the grading
+ * runs as before); the janitor itself never returns: it exits as its grading did. */
+static int janitor_start(const char *sandbox_dir)
+{
+    fflush(stdout);  /* nothing buffered may be written twice */
+    fflush(stderr);
+    pid_t pid = fork();
+    if (pid <= 0) return pid == 0 ? 0 : -1;
+    janitor_child = pid;
+    sandbox_adopt_orphans();
+    static const int stops[] = {SIGINT, SIGTERM, SIGHUP, SIGQUIT};
+    for (size_t i = 0; i < sizeof stops / sizeof stops[0]; i++) {
+        struct sigaction sa = {.sa_handler = janitor_forward};  /* no SA_RESTART: waitpid returns */
+        sigemptyset(&sa.sa_mask);
+        sigaction(stops[i], &sa, NULL);
+    }
+    int status = 0;
+    while (waitpid(pid, &status, 0) < 0 && errno == EINTR) continue;
+    sandbox_kill_orphans();
+    grade_tree_remove(sandbox_dir);  /* done already when the grading ended by itself */
+    if (WIFEXITED(status)) _exit(WEXITSTATUS(status));
+    int sig = WIFSIGNALED(status) ? WTERMSIG(status) : SIGTERM;
+    signal(sig, SIG_DFL);
+    raise(sig);  /* ends as the grading did, so a shell sees the same status */
+    _exit(128 + sig);
 }
 
 /* Whether the sandbox's user can enter path (tried as that user, in a throwaway child). */
@@ -424,6 +468,14 @@ int main(int argc, char **argv)
     result.seed = a.seed_given ? a.seed : fresh_seed();
     char sandbox_dir[4096];
     if (!make_sandbox_dir(sandbox_dir, sizeof sandbox_dir)) return usage("cannot create the sandbox's folder under $TMPDIR or /tmp");
+    if (janitor_start(sandbox_dir) < 0) fprintf(stderr, "grade: cannot fork a janitor: a grading stopped from outside may leave %s\n", sandbox_dir);
+    /* The grader's own children (the course's build, its compilers) keep their temporary files in
+     * the sandbox's folder too, which the janitor removes whole: a compiler killed mid-file cannot
+     * delete its own. Root's alone (0700); student code gets an environment of its own. */
+    char own_tmp[4200];
+    grade_path(own_tmp, sizeof own_tmp, "%s/tmp", sandbox_dir);
+    if (mkdir(own_tmp, 0700) != 0 || setenv("TMPDIR", own_tmp, 1) != 0)
+        return usage("cannot create the grader's temporary folder in its sandbox folder");
     grade_env env = {.root = f.root, .submission = a.submission ? f.submission : NULL, .work = f.work,
                      .sandbox_dir = sandbox_dir, .report = f.report, .public_only = a.public_only, .seed = result.seed,
                      .threads = a.threads, .sandbox = grade_sandbox_probe()};

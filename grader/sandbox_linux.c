@@ -320,12 +320,15 @@ void sandbox_adopt_orphans(void)
     prctl(PR_SET_CHILD_SUBREAPER, 1, 0, 0, 0);
 }
 
-/* One pass over /proc: kills every process whose parent is the grader; how many it found. */
+/* One pass over /proc: kills every process whose parent is the grader, then waits for each of them
+ * (and only them: a process adopted meanwhile may still be alive, and a wait for any child would
+ * hang on it; the next pass kills it). How many it found. */
 static int kill_children_once(void)
 {
     DIR *d = opendir("/proc");
+    pid_t killed[256];
     int found = 0;
-    for (struct dirent *e; d && (e = readdir(d));) {
+    for (struct dirent *e; d && (e = readdir(d)) && found < (int)(sizeof killed / sizeof killed[0]);) {
         char path[300], stat[512];
         if (e->d_name[0] < '1' || e->d_name[0] > '9') continue;
         grade_path(path, sizeof path, "/proc/%s/stat", e->d_name);
@@ -336,18 +339,20 @@ static int kill_children_once(void)
         char *close_paren = strrchr(stat, ')');  /* the name may hold spaces and parentheses */
         int ppid = 0;
         if (close_paren && sscanf(close_paren + 1, " %*c %d", &ppid) == 1 && ppid == getpid()) {
-            kill(atoi(e->d_name), SIGKILL);
-            found++;
+            killed[found] = (pid_t)atoi(e->d_name);
+            kill(killed[found++], SIGKILL);
         }
     }
     if (d) closedir(d);
+    for (int i = 0; i < found; i++)
+        while (waitpid(killed[i], NULL, 0) < 0 && errno == EINTR) continue;
     return found;
 }
 
 void sandbox_kill_orphans(void)
 {
-    /* Each pass kills the adopted; their own children are adopted in turn, and the next pass gets them. */
-    for (int pass = 0; pass < 100 && kill_children_once() > 0; pass++)
-        while (waitpid(-1, NULL, 0) > 0) continue;
+    /* Each pass kills the adopted; their own children are adopted in turn, and the next pass gets
+     * them (a namespace's init among them: its namespace ends with it). */
+    for (int pass = 0; pass < 100 && kill_children_once() > 0; pass++) continue;
     while (waitpid(-1, NULL, WNOHANG) > 0) continue;
 }

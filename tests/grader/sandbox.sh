@@ -23,6 +23,8 @@
 #    checkouts of the course are readable there, which says nothing about the grader. Then the
 #    filter, as the grader installs it, refuses what the probe tries (exec, fork, files, sockets...),
 #    and `#include "/dev/zero"` ends the build fast with the limit it ran past.
+# 8. (the compiler's limits, above) 9. A grading stopped by SIGTERM while student code runs exits
+#    143 and leaves no process and no sandbox folder behind (bin/grade's janitor, grade_main.c).
 set -eu
 cd "$(dirname "$0")/../.."
 out=out/sandbox-test
@@ -234,4 +236,33 @@ timeout 600 bin/grade --submission "$out/sub" --parts 1 --seed 1 --out "$out/zer
 unit_output "$out/zero" | grep -q "part 1's build ran past its memory limit" ||
     fail "#include \"/dev/zero\": no verdict naming the memory limit (see $out/zero/results.json)"
 echo "  #include \"/dev/zero\": part 1's build ran past its memory limit ($(( $(date +%s) - start )) s with the course's build)"
+# 9. a grading stopped from outside (kill, a CI timeout, Ctrl-C) while student code runs leaves
+# nothing behind: no sandbox folder, no process, and it ends as the signal says (143 for SIGTERM)
+cp -r parts "$out/spin" && rm -rf "$out/sub" && mkdir -p "$out/sub" && mv "$out/spin" "$out/sub/parts"
+sed -i '0,/BEGIN SOLUTION/s|/\* BEGIN SOLUTION \*/|&\n    for (volatile unsigned long spin = 0;; spin++) continue;|' "$out/sub/parts/part1_raygen/camera_ray.c"
+grep -q 'spin++' "$out/sub/parts/part1_raygen/camera_ray.c" || fail "could not make camera_generate_ray spin"
+rm -rf "$out/tmp9" && mkdir -p "$out/tmp9" && chmod 711 "$out/tmp9"
+TMPDIR=$PWD/$out/tmp9 bin/grade --submission "$out/sub" --parts 1 --seed 1 --out "$out/stopped" >"$out/stopped.log" 2>&1 &
+grader=$!
+# The processes whose command line names the grading's TMPDIR and $1 (the stages run from its
+# sandbox folder, and the grader's own compilers write their temporary files there).
+in_tmp9() {
+    for p in /proc/[0-9]*; do
+        { tr '\0' ' ' <"$p/cmdline" | grep "$PWD/$out/tmp9/" | grep -q -- "$1" && echo "${p#/proc/}"; } 2>/dev/null
+    done
+    return 0
+}
+waited=0
+while [ -z "$(in_tmp9 subject-part1)" ] && [ "$waited" -lt 300 ] && kill -0 "$grader" 2>/dev/null; do
+    sleep 1; waited=$((waited + 1))
+done
+[ -n "$(in_tmp9 subject-part1)" ] || { kill "$grader" 2>/dev/null; fail "the spinning part 1 never ran in $out/tmp9 (see $out/stopped.log)"; }
+kill -TERM "$grader"
+status=0
+wait "$grader" || status=$?
+[ "$status" = 143 ] || fail "a grading stopped by SIGTERM exited with $status, not 143 (see $out/stopped.log)"
+left=$(in_tmp9 /)
+[ -z "$left" ] || { kill -9 $left 2>/dev/null; fail "processes of a stopped grading outlived it: $left"; }
+[ -z "$(ls -A "$out/tmp9")" ] || fail "a grading stopped by SIGTERM left $(ls -A "$out/tmp9") in its TMPDIR"
+echo "  a grading stopped by SIGTERM while student code ran: exit 143, no process and no folder left"
 echo "test-grader-process: passed"
