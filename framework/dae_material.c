@@ -72,6 +72,23 @@ static float conductor_f0(float eta, float k)
     return ((eta - 1) * (eta - 1) + k * k) / ((eta + 1) * (eta + 1) + k * k);
 }
 
+/* A number child of a BSDF element that must be > 0 (an index of refraction, a roughness); def
+ * when absent. */
+static pl_status positive_child(dae_ctx *c, const xmlNode *bsdf, const char *name, float def, float *out)
+{
+    pl_status st = dae_child_float(c, bsdf, name, def, out);
+    if (!st && !(*out > 0.0f))
+        st = dae_error(c, dae_child(bsdf, name), PL_ERR_INVALID, "expected a number > 0, found %g", *out);
+    return st;
+}
+
+/* The diffuse stand-in's colour: the element's `name` colour when the file gives one, else
+ * profile_COMMON's (the last one given wins, as before the parameters were kept). */
+static void stand_in(const xmlNode *bsdf, const char *name, rgb colour, material *m)
+{
+    if (dae_child(bsdf, name)) m->albedo = colour;
+}
+
 /* A valid material pathlab cannot shade yet: loaded as diffuse, and said once per kind, never
  * silently dropped. */
 static void not_supported(dae_ctx *c, const xmlNode *bsdf, const char *kind)
@@ -93,32 +110,33 @@ static pl_status read_cgl(dae_ctx *c, const xmlNode *technique, material *m)
         st = dae_child_color(c, bsdf, "reflectance", false, &m->albedo);
     } else if (dae_is(bsdf, "mirror")) {
         m->kind = MATERIAL_MIRROR;
-        st = dae_child_color(c, bsdf, "reflectance", false, &m->albedo);
+        st = dae_child_color(c, bsdf, "reflectance", false, &m->reflectance);
+        stand_in(bsdf, "reflectance", m->reflectance, m);
         not_supported(c, bsdf, "mirror");
     } else if (dae_is(bsdf, "glass")) {
-        /* Read in full even though unsupported: a malformed value is still an error with its line. */
+        /* CS184 ignores <roughness>; it is read only so that a malformed value is an error. */
         m->kind = MATERIAL_GLASS;
-        float ior, roughness;
-        st = dae_child_color(c, bsdf, "transmittance", false, &m->albedo);
-        if (!st) st = dae_child_color(c, bsdf, "reflectance", false, &m->albedo);
-        if (!st) st = dae_child_float(c, bsdf, "ior", 1.5f, &ior);
+        float roughness;
+        st = dae_child_color(c, bsdf, "transmittance", false, &m->transmittance);
+        if (!st) st = dae_child_color(c, bsdf, "reflectance", false, &m->reflectance);
+        if (!st) st = positive_child(c, bsdf, "ior", 1.5f, &m->ior);
         if (!st) st = dae_child_float(c, bsdf, "roughness", 0.0f, &roughness);
+        stand_in(bsdf, "transmittance", m->transmittance, m);
+        stand_in(bsdf, "reflectance", m->reflectance, m);
         not_supported(c, bsdf, "glass");
     } else if (dae_is(bsdf, "refraction")) {
         m->kind = MATERIAL_REFRACTION;
-        float ior;
-        st = dae_child_color(c, bsdf, "transmittance", false, &m->albedo);
-        if (!st) st = dae_child_float(c, bsdf, "ior", 1.5f, &ior);
+        st = dae_child_color(c, bsdf, "transmittance", false, &m->transmittance);
+        if (!st) st = positive_child(c, bsdf, "ior", 1.5f, &m->ior);
+        stand_in(bsdf, "transmittance", m->transmittance, m);
         not_supported(c, bsdf, "refraction");
     } else if (dae_is(bsdf, "microfacet")) {
         /* The diffuse stand-in takes the metal's colour at normal incidence. */
         m->kind = MATERIAL_MICROFACET;
-        float alpha;
-        rgb eta = rgb_gray(1.5f), k = rgb_gray(0.0f);
-        st = dae_child_float(c, bsdf, "alpha", 0.5f, &alpha);
-        if (!st) st = dae_child_color(c, bsdf, "eta", false, &eta);
-        if (!st) st = dae_child_color(c, bsdf, "k", false, &k);
-        m->albedo = rgb_make(conductor_f0(eta.r, k.r), conductor_f0(eta.g, k.g), conductor_f0(eta.b, k.b));
+        st = positive_child(c, bsdf, "alpha", 0.5f, &m->alpha);
+        if (!st) st = dae_child_color(c, bsdf, "eta", false, &m->eta);
+        if (!st) st = dae_child_color(c, bsdf, "k", false, &m->k);
+        m->albedo = rgb_make(conductor_f0(m->eta.r, m->k.r), conductor_f0(m->eta.g, m->k.g), conductor_f0(m->eta.b, m->k.b));
         not_supported(c, bsdf, "microfacet");
     } else {
         dae_warn_once(c, bsdf, dae_name(bsdf), "unknown CGL material <%s>; using profile_COMMON's colour",

@@ -53,6 +53,12 @@ material material_make(rgb albedo, rgb Le)
     m.kind = MATERIAL_DIFFUSE;
     m.albedo = albedo;
     m.Le = Le;
+    /* The other kinds' parameters at CS184's defaults, so every material holds valid ones. */
+    m.reflectance = m.transmittance = rgb_gray(1.0f);
+    m.ior = 1.5f;
+    m.alpha = 0.5f;
+    m.eta = rgb_gray(1.5f);
+    m.k = rgb_gray(0.0f);
     return m;
 }
 

@@ -31,8 +31,17 @@ typedef enum {
 
 typedef struct {
     material_kind kind;  /* what the file declared; shading treats all kinds as diffuse */
-    rgb albedo;          /* diffuse reflectance in [0,1] per channel (grey 0.5 when unspecified) */
+    rgb albedo;          /* diffuse reflectance in [0,1] per channel (grey 0.5 when unspecified);
+                            for the other kinds, the colour their diffuse stand-in shades with */
     rgb Le;              /* emitted radiance (W / (sr m^2)); black for non-emitters */
+    /* What the other kinds hold, read as CS184 reads its <mirror>, <glass>, <refraction> and
+     * <microfacet> elements (CS184_FORMAT.md), for the parts that shade them: */
+    rgb reflectance;     /* mirror, glass: tint of the reflected light (1 when unspecified) */
+    rgb transmittance;   /* glass, refraction: tint of the transmitted light (1 when unspecified) */
+    float ior;           /* glass, refraction: index of refraction inside, > 0 (1.5); outside is 1 */
+    float alpha;         /* microfacet: the Beckmann distribution's roughness, > 0 (0.5) */
+    rgb eta, k;          /* microfacet: the conductor's complex index of refraction eta + i k,
+                            per channel (1.5 and 0 when unspecified) */
     char name[64];       /* the file's material id, for messages */
 } material;
 
@@ -127,7 +136,8 @@ int scene_add_triangle(scene *s, triangle t);
 int scene_add_sphere(scene *s, sphere sp);
 int scene_add_light(scene *s, light l);
 
-/* A diffuse material with the given reflectance and emission. */
+/* A diffuse material with the given reflectance and emission (the other kinds' parameters at
+ * their defaults). */
 material material_make(rgb albedo, rgb Le);
 /* A triangle with its face normal at all three vertices. */
 triangle triangle_make(vec3 p0, vec3 p1, vec3 p2, int mat);

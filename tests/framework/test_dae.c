@@ -638,6 +638,22 @@ static void test_dae_materials__every_cgl_kind_loads_with_one_warning_per_kind(v
     assert_rgb_near(rgb_gray(0), m[7]->Le, EPS);
     for (int i = 1; i < 6; i++) assert_rgb_near(rgb_gray(0), m[i]->Le, EPS);
 
+    /* Each kind's own parameters, kept for the parts that shade them (defaults where absent). */
+    assert_rgb_near(rgb_make(0.9f, 0.8f, 0.7f), m[1]->reflectance, EPS);
+    assert_rgb_near(rgb_make(1, 1, 1), m[3]->transmittance, EPS);
+    assert_rgb_near(rgb_make(0.95f, 0.9f, 0.85f), m[3]->reflectance, EPS);
+    assert_float_near(1.5, m[3]->ior, EPS);
+    assert_rgb_near(rgb_make(0.6f, 0.7f, 0.8f), m[4]->transmittance, EPS);
+    assert_float_near(1.33, m[4]->ior, EPS);
+    assert_rgb_near(rgb_gray(1), m[4]->reflectance, EPS);  /* <refraction> has none: the default */
+    assert_float_near(0.5, m[5]->alpha, EPS);
+    assert_rgb_near(rgb_make(0.2f, 0.9f, 1.1f), m[5]->eta, EPS);
+    assert_rgb_near(rgb_make(3.9f, 2.45f, 2.14f), m[5]->k, EPS);
+    /* The stand-in for the metal: its reflectance at normal incidence, ((eta-1)^2+k^2)/((eta+1)^2+k^2). */
+    assert_float_near((0.64 + 3.9 * 3.9) / (1.44 + 3.9 * 3.9), m[5]->albedo.r, 1e-5);
+    assert_float_near(1.5, m[6]->ior, EPS);  /* a diffuse material holds the defaults */
+    assert_float_near(0.5, m[6]->alpha, EPS);
+
     assert_int_equal(4, w.count);
     assert_int_equal(1, warn_log_count(&w, "mirror materials are not supported yet"));
     assert_int_equal(1, warn_log_count(&w, "glass materials are not supported yet"));
