@@ -7,8 +7,9 @@
  * PL_SEAM_PART_FUNCTIONS(X): X(name, task) for each part function the framework calls, with the
  *   task that writes it ("2.2"). The framework calls the recorded ones through the wrappers in
  *   framework/render.c (pixel loop and radiance dispatch), which log their arguments and results
- *   when a trace is on; part-to-part calls (part 4's bsdf_sample_f, russian_roulette) are not
- *   intercepted: the trace replays them from what it saw (framework/trace.h says how).
+ *   when a trace is on; part-to-part calls (part 4's russian_roulette, and part 3's BSDF, which
+ *   parts 3 and 4 reach through framework/material.h) are not intercepted: the trace replays them
+ *   from what it saw (framework/trace.h says how).
  * PL_SEAM_FRAMEWORK_FUNCTIONS(X): X(name, recorded) for each framework function the parts call;
  *   recorded is 1 when the function logs its result into an active trace itself. */
 #ifndef PL_SEAM_H
@@ -45,6 +46,9 @@
     X(render_occluded, 1)                    \
     X(one_bounce_radiance, 1)                \
     X(light_sample_L, 1)                     \
+    X(material_f, 0)                         \
+    X(material_pdf, 0)                       \
+    X(material_sample_f, 0)                  \
     X(envmap_radiance, 0)                    \
     X(envmap_texel, 0)                       \
     X(envmap_direction, 0)                   \

@@ -12,6 +12,7 @@
 #include "envmap.h"
 #include "accel.h"
 #include "frame.h"
+#include "material.h"
 #include "sampler.h"
 #include "todo.h"
 #include "../parts/part3_direct/part3.h"  /* replayed part functions (framework/README.md) */
@@ -430,7 +431,7 @@ bool trace_intersect(const render_ctx *ctx, ray *r, hit *h)
             int n = s->num_lights * render_light_samples(f->ctx, &f->r);
             rgb adds = rgb_gray(0.0f);
             if (wi.z > 0.0f && f->h.material >= 0 && f->h.material < s->num_materials && n > 0)
-                adds = rgb_scale(rgb_mul(Le, bsdf_f(&s->materials[f->h.material], wo, wi)),
+                adds = rgb_scale(rgb_mul(Le, material_f(&s->materials[f->h.material], wo, wi)),
                                  wi.z * 2.0f * (float)PL_PI / (float)n);
             t->direct.visible = rgb_add(t->direct.visible, adds);
             emit(t, "emission", json_pack("{s:o, s:o}", "emission", jrgb(Le), "contribution", jrgb(adds)),
@@ -563,7 +564,7 @@ void trace_light(const light *l, vec3 p, vec2 u, bool ok, const light_sample *ls
         ray probe = spawn_ray_to_light(&f->r, &f->h, l, ls);
         visible = !accel_occluded(t->ctx->accel, &probe);
         if (ls->pdf > 0.0f && cosine > 0.0f && f->h.material >= 0 && f->h.material < s->num_materials) {
-            rgb fr = bsdf_f(&s->materials[f->h.material], wo, wi);
+            rgb fr = material_f(&s->materials[f->h.material], wo, wi);
             c = rgb_scale(rgb_mul(ls->L, fr), cosine / ls->pdf / (float)n);
             bright = rgb_max(fr) > 1.0001f * PL_INV_PI ? fr : bright;
         }
@@ -586,7 +587,7 @@ void trace_light(const light *l, vec3 p, vec2 u, bool ok, const light_sample *ls
 }
 
 /* A draw from the generator during part 4's path: the first four of each vertex are kept, so the
- * trace can replay bsdf_sample_f on the same numbers (and knows whether the roulette drew). */
+ * trace can replay material_sample_f on the same numbers (and knows whether the roulette drew). */
 void trace_rng(float value)
 {
     trace_path *p = &pl_trace->path;
@@ -608,9 +609,9 @@ static rgb bsdf_step(trace_log *t, vec3 wo, vec3 wi, const char *how)
 {
     trace_path *p = &t->path;
     const material *m = material_at(t, &p->at);
-    rgb fr = m ? bsdf_f(m, wo, wi) : rgb_gray(0.0f);
-    float pdf = m ? bsdf_pdf(m, wo, wi) : 0.0f;
-    rgb factor = pdf > 0.0f ? rgb_scale(fr, wi.z / pdf) : rgb_gray(0.0f);
+    rgb fr = m ? material_f(m, wo, wi) : rgb_gray(0.0f);
+    float pdf = m ? material_pdf(m, wo, wi) : 0.0f;
+    rgb factor = pdf > 0.0f ? rgb_scale(fr, fabsf(wi.z) / pdf) : rgb_gray(0.0f);
     rgb beta = rgb_mul(p->beta, factor);
     emit(t, "bsdf_sample",
          json_pack("{s:o, s:o, s:o, s:o, s:o}", "direction", jvec(wi), "f", jrgb(fr), "pdf", jnum(pdf), "cosine",
@@ -686,12 +687,12 @@ static void path_end(trace_log *t, rgb L)
 {
     trace_path *p = &t->path;
     if (p->draws >= 2 && material_at(t, &p->at)) {
-        /* The path ended after drawing its next direction: replay bsdf_sample_f with those numbers. */
+        /* The path ended after drawing its next direction: replay material_sample_f with those numbers. */
         frame sf = shading_frame(&p->cur, &p->at);
         vec3 wo = frame_to_local(&sf, vec3_neg(p->cur.d)), wi;
         float pdf;
         replaying = true;
-        (void)bsdf_sample_f(material_at(t, &p->at), wo, vec2_make(p->value[0], p->value[1]), &wi, &pdf);
+        (void)material_sample_f(material_at(t, &p->at), wo, vec2_make(p->value[0], p->value[1]), &wi, &pdf);
         replaying = false;
         rgb beta = bsdf_step(t, wo, wi, " (replayed; the path ends after it)");
         roulette(t, beta, false);

@@ -9,9 +9,9 @@
  * calls the parts' functions through wrappers (render.c) that log arguments and results.
  *
  * What the parts compute between two seam calls is replayed, not seen: the BSDF sample of a bounce
- * is read off the bounce ray (bsdf_f and bsdf_pdf evaluated at its direction), the roulette is
+ * is read off the bounce ray (material_f and material_pdf evaluated at its direction), the roulette is
  * replayed with a copy of the generator's state before its draw, and the throughput is the
- * product of f cos / pdf over the bounces divided by the roulette's probabilities. Where the part's
+ * product of f |cos| / pdf over the bounces divided by the roulette's probabilities. Where the part's
  * own result disagrees with that replay, the trace says so (a "!!" line): such marks, and those
  * for values that break an invariant, are counted in trace_result.marks.
  *

@@ -30,6 +30,8 @@ static const char *const allowed_framework[] = {
     /* scene, BVH and light accessors; bvh_visit reads a node and counts the visit (bvh.h) */
     "scene_bounds", "scene_prim_bounds", "scene_prim_centroid", "bvh_free", "bvh_visit", "light_is_delta",
     "light_sample_L", "envmap_angles", "envmap_direction", "envmap_radiance", "envmap_texel",
+    /* the BSDF of a material, whatever its kind (material.h) */
+    "material_f", "material_pdf", "material_sample_f",
     /* the intersection entry points and the estimators a later part builds on */
     "scene_prim_intersect", "accel_intersect", "accel_occluded", "linear_intersect", "linear_occluded",
     "render_intersect", "render_occluded", "one_bounce_radiance", "radiance_estimate", "render_light_samples",

@@ -3,6 +3,7 @@
 #include "part3.h"
 #include "../../framework/render.h"
 #include "../../framework/light.h"
+#include "../../framework/material.h"
 #include "../../framework/sampler.h"
 #include "../../framework/spawn.h"
 #include "../../framework/todo.h"
@@ -79,7 +80,9 @@ rgb zero_bounce_radiance(const struct render_ctx *ctx, const ray *r, const hit *
 /* === PART 3 | TASK 3.4 | direct_hemisphere ==========================================
  * Direct light by uniform hemisphere sampling (-H) (handout/part3.md, 3.4):
  *   L = 1/N sum_j Le(p, wi_j) f(wo, wi_j) cos(theta_j) / pdf(wi_j),  pdf = 1 / (2 pi),
- * with Le(p, wi_j) the emission (zero_bounce_radiance) of whatever the ray from p along wi_j hits.
+ * with Le(p, wi_j) the emission (zero_bounce_radiance) of whatever the ray from p along wi_j hits,
+ * and f = material_f(m, wo, wi_j) (framework/material.h): your bsdf_f for the materials of parts
+ * 1-5, and the BSDF of any kind a later part adds, which your estimator then lights unchanged.
  * In:  r, h (the surface being lit), g (this sample's random numbers).
  * Out: reflected radiance towards r's origin. N = num_lights * render_light_samples(ctx, r), at
  *      least 1 (-l where camera rays land, one deeper: render.h).
@@ -108,7 +111,7 @@ rgb direct_hemisphere(const struct render_ctx *ctx, const ray *r, const hit *h, 
         rgb Le = zero_bounce_radiance(ctx, &shadow, &lit);
         if (rgb_is_black(Le))
             continue;
-        rgb fr = bsdf_f(m, wo, wi);
+        rgb fr = material_f(m, wo, wi);
         sum = rgb_add(sum, rgb_scale(rgb_mul(Le, fr), cos_theta(wi) / pdf));
     }
     return rgb_scale(sum, 1.0f / (float)n);
@@ -119,7 +122,8 @@ rgb direct_hemisphere(const struct render_ctx *ctx, const ray *r, const hit *h, 
 /* === PART 3 | TASK 3.5 | direct_importance ==========================================
  * Direct light by sampling the lights (handout/part3.md, 3.5): for each light k,
  *   L_k = 1/N_k sum_j V(p, y_j) Li_j f(wo, wi_j) cos(theta_j) / pdf_j,
- * with (Li, wi, dist, pdf) from light_sample_L, N_k = 1 for delta lights (light_is_delta) and
+ * with (Li, wi, dist, pdf) from light_sample_L, f = material_f(m, wo, wi) as in 3.4, N_k = 1 for
+ * delta lights (light_is_delta) and
  * render_light_samples(ctx, r) otherwise; the result is the sum over the lights.
  * In:  r, h, g as in 3.4.
  * Out: reflected radiance towards r's origin.
@@ -149,7 +153,7 @@ rgb direct_importance(const struct render_ctx *ctx, const ray *r, const hit *h, 
             vec3 wi = frame_to_local(&f, ls.wi);
             if (cos_theta(wi) <= 0.0f)
                 continue;
-            rgb fr = bsdf_f(m, wo, wi);
+            rgb fr = material_f(m, wo, wi);
             if (rgb_is_black(fr) || rgb_is_black(ls.L))
                 continue;
             ray shadow = spawn_ray_to_light(r, h, l, &ls);

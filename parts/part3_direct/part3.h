@@ -5,6 +5,8 @@
  *   AWAY from the surface: wo towards the viewer, wi towards the light.
  * - Every material shades as Lambertian diffuse with reflectance m->albedo; emission m->Le is
  *   one-sided: a surface emits towards the side its normal h->n points to (like the area lights).
+ * - The estimators (3.4, 3.5) evaluate f with material_f (framework/material.h), which calls your
+ *   bsdf_f for every material of parts 1-5 (and a later part's BSDF for a kind of its own).
  * - Diffuse reflection is two-sided: shading_frame (frame.h) turns the normal towards the viewer.
  * - Secondary rays (hemisphere and shadow rays) leave the surface through framework/spawn.h
  *   (spawn_ray, spawn_ray_to_light), never from the raw hit point: see handout/part3.md, 3.4.

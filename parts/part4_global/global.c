@@ -3,6 +3,7 @@
 #include "part4.h"
 #include "../part3_direct/part3.h"
 #include "../../framework/frame.h"
+#include "../../framework/material.h"
 #include "../../framework/render.h"
 #include "../../framework/spawn.h"
 #include "../../framework/todo.h"
@@ -34,7 +35,9 @@ bool russian_roulette(rgb *beta, int next_depth, rng *g)
 /* === PART 4 | TASK 4.1 | at_least_one_bounce_radiance ===============================
  * Global illumination (handout/part4.md, 4.1): follow the path from h, one vertex per bounce:
  *   L = sum_{k=1..max_depth} beta_k * one_bounce_radiance(vertex k),
- *   beta_1 = 1,  beta_{k+1} = beta_k * f(wo, wi) cos(theta_i) / pdf(wi)   (wi from bsdf_sample_f)
+ *   beta_1 = 1,  beta_{k+1} = beta_k * f(wo, wi) |cos(theta_i)| / pdf(wi)
+ * with wi, f and pdf from material_sample_f (framework/material.h: part 3's bsdf_sample_f for the
+ * diffuse materials of parts 1-5, and whatever BSDF a later part gives a material of its own).
  * With -o 0 (!opts->accumulate) only the k = max_depth term is kept. Loop or recurse, as you like.
  * The framework spends the -l light samples at the first vertex and one per light deeper, where
  * the path's own noise dominates (render_light_samples reads the depth of the ray that reached the
@@ -61,16 +64,18 @@ rgb at_least_one_bounce_radiance(const struct render_ctx *ctx, const ray *r, con
         if (depth >= o->max_depth)
             break;
 
-        /* Sample the next direction from the BSDF and fold f cos / pdf into the throughput. */
+        /* Sample the next direction from the material's BSDF and fold f |cos| / pdf into the
+         * throughput (|cos|: light may pass through a surface, below it). */
         const material *m = &ctx->scene->materials[at.material];
         frame f = shading_frame(&cur, &at);
         vec3 wo = frame_to_local(&f, vec3_neg(cur.d));
         vec3 wi;
         float pdf;
-        rgb fr = bsdf_sample_f(m, wo, rng_uniform2(g), &wi, &pdf);
-        if (!(pdf > 0.0f) || rgb_is_black(fr) || cos_theta(wi) <= 0.0f)
+        rgb fr = material_sample_f(m, wo, rng_uniform2(g), &wi, &pdf);
+        float cos_i = fabsf(cos_theta(wi));
+        if (!(pdf > 0.0f) || rgb_is_black(fr) || cos_i == 0.0f)
             break;
-        beta = rgb_mul(beta, rgb_scale(fr, cos_theta(wi) / pdf));
+        beta = rgb_mul(beta, rgb_scale(fr, cos_i / pdf));
         if (!o->no_roulette && !russian_roulette(&beta, depth + 1, g))
             break;
 

@@ -15,6 +15,7 @@
 #include "../../framework/ray.h"
 #include "../../framework/rng.h"
 #include "../../framework/spawn.h"  /* spawn_ray: how a bounce ray leaves the surface */
+#include "../../framework/material.h"  /* material_sample_f: the next direction, whatever the material */
 
 struct render_ctx;
 

@@ -21,6 +21,7 @@ int spawn_tests(void);      /* leaving a surface: offset ray origins (framework/
 int placement_tests(void);  /* a scene renders the same wherever it sits (framework/dae.c's origin) */
 int parallel_tests(void);   /* parallel_for: every call once, the work counted for the caller */
 int envmap_tests(void);     /* environment maps: the mapping, reading one, a render seeing it */
+int material_tests(void);   /* the BSDF of a material, whatever its kind (framework/material.c) */
 
 int main(void)
 {
@@ -47,5 +48,6 @@ int main(void)
     failed += placement_tests();
     failed += parallel_tests();
     failed += envmap_tests();
+    failed += material_tests();
     return failed ? 1 : 0;
 }

@@ -1,0 +1,31 @@
+/* The BSDF of a material, whatever its kind: the one place that chooses whose code shades it.
+ *
+ * Why. Part 3 writes the diffuse BSDF (bsdf_f, bsdf_pdf, bsdf_sample_f); the second assignment
+ * adds other kinds (CS184's mirror and glass in part 6, its microfacet metal in part 7). Parts 3
+ * and 4 light and bounce off every surface through these three functions, never through one
+ * kind's own, so a course that adds a kind changes no earlier part: this file learns the new
+ * kind, and every light sample and every bounce of parts 3 and 4 sees it.
+ *
+ * Today every kind shades as part 3's diffuse BSDF: a kind the course has no part for stands in
+ * as diffuse with its colour (scene.h's material.albedo, with one warning when the scene loads).
+ *
+ * Conventions (part 3's, for every kind): directions wo and wi are unit vectors in the local
+ * shading frame (frame.h: +z the shading normal), pointing away from the surface. f and pdf are
+ * per steradian. A sampled direction may lie below the surface (cos_theta(wi) < 0: light passing
+ * through glass), so whoever folds a sample into a path's throughput weighs it by
+ * |cos_theta(wi)|. */
+#ifndef PL_MATERIAL_H
+#define PL_MATERIAL_H
+
+#include "part_api.h"
+#include "scene.h"
+
+/* The BSDF value f(wo, wi) of material m (1/sr). */
+PL_PART_API rgb material_f(const material *m, vec3 wo, vec3 wi);
+/* The density (per steradian) with which material_sample_f picks wi for wo. */
+PL_PART_API float material_pdf(const material *m, vec3 wo, vec3 wi);
+/* Samples wi for wo from uniform numbers u in [0,1)^2; returns f(wo, *wi) and sets *pdf to its
+ * density. A zero *pdf or a black f means no direction was found: the path ends there. */
+PL_PART_API rgb material_sample_f(const material *m, vec3 wo, vec2 u, vec3 *wi, float *pdf);
+
+#endif
