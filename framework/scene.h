@@ -35,7 +35,7 @@ typedef struct {
                             for the other kinds, the colour their diffuse stand-in shades with */
     rgb Le;              /* emitted radiance (W / (sr m^2)); black for non-emitters */
     /* What the other kinds hold, read as CS184 reads its <mirror>, <glass>, <refraction> and
-     * <microfacet> elements (CS184_FORMAT.md), for the parts that shade them: */
+     * <microfacet> elements, for the parts that shade them: */
     rgb reflectance;     /* mirror, glass: tint of the reflected light (1 when unspecified) */
     rgb transmittance;   /* glass, refraction: tint of the transmitted light (1 when unspecified) */
     float ior;           /* glass, refraction: index of refraction inside, > 0 (1.5); outside is 1 */

@@ -169,7 +169,7 @@ static bool make_sandbox_dir(char *out, size_t size)
 
 /* ---- the janitor ---------------------------------------------------------------------------- */
 
-/* A grading stopped from outside (an instructor's Ctrl-C, a CI job's timeout, `kill`) would leave
+/* A grading stopped from outside (a Ctrl-C, a CI job's timeout, `kill`) would leave
  * its sandbox folder behind, with whatever the sandbox's user wrote in it, and its stages running
  * until their own limits end them: they sit in process groups of their own, out of reach of a
  * terminal's signal. So the grading runs in a child, and its parent, the janitor, waits: it hands

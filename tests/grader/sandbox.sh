@@ -239,7 +239,7 @@ echo "  #include \"/dev/zero\": part 1's build ran past its memory limit ($(( $(
 # 9. a grading stopped from outside (kill, a CI timeout, Ctrl-C) while student code runs leaves
 # nothing behind: no sandbox folder, no process, and it ends as the signal says (143 for SIGTERM)
 cp -r parts "$out/spin" && rm -rf "$out/sub" && mkdir -p "$out/sub" && mv "$out/spin" "$out/sub/parts"
-sed -i '0,/BEGIN SOLUTION/s|/\* BEGIN SOLUTION \*/|&\n    for (volatile unsigned long spin = 0;; spin++) continue;|' "$out/sub/parts/part1_raygen/camera_ray.c"
+sed -i '/^ray camera_generate_ray(/{n;s|^{$|{ for (volatile unsigned long spin = 0;; spin++) continue;|}' "$out/sub/parts/part1_raygen/camera_ray.c"
 grep -q 'spin++' "$out/sub/parts/part1_raygen/camera_ray.c" || fail "could not make camera_generate_ray spin"
 rm -rf "$out/tmp9" && mkdir -p "$out/tmp9" && chmod 711 "$out/tmp9"
 TMPDIR=$PWD/$out/tmp9 bin/grade --submission "$out/sub" --parts 1 --seed 1 --out "$out/stopped" >"$out/stopped.log" 2>&1 &
