@@ -186,18 +186,28 @@ static void janitor_forward(int sig)
  * runs as before); the janitor itself never returns: it exits as its grading did. */
 static int janitor_start(const char *sandbox_dir)
 {
+    static const int stops[] = {SIGINT, SIGTERM, SIGHUP, SIGQUIT};
+    sigset_t held, before;
+    sigemptyset(&held);
+    for (size_t i = 0; i < sizeof stops / sizeof stops[0]; i++) sigaddset(&held, stops[i]);
+    /* Held from the fork until the janitor forwards them: a stop that comes in between waits,
+     * rather than ending the janitor alone and leaving its grading without one. */
+    sigprocmask(SIG_BLOCK, &held, &before);
     fflush(stdout);  /* nothing buffered may be written twice */
     fflush(stderr);
     pid_t pid = fork();
-    if (pid <= 0) return pid == 0 ? 0 : -1;
+    if (pid <= 0) {
+        sigprocmask(SIG_SETMASK, &before, NULL);
+        return pid == 0 ? 0 : -1;
+    }
     janitor_child = pid;
     sandbox_adopt_orphans();
-    static const int stops[] = {SIGINT, SIGTERM, SIGHUP, SIGQUIT};
     for (size_t i = 0; i < sizeof stops / sizeof stops[0]; i++) {
         struct sigaction sa = {.sa_handler = janitor_forward};  /* no SA_RESTART: waitpid returns */
         sigemptyset(&sa.sa_mask);
         sigaction(stops[i], &sa, NULL);
     }
+    sigprocmask(SIG_SETMASK, &before, NULL);
     int status = 0;
     while (waitpid(pid, &status, 0) < 0 && errno == EINTR) continue;
     sandbox_kill_orphans();
