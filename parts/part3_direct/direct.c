@@ -123,8 +123,8 @@ rgb direct_hemisphere(const struct render_ctx *ctx, const ray *r, const hit *h, 
  * Direct light by sampling the lights (handout/part3.md, 3.5): for each light k,
  *   L_k = 1/N_k sum_j V(p, y_j) Li_j f(wo, wi_j) cos(theta_j) / pdf_j,
  * with (Li, wi, dist, pdf) from light_sample_L, f = material_f(m, wo, wi) as in 3.4, N_k = 1 for
- * delta lights (light_is_delta) and
- * render_light_samples(ctx, r) otherwise; the result is the sum over the lights.
+ * delta lights (light_is_delta) and render_light_samples(ctx, r) otherwise; the result is the sum
+ * over the lights.
  * In:  r, h, g as in 3.4.
  * Out: reflected radiance towards r's origin.
  * Must: skip samples below the surface (cos <= 0) or with pdf 0; the shadow ray comes from
