@@ -73,9 +73,9 @@ cc_warning_off = $(shell $(CC) -Werror -W$(1) -E -x c /dev/null >/dev/null 2>&1 
 # -Wno-newline-eof: clang's -Wpedantic wants a final newline, which the vendored lodepng lacks.
 WARN     := -Wall -Wextra -Wpedantic -Wshadow -Wno-unused-parameter $(call cc_warning_off,newline-eof)
 CPPFLAGS += $(FEATURES) -MMD -MP $(shell pkg-config --cflags $(PKGS))
-# The framework calls a part of the second assignment only where the course has it (render.c, light.c,
-# main.c, cli.c).
-CPPFLAGS += $(foreach n,8 9,$(if $(filter part$(n),$(PART_SUITES)),-DPL_HAS_PART$(n)))
+# The framework calls a part of the second assignment only where the course has it (material.c,
+# scene.c, render.c, light.c, main.c, cli.c).
+CPPFLAGS += $(foreach n,6 8 9,$(if $(filter part$(n),$(PART_SUITES)),-DPL_HAS_PART$(n)))
 CFLAGS   += -std=c11 $(OPT) -g $(WARN) -pthread
 LDLIBS   += $(shell pkg-config --libs $(PKGS)) -lm -pthread
 ifeq ($(WERROR),1)
@@ -179,7 +179,7 @@ $(BUILD)/framework/sidecar.o $(BUILD)/framework/range.o: $(BUILD)/gen/version.h
 # ---- tests: one binary per suite, so a crash in one part costs no other -----------------------
 $(BUILD)/tests/%.o $(BUILD)/course/%.o: CPPFLAGS += $(shell pkg-config --cflags $(TPKGS))
 
-## test-<suite>: run one suite: test-part1 .. test-part5, test-part8 and test-part9 (where the course has them), test-framework, test-grader
+## test-<suite>: run one suite: test-part1 .. test-part5, test-part6, test-part8 and test-part9 (where the course has them), test-framework, test-grader
 ## test-part3 FILTER='*hemisphere*': run only the tests whose names match (LIST=1: list them)
 define suite_rules
 $(BIN)/test-$(1): $(call suite_obj,$(1)) $(COMMON_OBJ) $(LIB_OBJ)

@@ -2,6 +2,7 @@
  * A CGL technique in the effect defines the BSDF; otherwise profile_COMMON's diffuse colour does.
  * Each <material> becomes one scene material, however many instances bind it. */
 #include "dae_internal.h"
+#include "material.h"
 
 #include <stdio.h>
 #include <stdlib.h>
@@ -89,11 +90,12 @@ static void stand_in(const xmlNode *bsdf, const char *name, rgb colour, material
     if (dae_child(bsdf, name)) m->albedo = colour;
 }
 
-/* A valid material pathlab cannot shade yet: loaded as diffuse, and said once per kind, never
- * silently dropped. */
-static void not_supported(dae_ctx *c, const xmlNode *bsdf, const char *kind)
+/* A valid material the course has no part to shade (material_kind_shaded): loaded as diffuse, and
+ * said once per kind, never silently dropped. */
+static void not_supported(dae_ctx *c, const xmlNode *bsdf, material_kind k, const char *kind)
 {
-    dae_warn_once(c, bsdf, kind, "%s materials are not supported yet, shaded as diffuse", kind);
+    if (!material_kind_shaded(k))
+        dae_warn_once(c, bsdf, kind, "%s materials are not supported yet, shaded as diffuse", kind);
 }
 
 /* Overrides m from the CGL technique's BSDF element (its first child). */
@@ -112,7 +114,7 @@ static pl_status read_cgl(dae_ctx *c, const xmlNode *technique, material *m)
         m->kind = MATERIAL_MIRROR;
         st = dae_child_color(c, bsdf, "reflectance", false, &m->reflectance);
         stand_in(bsdf, "reflectance", m->reflectance, m);
-        not_supported(c, bsdf, "mirror");
+        not_supported(c, bsdf, MATERIAL_MIRROR, "mirror");
     } else if (dae_is(bsdf, "glass")) {
         /* CS184 ignores <roughness>; it is read only so that a malformed value is an error. */
         m->kind = MATERIAL_GLASS;
@@ -123,13 +125,13 @@ static pl_status read_cgl(dae_ctx *c, const xmlNode *technique, material *m)
         if (!st) st = dae_child_float(c, bsdf, "roughness", 0.0f, &roughness);
         stand_in(bsdf, "transmittance", m->transmittance, m);
         stand_in(bsdf, "reflectance", m->reflectance, m);
-        not_supported(c, bsdf, "glass");
+        not_supported(c, bsdf, MATERIAL_GLASS, "glass");
     } else if (dae_is(bsdf, "refraction")) {
         m->kind = MATERIAL_REFRACTION;
         st = dae_child_color(c, bsdf, "transmittance", false, &m->transmittance);
         if (!st) st = positive_child(c, bsdf, "ior", 1.5f, &m->ior);
         stand_in(bsdf, "transmittance", m->transmittance, m);
-        not_supported(c, bsdf, "refraction");
+        not_supported(c, bsdf, MATERIAL_REFRACTION, "refraction");
     } else if (dae_is(bsdf, "microfacet")) {
         /* The diffuse stand-in takes the metal's colour at normal incidence. */
         m->kind = MATERIAL_MICROFACET;
@@ -137,7 +139,7 @@ static pl_status read_cgl(dae_ctx *c, const xmlNode *technique, material *m)
         if (!st) st = dae_child_color(c, bsdf, "eta", false, &m->eta);
         if (!st) st = dae_child_color(c, bsdf, "k", false, &m->k);
         m->albedo = rgb_make(conductor_f0(m->eta.r, m->k.r), conductor_f0(m->eta.g, m->k.g), conductor_f0(m->eta.b, m->k.b));
-        not_supported(c, bsdf, "microfacet");
+        not_supported(c, bsdf, MATERIAL_MICROFACET, "microfacet");
     } else {
         dae_warn_once(c, bsdf, dae_name(bsdf), "unknown CGL material <%s>; using profile_COMMON's colour",
                       dae_name(bsdf));

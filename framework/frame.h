@@ -40,11 +40,14 @@ static inline float abs_cos_theta(vec3 w_local) { return fabsf(w_local.z); }
 static inline vec3 hit_point(const ray *r, const hit *h) { (void)r; return h->p; }
 
 /* The shading frame at h, its normal turned to face the ray's origin, so that
- * wo = frame_to_local(&f, -r->d) always has wo.z >= 0: diffuse reflection is two-sided. */
+ * wo = frame_to_local(&f, -r->d) always has wo.z >= 0: diffuse reflection is two-sided, and so is
+ * a mirror. Glass is not: light that enters it bends one way and light that leaves it the other,
+ * so on a surface that transmits (h->transmits) the normal stays outward, as the surface gives it,
+ * and wo.z < 0 says the ray came from inside. */
 static inline frame shading_frame(const ray *r, const hit *h)
 {
     vec3 n = h->n;
-    if (vec3_dot(n, r->d) > 0.0f) n = vec3_neg(n);
+    if (!h->transmits && vec3_dot(n, r->d) > 0.0f) n = vec3_neg(n);
     return frame_from_normal(n);
 }
 

@@ -6,8 +6,17 @@
  * kind's own, so a course that adds a kind changes no earlier part: this file learns the new
  * kind, and every light sample and every bounce of parts 3 and 4 sees it.
  *
- * Today every kind shades as part 3's diffuse BSDF: a kind the course has no part for stands in
- * as diffuse with its colour (scene.h's material.albedo, with one warning when the scene loads).
+ * Part 6 shades CS184's mirror, glass and refraction-only materials, where the course has it. A
+ * kind the course has no part for stands in as diffuse with its colour (scene.h's material.albedo,
+ * with one warning when the scene loads).
+ *
+ * Delta BSDFs. A mirror or glass reflects or bends light into one direction only: its f is a
+ * Dirac delta, which no function of (wo, wi) can be. So material_f and material_pdf say 0 for
+ * every pair of directions (a light sample never lands on that one direction), and only
+ * material_sample_f finds it: it returns f = weight / |cos_theta(wi)| with a pdf that is the
+ * probability of the branch it took (1 for a mirror), so that f |cos| / pdf is the weight the
+ * path's throughput takes. The framework lights such a vertex by following that sample
+ * (render.c, one_bounce_radiance), since light sampling cannot.
  *
  * Conventions (part 3's, for every kind): directions wo and wi are unit vectors in the local
  * shading frame (frame.h: +z the shading normal), pointing away from the surface. f and pdf are
@@ -27,5 +36,15 @@ PL_PART_API float material_pdf(const material *m, vec3 wo, vec3 wi);
 /* Samples wi for wo from uniform numbers u in [0,1)^2; returns f(wo, *wi) and sets *pdf to its
  * density. A zero *pdf or a black f means no direction was found: the path ends there. */
 PL_PART_API rgb material_sample_f(const material *m, vec3 wo, vec2 u, vec3 *wi, float *pdf);
+
+/* True where m's BSDF is a delta (part 6's mirror, glass and refraction, in a course with part 6):
+ * material_f and material_pdf are 0 there, and light comes only through material_sample_f. */
+bool material_is_delta(const material *m);
+/* True where light passes through m into an inside (glass, refraction): hits on it keep their
+ * outward normal in the shading frame (hit.transmits, frame.h). */
+bool material_has_inside(const material *m);
+/* True where the course has a part that shades kind k (diffuse always): the loader warns about
+ * the other kinds, which stand in as diffuse. */
+bool material_kind_shaded(material_kind k);
 
 #endif

@@ -27,8 +27,9 @@ static inline ray ray_make(vec3 o, vec3 d, float min_t, float max_t)
 static inline vec3 ray_at(const ray *r, float t) { return vec3_add(r->o, vec3_scale(r->d, t)); }
 
 /* What a ray hit: filled by the intersection routines, read by the shaders. Part 1 fills t, n,
- * b1, b2; the framework the rest (prim and material in scene_prim_intersect, the point and its
- * error bound in scene_hit_finish, for every hit accel_intersect and render_intersect return). */
+ * b1, b2; the framework the rest (prim and material in scene_prim_intersect, the point, its
+ * error bound and transmits in scene_hit_finish, for every hit accel_intersect and render_intersect
+ * return). */
 typedef struct {
     float t;       /* ray parameter of the hit */
     vec3 n;        /* unit shading normal, world space (interpolated for triangles) */
@@ -42,6 +43,8 @@ typedef struct {
     vec3 ng;       /* unit geometric normal: the face normal (p1 - p0) x (p2 - p0), or outward */
     float leave;   /* how far from p, along ng, a ray leaving the surface starts: p_err across the
                       surface, times a safety factor (spawn.h); once per hit, not per ray */
+    int transmits; /* 1 on a surface light passes through (part 6's glass): it has an inside, so
+                      shading_frame (frame.h) keeps n as the surface gives it, outward; 0 elsewhere */
 } hit;
 
 #endif

@@ -4,6 +4,10 @@
 #include "clock.h"
 #include "counters.h"
 #include "envmap.h"
+#include "frame.h"
+#include "material.h"
+#include "spawn.h"
+#include "todo.h"
 #include "trace.h"
 #include "../parts/part1_raygen/part1.h"  /* call sites of the parts (framework/README.md) */
 #include "../parts/part3_direct/part3.h"
@@ -57,8 +61,37 @@ bool render_occluded(const render_ctx *ctx, const ray *r)
 #define SEAM_RGB(fn, ctx, r, h, call) \
     (pl_trace ? trace_leave(PL_SEAM_##fn, (trace_enter(PL_SEAM_##fn, ctx, r, h), (call))) : (call))
 
+/* Light at a mirror or glass vertex (material_is_delta). No light sample can land on the one
+ * direction a delta BSDF reflects or bends light into (material_f is 0 for all of them), so the
+ * vertex's direct light follows the BSDF's own sample instead: one ray, and the light it meets,
+ * the emission of what it hits or the environment where it leaves the scene. A path's next vertex
+ * never adds emission (part4.h), so this counts the light seen in a mirror once, as bounce k of a
+ * path whose k-th vertex is the mirror: at -m 1, a mirror shows the lights it faces. */
+static rgb delta_light(const render_ctx *ctx, const ray *r, const hit *h, rng *g)
+{
+    const material *m = &ctx->scene->materials[h->material];
+    frame f = shading_frame(r, h);
+    vec3 wo = frame_to_local(&f, vec3_neg(r->d)), wi;
+    float pdf;
+    int stubs = pl_todo_count();
+    rgb fr = material_sample_f(m, wo, rng_uniform2(g), &wi, &pdf);
+    if (pl_todo_count() != stubs) return rgb_magenta();  /* part 6 is a stub: show it, as every stub does */
+    float cos_i = fabsf(cos_theta(wi));
+    if (!(pdf > 0.0f) || rgb_is_black(fr) || cos_i == 0.0f) return rgb_gray(0.0f);
+
+    ray next = spawn_ray(r, h, frame_to_world(&f, wi));
+    hit at = {0};
+    rgb Le = rgb_gray(0.0f);
+    if (render_intersect(ctx, &next, &at))
+        Le = SEAM_RGB(zero_bounce_radiance, ctx, &next, &at, zero_bounce_radiance(ctx, &next, &at));
+    else if (ctx->scene->env)
+        Le = envmap_radiance(ctx->scene->env, next.d);
+    return rgb_mul(Le, rgb_scale(fr, cos_i / pdf));
+}
+
 static rgb direct_light(const render_ctx *ctx, const ray *r, const hit *h, rng *g)
 {
+    if (material_is_delta(&ctx->scene->materials[h->material])) return delta_light(ctx, r, h, g);
     return ctx->opts->hemisphere ? SEAM_RGB(direct_hemisphere, ctx, r, h, direct_hemisphere(ctx, r, h, g))
                                  : SEAM_RGB(direct_importance, ctx, r, h, direct_importance(ctx, r, h, g));
 }

@@ -52,7 +52,9 @@ PL_PART_API bool render_occluded(const render_ctx *ctx, const ray *r);
  * -m is kept. A miss is black. */
 PL_PART_API rgb radiance_estimate(const render_ctx *ctx, ray *r, rng *g);
 
-/* Direct light at a hit by the sampler the options pick (-H: hemisphere, else light importance). */
+/* Direct light at a hit by the sampler the options pick (-H: hemisphere, else light importance).
+ * At a mirror or glass (material_is_delta, part 6) it follows the BSDF's sample instead: one ray,
+ * adding the emission it meets (render.c says why). */
 PL_PART_API rgb one_bounce_radiance(const render_ctx *ctx, const ray *r, const hit *h, rng *g);
 
 /* Samples per area light at the surface that ray r reached: all -l of them (opts->light_samples, at

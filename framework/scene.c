@@ -4,6 +4,7 @@
 #include "check.h"
 #include "counters.h"
 #include "envmap.h"
+#include "material.h"
 #include "spawn.h"
 #include "../parts/part1_raygen/part1.h"  /* call sites of the parts (framework/README.md) */
 #include <stdlib.h>
@@ -131,4 +132,6 @@ void scene_hit_finish(const scene *s, const tri_frame *frames, const ray *r, hit
     } else {
         hit_refine_sphere(&s->spheres[h->prim - s->num_triangles], r, h);
     }
+    /* Glass keeps its outward normal in the shading frame, so its BSDF can tell in from out. */
+    h->transmits = material_has_inside(&s->materials[h->material]);
 }

@@ -7,8 +7,8 @@
  * PL_SEAM_PART_FUNCTIONS(X): X(name, task) for each part function the framework calls, with the
  *   task that writes it ("2.2"). The framework calls the recorded ones through the wrappers in
  *   framework/render.c (pixel loop and radiance dispatch), which log their arguments and results
- *   when a trace is on; part-to-part calls (part 4's russian_roulette, and part 3's BSDF, which
- *   parts 3 and 4 reach through framework/material.h) are not intercepted: the trace replays them
+ *   when a trace is on; part-to-part calls (part 4's russian_roulette, and part 3's and part 6's
+ *   BSDFs, which parts 3 and 4 reach through framework/material.h) are not intercepted: the trace replays them
  *   from what it saw (framework/trace.h says how).
  * PL_SEAM_FRAMEWORK_FUNCTIONS(X): X(name, recorded) for each framework function the parts call;
  *   recorded is 1 when the function logs its result into an active trace itself. */
@@ -34,6 +34,11 @@
     X(at_least_one_bounce_radiance, "4.1")   \
     X(russian_roulette, "4.2")               \
     X(adaptive_converged, "5.1")             \
+    X(reflect, "6.1")                        \
+    X(mirror_sample_f, "6.2")                \
+    X(refract, "6.3")                        \
+    X(refraction_sample_f, "6.4")            \
+    X(glass_sample_f, "6.5")                 \
     X(env_sample_uniform, "8.1")             \
     X(env_build_distribution, "8.2")         \
     X(env_pdf, "8.3")                        \

@@ -38,11 +38,13 @@ static inline ray pl_todo_ray(const char *task, const char *fn)
 }
 
 static inline vec2 pl_todo_vec2(const char *task, const char *fn) { pl_todo_report(task, fn); return vec2_make(0.0f, 0.0f); }
+static inline vec3 pl_todo_vec3(const char *task, const char *fn) { pl_todo_report(task, fn); return vec3_make(0.0f, 0.0f, 1.0f); }
 
 #define PL_TODO(task, fn) pl_todo_status(task, fn)
 #define PL_TODO_RGB(task, fn) pl_todo_rgb(task, fn)
 #define PL_TODO_FALSE(task, fn) pl_todo_false(task, fn)
 #define PL_TODO_RAY(task, fn) pl_todo_ray(task, fn)
 #define PL_TODO_VEC2(task, fn) pl_todo_vec2(task, fn)
+#define PL_TODO_VEC3(task, fn) pl_todo_vec3(task, fn)
 
 #endif

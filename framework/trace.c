@@ -215,9 +215,13 @@ void trace_enter(pl_seam_id fn, const render_ctx *ctx, const ray *r, const hit *
     else if (fn != PL_SEAM_one_bounce_radiance)
         emit(t, "call", json_pack("{s:s, s:s}", "function", seam_names[fn], "task", seam_tasks[fn]),
              "%s (task %s):", seam_names[fn], seam_tasks[fn]);
-    else
+    else if (!material_is_delta(&ctx->scene->materials[h->material]))
         emit(t, "call", json_pack("{s:s}", "function", seam_names[fn]),
              "one_bounce_radiance (the framework's: -H picks direct_hemisphere, else direct_importance):");
+    else
+        emit(t, "call", json_pack("{s:s}", "function", seam_names[fn]),
+             "one_bounce_radiance (the framework's: at a mirror or glass it follows material_sample_f's direction "
+             "and adds the light that ray meets):");
     if (t->depth >= MAX_NEST) return;
     trace_frame *f = &t->stack[t->depth++];
     *f = (trace_frame){fn, ctx, *r, *h, pl_todo_count()};
@@ -609,8 +613,23 @@ static rgb bsdf_step(trace_log *t, vec3 wo, vec3 wi, const char *how)
 {
     trace_path *p = &t->path;
     const material *m = material_at(t, &p->at);
-    rgb fr = m ? material_f(m, wo, wi) : rgb_gray(0.0f);
-    float pdf = m ? material_pdf(m, wo, wi) : 0.0f;
+    rgb fr = rgb_gray(0.0f);
+    float pdf = 0.0f;
+    bool delta = m && material_is_delta(m);
+    if (delta && p->draws >= 2) {
+        /* A mirror's or glass's f and pdf are no functions of wi (material.h): replay the sample on
+         * the numbers it drew, and check that the bounce ray went where it said. */
+        vec3 said;
+        replaying = true;
+        fr = material_sample_f(m, wo, vec2_make(p->value[0], p->value[1]), &said, &pdf);
+        replaying = false;
+        if (vec3_dot(said, wi) < 0.9999f * vec3_length(wi))
+            mark(t, "the bounce ray leaves along " V3 " (local) but material_sample_f sent " V3, XYZ(wi), XYZ(said));
+    }
+    else if (m && !delta) {
+        fr = material_f(m, wo, wi);
+        pdf = material_pdf(m, wo, wi);
+    }
     rgb factor = pdf > 0.0f ? rgb_scale(fr, fabsf(wi.z) / pdf) : rgb_gray(0.0f);
     rgb beta = rgb_mul(p->beta, factor);
     emit(t, "bsdf_sample",
@@ -618,10 +637,12 @@ static rgb bsdf_step(trace_log *t, vec3 wo, vec3 wi, const char *how)
                    jnum(wi.z), "throughput", jrgb(beta)),
          "BSDF sample%s: direction " V3 " (local, +z the normal), f " V3 ", pdf %.6g, cos %.5g -> throughput " V3,
          how, XYZ(wi), RGB(fr), (double)pdf, (double)wi.z, RGB(beta));
-    if (wi.z <= 0.0f) mark(t, "the bounce direction is below the surface it leaves (cos theta = %.5g)", (double)wi.z);
+    /* Light passes below a surface that transmits (glass); every other surface reflects. */
+    if (wi.z <= 0.0f && !p->at.transmits)
+        mark(t, "the bounce direction is below the surface it leaves (cos theta = %.5g)", (double)wi.z);
     if (!(pdf > 0.0f) && !rgb_is_black(fr)) mark(t, "pdf is 0 but f is " V3 " (not black)", RGB(fr));
     bool cosine_pdf = fabsf(pdf - wi.z * PL_INV_PI) <= 1e-3f * pdf;
-    if (m && ((cosine_pdf && rgb_max(factor) > 1.0001f) || rgb_max(fr) > 1.0001f * PL_INV_PI))
+    if (m && !delta && ((cosine_pdf && rgb_max(factor) > 1.0001f) || rgb_max(fr) > 1.0001f * PL_INV_PI))
         mark(t, "throughput above 1 after a diffuse bounce: f cos / pdf = " V3 ", f = " V3 " (a diffuse f is at most 1/pi)",
              RGB(factor), RGB(fr));
     return beta;

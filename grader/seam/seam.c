@@ -39,7 +39,7 @@ uint64_t seam_hash(uint64_t h, const void *data, size_t size)
 uint64_t seam_hash_int(uint64_t h, int64_t v) { return seam_hash(h, &v, sizeof v); }
 
 /* The structs below are hashed whole only where they have no padding. */
-_Static_assert(sizeof(ray) == 9 * 4 && sizeof(hit) == 18 * 4 && sizeof(mat4) == 16 * 4, "padding in ray, hit or mat4");
+_Static_assert(sizeof(ray) == 9 * 4 && sizeof(hit) == 19 * 4 && sizeof(mat4) == 16 * 4, "padding in ray, hit or mat4");
 
 uint64_t seam_hash_camera(uint64_t h, const camera *c)
 {
@@ -57,7 +57,9 @@ uint64_t seam_hash_rng(uint64_t h, const rng *g) { return g ? SEAM_HASH(h, *g) :
 uint64_t seam_hash_material(uint64_t h, const material *m)
 {
     if (!m) return seam_hash_int(h, -1);
-    float f[] = {m->albedo.r, m->albedo.g, m->albedo.b, m->Le.r, m->Le.g, m->Le.b};
+    float f[] = {m->albedo.r, m->albedo.g, m->albedo.b, m->Le.r, m->Le.g, m->Le.b, m->reflectance.r,
+                 m->reflectance.g, m->reflectance.b, m->transmittance.r, m->transmittance.g, m->transmittance.b,
+                 m->ior, m->alpha, m->eta.r, m->eta.g, m->eta.b, m->k.r, m->k.g, m->k.b};
     return SEAM_HASH(seam_hash_int(h, m->kind), f);
 }
 

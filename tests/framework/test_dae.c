@@ -10,6 +10,7 @@
 #include <stdlib.h>
 #include <string.h>
 #include "../../framework/dae.h"
+#include "../../framework/material.h"
 #include "../../framework/rng.h"
 
 #define VALID "tests/data/valid/"
@@ -654,11 +655,16 @@ static void test_dae_materials__every_cgl_kind_loads_with_one_warning_per_kind(v
     assert_float_near(1.5, m[6]->ior, EPS);  /* a diffuse material holds the defaults */
     assert_float_near(0.5, m[6]->alpha, EPS);
 
-    assert_int_equal(4, w.count);
-    assert_int_equal(1, warn_log_count(&w, "mirror materials are not supported yet"));
-    assert_int_equal(1, warn_log_count(&w, "glass materials are not supported yet"));
-    assert_int_equal(1, warn_log_count(&w, "refraction materials are not supported yet"));
-    assert_int_equal(1, warn_log_count(&w, "microfacet materials are not supported yet"));
+    /* Once per kind the course has no part for (material_kind_shaded): part 6 shades the first three. */
+    int unshaded = 0;
+    for (material_kind k = MATERIAL_MIRROR; k <= MATERIAL_MICROFACET; k++) unshaded += !material_kind_shaded(k);
+    assert_int_equal(unshaded, w.count);
+    assert_int_equal(!material_kind_shaded(MATERIAL_MIRROR), warn_log_count(&w, "mirror materials are not supported yet"));
+    assert_int_equal(!material_kind_shaded(MATERIAL_GLASS), warn_log_count(&w, "glass materials are not supported yet"));
+    assert_int_equal(!material_kind_shaded(MATERIAL_REFRACTION),
+                     warn_log_count(&w, "refraction materials are not supported yet"));
+    assert_int_equal(!material_kind_shaded(MATERIAL_MICROFACET),
+                     warn_log_count(&w, "microfacet materials are not supported yet"));
     assert_non_null(strstr(w.all, "materials.dae:"));  /* warnings are located too */
     scene_free(&s);
 }
