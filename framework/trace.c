@@ -608,6 +608,27 @@ static const material *material_at(trace_log *t, const hit *h)
 }
 
 
+/* What a mirror's or glass's sample must weigh, f |cos| / pdf (handout/part6.md): its reflectance
+ * when it reflects (wi on wo's side), its transmittance times a radiance scale when it refracts
+ * (eta^2, CS184's 1 / eta^2 or none: the handout accepts each). Never R or 1 - R times that: the
+ * branch's probability must cancel. */
+static void check_delta_weight(trace_log *t, const material *m, vec3 wo, vec3 wi, rgb weight)
+{
+    if (rgb_is_black(weight)) return;  /* no direction: the path ends, nothing to weigh */
+    if (wi.z * wo.z > 0.0f) {
+        if (!rgb_close(weight, m->reflectance))
+            mark(t, "this reflection weighs f |cos| / pdf = " V3 ", not the reflectance " V3 " (handout/part6.md, 6.2 "
+                 "and 6.5)", RGB(weight), RGB(m->reflectance));
+        return;
+    }
+    float eta = wo.z > 0.0f ? 1.0f / m->ior : m->ior;
+    const float scales[] = {eta * eta, 1.0f / (eta * eta), 1.0f};
+    for (int i = 0; i < 3; i++)
+        if (rgb_close(weight, rgb_scale(m->transmittance, scales[i]))) return;
+    mark(t, "this refraction weighs f |cos| / pdf = " V3 ", not the transmittance " V3 " times eta^2 = %.4g (or 1 / eta^2, "
+         "or 1) (handout/part6.md, 6.4 and 6.5)", RGB(weight), RGB(m->transmittance), (double)(eta * eta));
+}
+
 /* The BSDF sample that sent wi (local) from the current vertex; returns the new throughput. */
 static rgb bsdf_step(trace_log *t, vec3 wo, vec3 wi, const char *how)
 {
@@ -625,6 +646,7 @@ static rgb bsdf_step(trace_log *t, vec3 wo, vec3 wi, const char *how)
         replaying = false;
         if (vec3_dot(said, wi) < 0.9999f * vec3_length(wi))
             mark(t, "the bounce ray leaves along " V3 " (local) but material_sample_f sent " V3, XYZ(wi), XYZ(said));
+        if (pdf > 0.0f) check_delta_weight(t, m, wo, said, rgb_scale(fr, fabsf(said.z) / pdf));
     }
     else if (m && !delta) {
         fr = material_f(m, wo, wi);

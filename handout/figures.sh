@@ -13,10 +13,11 @@ R="-r 320 240"
 bunny=scenes/cornell_bunny.dae
 spheres=scenes/cornell_spheres.dae
 empty=scenes/cornell_empty.dae
+mirror_glass=scenes/cornell_mirror_glass.dae
 only=${1:-all}
 case "$only" in
-    all|part1|part2|part3|part4|part5|part8|part9) ;;
-    *) echo "usage: handout/figures.sh [all|part1|part2|part3|part4|part5|part8|part9]" >&2; exit 2 ;;
+    all|part1|part2|part3|part4|part5|part6|part8|part9) ;;
+    *) echo "usage: handout/figures.sh [all|part1|part2|part3|part4|part5|part6|part8|part9]" >&2; exit 2 ;;
 esac
 
 ${MAKE:-make} --no-print-directory -s "$BIN/pathtracer" "$BIN/imgtool" "$BIN/acne_figure"
@@ -78,6 +79,13 @@ if want part5; then
     # 5.1: adaptive sampling and its sample-rate map (written beside it as *_rate.png)
     run $d/bunny_adaptive.png $T $R -s 1024 -a 64 0.05 -l 1 -m 5 $bunny
     run $d/spheres_adaptive.png $T $R -s 1024 -a 64 0.05 -l 1 -m 5 $spheres
+fi
+if want part6 && [ -d parts/part6_specular ]; then
+    d=$OUT/part6
+    # 6.1-6.5: the mirror and glass spheres, direct light only, all bounces (the caustic), the second bounce alone
+    run $d/mirror_glass_m1.png $T $R -s 64 -l 2 -m 1 $mirror_glass
+    run $d/mirror_glass_m5.png $T $R -s 64 -l 2 -m 5 $mirror_glass
+    run $d/mirror_glass_bounce2.png $T $R -s 64 -l 2 -m 2 -o 0 $mirror_glass
 fi
 if want part8 && [ -d parts/part8_envlight ]; then
     d=$OUT/part8

@@ -22,7 +22,9 @@ for md in handout/part*.md; do  # the course's parts: a release holds only its o
     part=$(basename "$md" .md)
     [ -z "$only" ] || [ "$part" = "$only" ] || continue
     n=0
-    grep -n '^<!-- trace: .* -->$' "$md" | while IFS=: read -r line rest; do
+    # --write rewrites from the last block up, so that a block that grows moves no marker still to come.
+    grep -n '^<!-- trace: .* -->$' "$md" | if [ "$mode" = --write ]; then sort -t: -k1,1nr; else cat; fi |
+    while IFS=: read -r line rest; do
         args=$(echo "$rest" | sed 's/^<!-- trace: \(.*\) -->$/\1/')
         n=$((n + 1))
         got=$(mktemp)
