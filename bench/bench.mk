@@ -1,9 +1,10 @@
 # Benchmarks: speed figures, never tests. `make bench` runs them all; each prints its figures, and
 # none installs anything or writes a tracked file (bench-bvh's table goes to build/bench/bvh/).
 # BENCH_RUNS=N: runs per figure (median or best, as each says).
-.PHONY: bench bench-bvh bench-references bench-load bench-write bench-transport bench-trace bench-surfaces bench-hotpath bench-env
+.PHONY: bench bench-bvh bench-references bench-load bench-write bench-transport bench-trace bench-surfaces bench-hotpath bench-env \
+        bench-specular
 # bench-grade (the solution graded as a submission) is the course's: course/course.mk, where the tree has it.
-bench: bench-hotpath bench-bvh $(if $(wildcard course/course.mk),bench-grade) bench-references bench-load bench-write bench-transport bench-trace bench-surfaces $(if $(wildcard parts/part8_*),bench-env)  ## every benchmark (figures, not tests; see bench/RESULTS.md)
+bench: bench-hotpath bench-bvh $(if $(wildcard course/course.mk),bench-grade) bench-references bench-load bench-write bench-transport bench-trace bench-surfaces $(if $(wildcard parts/part6_*),bench-specular) $(if $(wildcard parts/part8_*),bench-env)  ## every benchmark (figures, not tests; see bench/RESULTS.md)
 
 # ---- BVH (part 2): build time, rays per second, whole render; beside Embree when installed -------
 #   Embree (Debian's libembree-dev, used only here) ships no pkg-config file, so its header is the
@@ -53,6 +54,10 @@ $(BIN)/write_bench: $(BUILD)/bench/write_bench.o $(LIB_OBJ)
 bench-write: $(BIN)/write_bench $(BIN)/pathtracer  ## time to write a render's outputs
 	@echo "== writing a render's outputs, best of $${BENCH_RUNS:-20} runs"
 	@$(BIN)/write_bench
+
+# ---- mirror and glass (part 6, where the course has it): the box beside its diffuse twin ---------
+bench-specular: $(BIN)/pathtracer  ## part 6: the mirror-and-glass Cornell box's render time beside the diffuse one's (target: at most 1.5x)
+	@BIN=$(BIN) RUNS=$(BENCH_RUNS) sh bench/specular.sh
 
 # ---- the environment light (part 8, where the course has it): tables and time per sample ---------
 $(BIN)/env_bench: $(BUILD)/bench/env_bench.o $(LIB_OBJ)
