@@ -75,7 +75,7 @@ WARN     := -Wall -Wextra -Wpedantic -Wshadow -Wno-unused-parameter $(call cc_wa
 CPPFLAGS += $(FEATURES) -MMD -MP $(shell pkg-config --cflags $(PKGS))
 # The framework calls a part of the second assignment only where the course has it (material.c,
 # scene.c, render.c, light.c, main.c, cli.c).
-CPPFLAGS += $(foreach n,6 8 9,$(if $(filter part$(n),$(PART_SUITES)),-DPL_HAS_PART$(n)))
+CPPFLAGS += $(foreach n,6 7 8 9,$(if $(filter part$(n),$(PART_SUITES)),-DPL_HAS_PART$(n)))
 CFLAGS   += -std=c11 $(OPT) -g $(WARN) -pthread
 LDLIBS   += $(shell pkg-config --libs $(PKGS)) -lm -pthread
 ifeq ($(WERROR),1)

@@ -1,11 +1,14 @@
 /* The BSDF of a material, whatever its kind (material.h says why it exists): the one place that
  * chooses whose code shades a material. Diffuse materials, and every kind the course has no part
- * for, shade as part 3's diffuse BSDF; part 6's mirror and glass, where the course has part 6,
- * shade as part 6 says. */
+ * for, shade as part 3's diffuse BSDF; part 6's mirror and glass and part 7's microfacet metal,
+ * where the course has those parts, shade as those parts say. */
 #include "material.h"
 #include "../parts/part3_direct/part3.h"
 #ifdef PL_HAS_PART6  /* mirror and glass, in a course that teaches them (the Makefile: parts/part6_*) */
 #include "../parts/part6_specular/part6.h"
+#endif
+#ifdef PL_HAS_PART7  /* microfacet metals, likewise (parts/part7_*) */
+#include "../parts/part7_microfacet/part7.h"
 #endif
 
 bool material_kind_shaded(material_kind k)
@@ -13,12 +16,16 @@ bool material_kind_shaded(material_kind k)
 #ifdef PL_HAS_PART6
     if (k == MATERIAL_MIRROR || k == MATERIAL_GLASS || k == MATERIAL_REFRACTION) return true;
 #endif
+#ifdef PL_HAS_PART7
+    if (k == MATERIAL_MICROFACET) return true;
+#endif
     return k == MATERIAL_DIFFUSE;
 }
 
 bool material_is_delta(const material *m)
 {
-    return m->kind != MATERIAL_DIFFUSE && m->kind != MATERIAL_MICROFACET && material_kind_shaded(m->kind);
+    return (m->kind == MATERIAL_MIRROR || m->kind == MATERIAL_GLASS || m->kind == MATERIAL_REFRACTION) &&
+           material_kind_shaded(m->kind);
 }
 
 bool material_has_inside(const material *m)
@@ -26,19 +33,34 @@ bool material_has_inside(const material *m)
     return (m->kind == MATERIAL_GLASS || m->kind == MATERIAL_REFRACTION) && material_kind_shaded(m->kind);
 }
 
+/* Part 7's microfacet metal, where the course shades it. */
+static bool microfacet(const material *m)
+{
+    return m->kind == MATERIAL_MICROFACET && material_kind_shaded(m->kind);
+}
+
 /* A delta BSDF is 0 for every pair of directions a caller can name (material.h). */
 rgb material_f(const material *m, vec3 wo, vec3 wi)
 {
+#ifdef PL_HAS_PART7
+    if (microfacet(m)) return microfacet_f(m, wo, wi);
+#endif
     return material_is_delta(m) ? rgb_gray(0.0f) : bsdf_f(m, wo, wi);
 }
 
 float material_pdf(const material *m, vec3 wo, vec3 wi)
 {
+#ifdef PL_HAS_PART7
+    if (microfacet(m)) return microfacet_pdf(m, wo, wi);
+#endif
     return material_is_delta(m) ? 0.0f : bsdf_pdf(m, wo, wi);
 }
 
 rgb material_sample_f(const material *m, vec3 wo, vec2 u, vec3 *wi, float *pdf)
 {
+#ifdef PL_HAS_PART7
+    if (microfacet(m)) return microfacet_sample_f(m, wo, u, wi, pdf);
+#endif
 #ifdef PL_HAS_PART6
     switch (m->kind) {
     case MATERIAL_MIRROR: return mirror_sample_f(m, wo, wi, pdf);

@@ -6,9 +6,9 @@
  * kind's own, so a course that adds a kind changes no earlier part: this file learns the new
  * kind, and every light sample and every bounce of parts 3 and 4 sees it.
  *
- * Part 6 shades CS184's mirror, glass and refraction-only materials, where the course has it. A
- * kind the course has no part for stands in as diffuse with its colour (scene.h's material.albedo,
- * with one warning when the scene loads).
+ * Part 6 shades CS184's mirror, glass and refraction-only materials, and part 7 its microfacet
+ * metal, where the course has them. A kind the course has no part for stands in as diffuse with its
+ * colour (scene.h's material.albedo, with one warning when the scene loads).
  *
  * Delta BSDFs. A mirror or glass reflects or bends light into one direction only: its f is a
  * Dirac delta, which no function of (wo, wi) can be. So material_f and material_pdf say 0 for

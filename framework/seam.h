@@ -7,7 +7,7 @@
  * PL_SEAM_PART_FUNCTIONS(X): X(name, task) for each part function the framework calls, with the
  *   task that writes it ("2.2"). The framework calls the recorded ones through the wrappers in
  *   framework/render.c (pixel loop and radiance dispatch), which log their arguments and results
- *   when a trace is on; part-to-part calls (part 4's russian_roulette, and part 3's and part 6's
+ *   when a trace is on; part-to-part calls (part 4's russian_roulette, and parts 3, 6 and 7's
  *   BSDFs, which parts 3 and 4 reach through framework/material.h) are not intercepted: the trace replays them
  *   from what it saw (framework/trace.h says how).
  * PL_SEAM_FRAMEWORK_FUNCTIONS(X): X(name, recorded) for each framework function the parts call;
@@ -39,6 +39,12 @@
     X(refract, "6.3")                        \
     X(refraction_sample_f, "6.4")            \
     X(glass_sample_f, "6.5")                 \
+    X(beckmann_d, "7.1")                     \
+    X(fresnel_conductor, "7.2")              \
+    X(microfacet_g, "7.3")                   \
+    X(microfacet_f, "7.4")                   \
+    X(microfacet_pdf, "7.5")                 \
+    X(microfacet_sample_f, "7.6")            \
     X(env_sample_uniform, "8.1")             \
     X(env_build_distribution, "8.2")         \
     X(env_pdf, "8.3")                        \

@@ -160,6 +160,13 @@ static void check_radiance(trace_log *t, const char *what, rgb c)
     if (rgb_bad(c)) mark(t, "%s is " V3 ": radiance must be finite and not negative", what, RGB(c));
 }
 
+/* Whether m shades as part 3's diffuse BSDF (diffuse, or a kind the course has no part for): the
+ * marks that bound a diffuse f by 1/pi hold for it alone (a glossy metal's f is far above). */
+static bool shades_diffuse(const material *m)
+{
+    return m->kind == MATERIAL_DIFFUSE || !material_kind_shaded(m->kind);
+}
+
 /* Within float rounding of each other (sums in another order differ in the last bits). */
 static bool rgb_close(rgb a, rgb b)
 {
@@ -568,9 +575,10 @@ void trace_light(const light *l, vec3 p, vec2 u, bool ok, const light_sample *ls
         ray probe = spawn_ray_to_light(&f->r, &f->h, l, ls);
         visible = !accel_occluded(t->ctx->accel, &probe);
         if (ls->pdf > 0.0f && cosine > 0.0f && f->h.material >= 0 && f->h.material < s->num_materials) {
-            rgb fr = material_f(&s->materials[f->h.material], wo, wi);
+            const material *m = &s->materials[f->h.material];
+            rgb fr = material_f(m, wo, wi);
             c = rgb_scale(rgb_mul(ls->L, fr), cosine / ls->pdf / (float)n);
-            bright = rgb_max(fr) > 1.0001f * PL_INV_PI ? fr : bright;
+            bright = shades_diffuse(m) && rgb_max(fr) > 1.0001f * PL_INV_PI ? fr : bright;
         }
         if (visible) t->direct.visible = rgb_add(t->direct.visible, c);
         else t->direct.hidden = rgb_add(t->direct.hidden, c);
@@ -659,12 +667,14 @@ static rgb bsdf_step(trace_log *t, vec3 wo, vec3 wi, const char *how)
                    jnum(wi.z), "throughput", jrgb(beta)),
          "BSDF sample%s: direction " V3 " (local, +z the normal), f " V3 ", pdf %.6g, cos %.5g -> throughput " V3,
          how, XYZ(wi), RGB(fr), (double)pdf, (double)wi.z, RGB(beta));
-    /* Light passes below a surface that transmits (glass); every other surface reflects. */
-    if (wi.z <= 0.0f && !p->at.transmits)
+    /* Light passes below a surface that transmits (glass); every other surface reflects. A diffuse
+     * sampler never leaves below it; part 7's metal may draw a direction below, which it must
+     * then return black, with pdf 0: the path ends there. */
+    if (wi.z <= 0.0f && !p->at.transmits && m && (shades_diffuse(m) || !rgb_is_black(factor)))
         mark(t, "the bounce direction is below the surface it leaves (cos theta = %.5g)", (double)wi.z);
     if (!(pdf > 0.0f) && !rgb_is_black(fr)) mark(t, "pdf is 0 but f is " V3 " (not black)", RGB(fr));
     bool cosine_pdf = fabsf(pdf - wi.z * PL_INV_PI) <= 1e-3f * pdf;
-    if (m && !delta && ((cosine_pdf && rgb_max(factor) > 1.0001f) || rgb_max(fr) > 1.0001f * PL_INV_PI))
+    if (m && shades_diffuse(m) && ((cosine_pdf && rgb_max(factor) > 1.0001f) || rgb_max(fr) > 1.0001f * PL_INV_PI))
         mark(t, "throughput above 1 after a diffuse bounce: f cos / pdf = " V3 ", f = " V3 " (a diffuse f is at most 1/pi)",
              RGB(factor), RGB(fr));
     return beta;

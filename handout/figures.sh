@@ -14,10 +14,11 @@ bunny=scenes/cornell_bunny.dae
 spheres=scenes/cornell_spheres.dae
 empty=scenes/cornell_empty.dae
 mirror_glass=scenes/cornell_mirror_glass.dae
+microfacet=scenes/cornell_microfacet.dae
 only=${1:-all}
 case "$only" in
-    all|part1|part2|part3|part4|part5|part6|part8|part9) ;;
-    *) echo "usage: handout/figures.sh [all|part1|part2|part3|part4|part5|part6|part8|part9]" >&2; exit 2 ;;
+    all|part1|part2|part3|part4|part5|part6|part7|part8|part9) ;;
+    *) echo "usage: handout/figures.sh [all|part1|part2|part3|part4|part5|part6|part7|part8|part9]" >&2; exit 2 ;;
 esac
 
 ${MAKE:-make} --no-print-directory -s "$BIN/pathtracer" "$BIN/imgtool" "$BIN/acne_figure"
@@ -86,6 +87,13 @@ if want part6 && [ -d parts/part6_specular ]; then
     run $d/mirror_glass_m1.png $T $R -s 64 -l 2 -m 1 $mirror_glass
     run $d/mirror_glass_m5.png $T $R -s 64 -l 2 -m 5 $mirror_glass
     run $d/mirror_glass_bounce2.png $T $R -s 64 -l 2 -m 2 -o 0 $mirror_glass
+fi
+if want part7 && [ -d parts/part7_microfacet ]; then
+    d=$OUT/part7
+    # 7.1-7.6: the metals lit directly by light sampling, all bounces, then direct light by hemisphere sampling
+    run $d/microfacet_m1.png $T $R -s 64 -l 4 -m 1 $microfacet
+    run $d/microfacet_m5.png $T $R -s 64 -l 2 -m 5 $microfacet
+    run $d/microfacet_hemisphere.png $T $R -s 64 -l 4 -m 1 -H $microfacet
 fi
 if want part8 && [ -d parts/part8_envlight ]; then
     d=$OUT/part8

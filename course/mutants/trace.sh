@@ -5,8 +5,8 @@
 # applied to a scratch copy (as course/mutants/run.sh does), bin/pathtracer built there, and the same
 # command run on the solution must print no "!!" line at all (a mark that fires on correct code is a
 # defect too). Then the same for correct code written differently: the solution and each of parts
-# 3, 4, 6, 8 and 9's correct alternatives (course/alternatives: other draw orders, roulette conventions,
-# a recursion, CS184's radiance scale through glass, another disc mapping) traced over a sweep of renders (-o 0 and -o 1, -H, one and
+# 3, 4, 6, 7, 8 and 9's correct alternatives (course/alternatives: other draw orders, roulette
+# conventions, a recursion, CS184's radiance scale through glass, another disc mapping) traced over a sweep of renders (-o 0 and -o 1, -H, one and
 # several light samples, a thin lens, every course scene) print no "!!" line. Last, the grader's pointer: a failing case's --trace-pixel command
 # shows the bug.
 # Usage: course/mutants/trace.sh           (make trace-mutants)
@@ -36,6 +36,7 @@ part9-lens-in-world-axes|-r 64 48 -s 2 -m 0 -b 0.1 -d 3 --trace-pixel 20 20 scen
 stub:parts/part6_specular/specular.c|-r 64 48 -m 1 --trace-pixel 24 20 scenes/cornell_mirror_glass.dae|stub: Part 6, task 6.2: mirror_sample_f() is not implemented yet
 part6-mirror-f-keeps-the-cosine|-r 64 48 -s 4 -m 2 --trace-pixel 24 20 scenes/cornell_mirror_glass.dae|this reflection weighs
 part6-glass-pdf-not-scaled|-r 64 48 -s 4 -m 2 --trace-pixel 43 14 scenes/cornell_mirror_glass.dae|this refraction weighs
+stub:parts/part7_microfacet/microfacet.c|-r 64 48 -m 1 --trace-pixel 42 18 scenes/cornell_microfacet.dae|stub: Part 7, task 7.4: microfacet_f() is not implemented yet
 part8-pdf-missing-sine|-r 32 24 -s 1 -m 1 -l 3 -e scenes/sky.exr --trace-pixel 6 3 scenes/env_shapes.dae|is not the density of its direction
 part8-conditional-row-stride-width|-r 32 24 -s 4 -m 1 -l 16 -e scenes/sky.exr --trace-pixel 28 2 scenes/env_shapes.dae|is not the density of its direction'
 # A scratch copy of the tree in $1 (the release objects reused: make rebuilds what changes).
@@ -76,11 +77,12 @@ done || failed=1
 
 # Correct code, traced widely: no mark anywhere.
 sweep='-m 1 -l 4|-m 1 -l 4 -H|-m 2 -o 0 -l 1|-m 3 -o 0 -l 4|-m 5 -l 2|-m 5 -l 4 -H|-m 4 -o 0 --no-rr -l 2|-m 8 -o 1 -l 1|-m 2 -l 2 -b 0.15 -d 3'
-scenes='cornell_spheres cornell_two_lights lights_point_dir cornell_grazing env_shapes cornell_mirror_glass'
+scenes='cornell_spheres cornell_two_lights lights_point_dir cornell_grazing env_shapes cornell_mirror_glass cornell_microfacet'
 # env_shapes has no light of its own: it is swept under its two maps instead (part 8).
 env_sweep='-m 1 -l 4 -e scenes/sky.exr|-m 3 -l 2 --env-uniform -e scenes/studio.exr|-m 2 -l 2 -e scenes/studio.exr'
 for alt in solution "$root"/course/alternatives/part3-*.patch "$root"/course/alternatives/part4-*.patch \
-           "$root"/course/alternatives/part6-*.patch "$root"/course/alternatives/part8-*.patch \
+           "$root"/course/alternatives/part6-*.patch "$root"/course/alternatives/part7-*.patch \
+           "$root"/course/alternatives/part8-*.patch \
            "$root"/course/alternatives/part9-*.patch; do
     name=$(basename "$alt" .patch) dir=$root
     if [ "$alt" != solution ]; then

@@ -13,19 +13,21 @@
 typedef struct {
     const char *path;
     int triangles, spheres, lights;
-    int stand_ins;  /* materials of kinds part 6 shades: in a course without it, one warning per kind */
+    int stand_ins;       /* kinds of material a later part shades: in a course without it, one warning each */
+    material_kind kind;  /* ... and that part's kind (MATERIAL_DIFFUSE: none) */
 } scene_spec;
 
 static const scene_spec SCENES[] = {
-    {"scenes/cornell_empty.dae", 12, 0, 1, 0},
-    {"scenes/cornell_spheres.dae", 12, 2, 1, 0},
-    {"scenes/cornell_bunny.dae", 12 + 3674, 0, 1, 0},
-    {"scenes/lights_point_dir.dae", 20, 1, 2, 0},
-    {"scenes/env_shapes.dae", 20, 1, 0, 0},  /* lit by an environment map (-e): no light of its own */
-    {"scenes/cornell_open.dae", 8, 2, 0, 0},  /* the spheres' box without its ceiling, for an environment map */
-    {"scenes/cornell_grazing.dae", 12, 2, 1, 0},  /* 100 m out: its own test below */
-    {"scenes/cornell_two_lights.dae", 14, 2, 2, 0},  /* its own test below */
-    {"scenes/cornell_mirror_glass.dae", 12, 2, 1, 2},  /* part 6's: a mirror and a glass sphere */
+    {"scenes/cornell_empty.dae", 12, 0, 1, 0, MATERIAL_DIFFUSE},
+    {"scenes/cornell_spheres.dae", 12, 2, 1, 0, MATERIAL_DIFFUSE},
+    {"scenes/cornell_bunny.dae", 12 + 3674, 0, 1, 0, MATERIAL_DIFFUSE},
+    {"scenes/lights_point_dir.dae", 20, 1, 2, 0, MATERIAL_DIFFUSE},
+    {"scenes/env_shapes.dae", 20, 1, 0, 0, MATERIAL_DIFFUSE},  /* lit by an environment map (-e): no light of its own */
+    {"scenes/cornell_open.dae", 8, 2, 0, 0, MATERIAL_DIFFUSE},  /* the spheres' box without its ceiling, for an environment map */
+    {"scenes/cornell_grazing.dae", 12, 2, 1, 0, MATERIAL_DIFFUSE},  /* 100 m out: its own test below */
+    {"scenes/cornell_two_lights.dae", 14, 2, 2, 0, MATERIAL_DIFFUSE},  /* its own test below */
+    {"scenes/cornell_mirror_glass.dae", 12, 2, 1, 2, MATERIAL_GLASS},  /* part 6's: a mirror and a glass sphere */
+    {"scenes/cornell_microfacet.dae", 12, 2, 1, 1, MATERIAL_MICROFACET},  /* part 7's: two metals */
 };
 
 static void count_warning(void *user, const char *msg)
@@ -52,7 +54,7 @@ static void test_scenes__each_loads_quietly_with_expected_contents(void **state)
     for (size_t i = 0; i < sizeof SCENES / sizeof SCENES[0]; i++) {
         const scene_spec *spec = &SCENES[i];
         scene s;
-        load_scene_warning(spec->path, &s, material_kind_shaded(MATERIAL_GLASS) ? 0 : spec->stand_ins);
+        load_scene_warning(spec->path, &s, material_kind_shaded(spec->kind) ? 0 : spec->stand_ins);
         if (s.num_triangles != spec->triangles || s.num_spheres != spec->spheres || s.num_lights != spec->lights)
             fail_msg("%s: expected %d triangles, %d spheres, %d lights; got %d, %d, %d", spec->path, spec->triangles,
                      spec->spheres, spec->lights, s.num_triangles, s.num_spheres, s.num_lights);

@@ -161,23 +161,32 @@ static void test_cases__every_member_known_and_typed(void **state)
 }
 
 /* The course's parts: each once, in increasing order, numbered 1..9; hidden cases only for a part
- * the base file lists (a hidden part 7 in a course without one would be graded with no unit tests). */
+ * the base file lists (a hidden part 9 in a course without one would be graded with no unit tests). */
 static void test_cases__parts_listed_once_in_order_and_hidden_ones_listed_too(void **state)
 {
     (void)state;
     assert_non_null(strstr(load_edited("s/\"part\": 2,/\"part\": 1,/"), "parts[1]: expected \"part\" 1..9 (each once, in increasing order)"));
     assert_non_null(strstr(load_edited("s/\"part\": 2,/\"part\": 10,/"), "parts[1]: expected \"part\" 1..9"));
     assert_non_null(strstr(load_edited("s/\"part\": 2,/\"part\": 6,/"), "parts[2]: expected \"part\" 1..9"));
-    char hidden[128];
+    /* The course's file without its last part (9), and hidden cases for part 9. */
+    char base[128], hidden[128];
+    snprintf(base, sizeof base, "%s/without9.json", scratch);
     snprintf(hidden, sizeof hidden, "%s/hidden.json", scratch);
+    json_t *doc = json_load_file(GRADE_CASES, 0, NULL);
+    assert_non_null(doc);
+    json_t *parts = json_object_get(doc, "parts");
+    assert_int_equal(9, json_integer_value(json_object_get(json_array_get(parts, json_array_size(parts) - 1), "part")));
+    assert_int_equal(0, json_array_remove(parts, json_array_size(parts) - 1));
+    assert_int_equal(0, json_dump_file(doc, base, 0));
+    json_decref(doc);
     FILE *f = fopen(hidden, "w");
     assert_non_null(f);
-    fputs("{\"parts\": [{\"part\": 7, \"cases\": []}]}\n", f);
+    fputs("{\"parts\": [{\"part\": 9, \"cases\": []}]}\n", f);
     fclose(f);
     grade_spec spec;
     pl_diag d = pl_diag_default();
-    assert_int_equal(PL_ERR_PARSE, grade_spec_load(GRADE_CASES, hidden, &spec, &d));
-    assert_non_null(strstr(d.error, "part 7 has hidden cases, but grading/cases.json does not list it"));
+    assert_int_equal(PL_ERR_PARSE, grade_spec_load(base, hidden, &spec, &d));
+    assert_non_null(strstr(d.error, "part 9 has hidden cases, but"));
 }
 
 /* The tasks' shares must account for every unit point and every test: a share left out would be a
