@@ -8,8 +8,8 @@
 # The parts its students get: the release (its folders, suites, handout texts, references and the
 # documents' <!-- BEGIN PART N --> sections), the autograder bundle (the grader grades the parts whose
 # folders it holds) and release-check follow this list. Parts 1-5 are CS184's first path-tracing
-# assignment; 9, the thin lens, begins the second.
-## release COURSE_PARTS="1 2 3 4 5 9": cut a release of these parts (the default, 1 2 3 4 5, is CS184's first assignment)
+# assignment; 6-9 (mirror and glass, microfacet metals, the environment light, the thin lens) the second.
+## release COURSE_PARTS="1 2 3 4 5 6 7 8 9": cut a release of these parts (the default, 1 2 3 4 5, is CS184's first assignment)
 COURSE_PARTS ?= 1 2 3 4 5
 export COURSE_PARTS
 
