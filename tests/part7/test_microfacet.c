@@ -371,7 +371,7 @@ static void check_sampler(double alpha, double theta_o_deg, uint64_t seed)
                 "/ (4 dot(wo, h)): chi-square %.1f on %.0f degrees of freedom, p = %.3g < alpha %.3g; samples lost below "
                 "the surface %.0f, expected %.0f (handout/part7.md, 7.6: theta_h = atan(sqrt(-alpha^2 log(1 - u))))",
                 alpha, theta_o_deg, r.stat, r.dof, r.p, PART7_CHECK_ALPHA, observed[CELLS - 1], expected[CELLS - 1]);
-    char what[160];
+    char what[256];
     snprintf(what, sizeof what, "the mean weight f cos / pdf of microfacet_sample_f (alpha %g, wo at %g degrees, green) "
              "against the albedo, the integral of f cos (handout/part7.md, 7.6)", alpha, theta_o_deg);
     assert_mean_matches(&weight, albedo(&m, wo, 1), PART7_CHECK_ALPHA, what);
