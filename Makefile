@@ -179,7 +179,7 @@ $(BUILD)/framework/sidecar.o $(BUILD)/framework/range.o: $(BUILD)/gen/version.h
 # ---- tests: one binary per suite, so a crash in one part costs no other -----------------------
 $(BUILD)/tests/%.o $(BUILD)/course/%.o: CPPFLAGS += $(shell pkg-config --cflags $(TPKGS))
 
-## test-<suite>: run one suite: test-part1 .. test-part5, test-part6, test-part8 and test-part9 (where the course has them), test-framework, test-grader
+## test-<suite>: run one suite: test-part1 .. test-part5, test-part6 .. test-part9 (where the course has them), test-framework, test-grader
 ## test-part3 FILTER='*hemisphere*': run only the tests whose names match (LIST=1: list them)
 define suite_rules
 $(BIN)/test-$(1): $(call suite_obj,$(1)) $(COMMON_OBJ) $(LIB_OBJ)
