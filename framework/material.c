@@ -33,11 +33,10 @@ bool material_has_inside(const material *m)
     return (m->kind == MATERIAL_GLASS || m->kind == MATERIAL_REFRACTION) && material_kind_shaded(m->kind);
 }
 
-/* Part 7's microfacet metal, where the course shades it. */
-static bool microfacet(const material *m)
-{
-    return m->kind == MATERIAL_MICROFACET && material_kind_shaded(m->kind);
-}
+#ifdef PL_HAS_PART7
+/* Part 7's microfacet metal (the course shades it). */
+static bool microfacet(const material *m) { return m->kind == MATERIAL_MICROFACET; }
+#endif
 
 /* Every kind but diffuse, kept out of line and marked rarely taken, so that the three functions
  * below stay small enough for link-time optimisation to inline into parts 3 and 4 (declared inline

@@ -616,16 +616,16 @@ static const material *material_at(trace_log *t, const hit *h)
 }
 
 
-/* What a mirror's or glass's sample must weigh, f |cos| / pdf (handout/part6.md): its reflectance
+/* What a mirror's or glass's sample must weigh, f |cos| / pdf (part 6's handout): its reflectance
  * when it reflects (wi on wo's side), its transmittance times a radiance scale when it refracts
- * (eta^2, CS184's 1 / eta^2 or none: the handout accepts each). Never R or 1 - R times that: the
+ * (eta^2, CS184's 1 / eta^2 or none: part 6's handout accepts each). Never R or 1 - R times that: the
  * branch's probability must cancel. */
 static void check_delta_weight(trace_log *t, const material *m, vec3 wo, vec3 wi, rgb weight)
 {
     if (rgb_is_black(weight)) return;  /* no direction: the path ends, nothing to weigh */
     if (wi.z * wo.z > 0.0f) {
         if (!rgb_close(weight, m->reflectance))
-            mark(t, "this reflection weighs f |cos| / pdf = " V3 ", not the reflectance " V3 " (handout/part6.md, 6.2 "
+            mark(t, "this reflection weighs f |cos| / pdf = " V3 ", not the reflectance " V3 " (part 6, tasks 6.2 "
                  "and 6.5)", RGB(weight), RGB(m->reflectance));
         return;
     }
@@ -634,7 +634,7 @@ static void check_delta_weight(trace_log *t, const material *m, vec3 wo, vec3 wi
     for (int i = 0; i < 3; i++)
         if (rgb_close(weight, rgb_scale(m->transmittance, scales[i]))) return;
     mark(t, "this refraction weighs f |cos| / pdf = " V3 ", not the transmittance " V3 " times eta^2 = %.4g (or 1 / eta^2, "
-         "or 1) (handout/part6.md, 6.4 and 6.5)", RGB(weight), RGB(m->transmittance), (double)(eta * eta));
+         "or 1) (part 6, tasks 6.4 and 6.5)", RGB(weight), RGB(m->transmittance), (double)(eta * eta));
 }
 
 /* The BSDF sample that sent wi (local) from the current vertex; returns the new throughput. */

@@ -50,15 +50,8 @@ rgb fresnel_conductor(float cos_i, rgb eta, rgb k)
     /* STUB: (void)cos_i, (void)eta, (void)k; return PL_TODO_RGB("7.2", "fresnel_conductor"); */
 }
 
-/* === PART 7 | TASK 7.3 | microfacet_g =================================================
- * Smith's shadowing-masking term for Beckmann (handout/part7.md, section 7.3).
- * In:  alpha; wo and wi, unit, above the surface.
- * Out: G = 1 / (1 + Lambda(wo) + Lambda(wi)), where for a direction w at angle theta to the normal
- *      and a = 1 / (alpha tan(theta)): Lambda = 0 for a >= 1.6 (theta = 0 included), else
- *      Lambda = (1 - 1.259 a + 0.396 a^2) / (3.535 a + 2.181 a^2).
- * Test: make test-part7
- * ====================================================================================== */
 /* BEGIN SOLUTION */
+/* Lambda of the Beckmann distribution, by Walter et al.'s rational approximation (task 7.3). */
 static float beckmann_lambda(float alpha, vec3 w)
 {
     float sin_t = sqrtf(fmaxf(0.0f, 1.0f - w.z * w.z));
@@ -69,6 +62,14 @@ static float beckmann_lambda(float alpha, vec3 w)
 }
 /* END SOLUTION */
 
+/* === PART 7 | TASK 7.3 | microfacet_g =================================================
+ * Smith's shadowing-masking term for Beckmann (handout/part7.md, section 7.3).
+ * In:  alpha; wo and wi, unit, above the surface.
+ * Out: G = 1 / (1 + Lambda(wo) + Lambda(wi)), where for a direction w at angle theta to the normal
+ *      and a = 1 / (alpha tan(theta)): Lambda = 0 for a >= 1.6 (theta = 0 included), else
+ *      Lambda = (1 - 1.259 a + 0.396 a^2) / (3.535 a + 2.181 a^2).
+ * Test: make test-part7
+ * ====================================================================================== */
 float microfacet_g(float alpha, vec3 wo, vec3 wi)
 {
     /* BEGIN SOLUTION */
