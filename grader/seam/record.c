@@ -115,3 +115,16 @@ void seam_end_hit(seam_call *c, seam_fn fn, uint64_t inputs, bool found, const r
     if (h) out.h = *h;
     seam_end(c, fn, inputs, NULL, &out, sizeof out, NULL, NULL, 0);
 }
+
+_Static_assert(sizeof(seam_sample_out) == 7 * 4, "padding in seam_sample_out");
+
+rgb seam_end_sample(seam_call *c, seam_fn fn, uint64_t inputs, rgb f, const vec3 *wi, const float *pdf)
+{
+    seam_sample_out out;
+    memset(&out, 0, sizeof out);
+    out.f = f;
+    if (wi) out.wi = *wi;
+    if (pdf) out.pdf = *pdf;
+    seam_end(c, fn, inputs, NULL, &out, sizeof out, NULL, NULL, 0);
+    return f;
+}

@@ -158,3 +158,12 @@ bool seam_replay_hit(seam_fn fn, uint64_t inputs, ray *r, hit *h)
     if (h) *h = out.h;
     return out.found != 0;
 }
+
+rgb seam_replay_sample(seam_fn fn, uint64_t inputs, vec3 *wi, float *pdf)
+{
+    seam_sample_out out;
+    seam_replay_fixed(fn, inputs, NULL, &out, sizeof out);
+    if (wi) *wi = out.wi;
+    if (pdf) *pdf = out.pdf;
+    return out.f;
+}

@@ -63,6 +63,18 @@ uint64_t seam_hash_material(uint64_t h, const material *m)
     return SEAM_HASH(seam_hash_int(h, m->kind), f);
 }
 
+uint64_t seam_hash_bsdf(const material *m, vec3 wo, vec3 wi)
+{
+    return SEAM_HASH(SEAM_HASH(seam_hash_material(SEAM_HASH_START, m), wo), wi);
+}
+
+uint64_t seam_hash_bsdf_sample(const material *m, vec3 wo, const vec2 *u, const vec3 *wi, const float *pdf)
+{
+    uint64_t h = SEAM_HASH(seam_hash_material(SEAM_HASH_START, m), wo);
+    if (u) h = SEAM_HASH(h, *u);
+    return seam_hash_int(h, (wi != NULL) * 2 + (pdf != NULL));
+}
+
 uint64_t seam_hash_scene(uint64_t h, const scene *s)
 {
     if (!s) return seam_hash_int(h, -1);

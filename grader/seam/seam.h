@@ -82,6 +82,11 @@ uint64_t seam_hash_camera(uint64_t h, const camera *c);
 uint64_t seam_hash_ray(uint64_t h, const ray *r);
 uint64_t seam_hash_hit(uint64_t h, const hit *x);
 uint64_t seam_hash_material(uint64_t h, const material *m);
+/* A BSDF's inputs (parts 3, 6 and 7): the material and its two directions; and a BSDF sampler's:
+ * the material, wo, the uniform numbers u (NULL for a sampler that takes none) and which of the
+ * pointers it fills are given. */
+uint64_t seam_hash_bsdf(const material *m, vec3 wo, vec3 wi);
+uint64_t seam_hash_bsdf_sample(const material *m, vec3 wo, const vec2 *u, const vec3 *wi, const float *pdf);
 uint64_t seam_hash_scene(uint64_t h, const scene *s);
 uint64_t seam_hash_bvh(uint64_t h, const bvh *b);
 uint64_t seam_hash_ctx(uint64_t h, const struct render_ctx *ctx);
@@ -108,6 +113,10 @@ void seam_end(seam_call *c, seam_fn fn, uint64_t inputs, const rng *g, const voi
  * call left them (either may be NULL: not sent, not set). */
 typedef struct { unsigned char found; ray r; hit h; } seam_hit_out;  /* a byte: any value read is valid */
 void seam_end_hit(seam_call *c, seam_fn fn, uint64_t inputs, bool found, const ray *r, const hit *h);
+/* Samplers (a BSDF's or a light's sample_f): the value, and the direction and density they filled
+ * (either pointer may be NULL: not sent, not set). Returns f. */
+typedef struct { rgb f; vec3 wi; float pdf; } seam_sample_out;
+rgb seam_end_sample(seam_call *c, seam_fn fn, uint64_t inputs, rgb f, const vec3 *wi, const float *pdf);
 
 /* ---- the judge: replay.c ---------------------------------------------------------------------- */
 
@@ -121,6 +130,8 @@ const void *seam_replay(seam_fn fn, uint64_t inputs, rng *g, size_t max, size_t 
 void seam_replay_fixed(seam_fn fn, uint64_t inputs, rng *g, void *out, size_t size);
 /* The judge's side of seam_end_hit. */
 bool seam_replay_hit(seam_fn fn, uint64_t inputs, ray *r, hit *h);
+/* The judge's side of seam_end_sample: fills *wi and *pdf where given, returns f. */
+rgb seam_replay_sample(seam_fn fn, uint64_t inputs, vec3 *wi, float *pdf);
 /* Trace entries are indices the tests index arrays with: the next replay on this thread accepts node
  * visits below `nodes` and primitive tests below `prims` (the BVH's queries set them from the tree
  * and scene they were given); any other call may add no entry. */
@@ -143,6 +154,8 @@ _Noreturn void seam_fail(seam_fn fn, const char *format, ...) __attribute__((for
  *   the call takes (its state after the call travels with the answer), or NULL.
  * SEAM_HIT(name, params, args, inputs): an intersection whose parameters are named r (the ray, its
  *   max_t shrunk on a hit) and h (the hit it fills): the answer, the ray and the hit are sent.
+ * SEAM_SAMPLER(name, params, args, inputs): a sampler returning rgb whose parameters name the
+ *   direction and density it fills wi and pdf: the value and the two are sent (seam_sample_out).
  * Functions with other outputs (pointers they fill, a tree) are written out in their files. */
 #if defined(PL_SEAM_SUBJECT)
 /* The wrapper both share: hash the inputs, call the real function, record (a nested call is not
@@ -163,6 +176,8 @@ _Noreturn void seam_fail(seam_fn fn, const char *format, ...) __attribute__((for
     SEAM_WRAPPER(ret, wire, name, params, args, inputs, seam_end(&call, SEAM_##name, in, (g), &out, sizeof out, NULL, NULL, 0))
 #define SEAM_HIT(name, params, args, inputs) \
     SEAM_WRAPPER(bool, bool, name, params, args, inputs, seam_end_hit(&call, SEAM_##name, in, out, r, h))
+#define SEAM_SAMPLER(name, params, args, inputs) \
+    SEAM_WRAPPER(rgb, rgb, name, params, args, inputs, seam_end_sample(&call, SEAM_##name, in, out, wi, pdf))
 #elif defined(PL_SEAM_JUDGE)
 #define SEAM_FIXED(ret, wire, name, params, args, inputs, g)                        \
     ret name params                                                                 \
@@ -174,9 +189,12 @@ _Noreturn void seam_fail(seam_fn fn, const char *format, ...) __attribute__((for
     }
 #define SEAM_HIT(name, params, args, inputs) \
     bool name params { return seam_replay_hit(SEAM_##name, (inputs), r, h); }
+#define SEAM_SAMPLER(name, params, args, inputs) \
+    rgb name params { return seam_replay_sample(SEAM_##name, (inputs), wi, pdf); }
 #else
 #define SEAM_FIXED(ret, wire, name, params, args, inputs, g)
 #define SEAM_HIT(name, params, args, inputs)
+#define SEAM_SAMPLER(name, params, args, inputs)
 #endif
 
 #endif

@@ -5,19 +5,10 @@
 #include "../../parts/part6_specular/part6.h"
 #include <string.h>
 
-typedef struct { rgb f; vec3 wi; float pdf; } sample_out;
 typedef struct { int32_t ok; vec3 wi; } refract_out;  /* ok as an int: any value read is a valid one */
 
 _Static_assert(sizeof(vec3) == 3 * 4, "padding in vec3");
-_Static_assert(sizeof(sample_out) == 7 * 4, "padding in sample_out");
 _Static_assert(sizeof(refract_out) == 4 * 4, "padding in refract_out");
-
-static uint64_t sample_inputs(const material *m, vec3 wo, const vec2 *u, const vec3 *wi, const float *pdf)
-{
-    uint64_t h = SEAM_HASH(seam_hash_material(SEAM_HASH_START, m), wo);
-    if (u) h = SEAM_HASH(h, *u);
-    return seam_hash_int(h, (wi != NULL) * 2 + (pdf != NULL));
-}
 
 static uint64_t refract_inputs(vec3 wo, float ior, const vec3 *wi)
 {
@@ -26,52 +17,19 @@ static uint64_t refract_inputs(vec3 wo, float ior, const vec3 *wi)
 
 SEAM_FIXED(vec3, vec3, reflect, (vec3 wo), (wo), SEAM_HASH(SEAM_HASH_START, wo), NULL)
 
-#ifdef PL_SEAM_SUBJECT
-rgb __real_mirror_sample_f(const material *m, vec3 wo, vec3 *wi, float *pdf);
-rgb __real_refraction_sample_f(const material *m, vec3 wo, vec3 *wi, float *pdf);
-rgb __real_glass_sample_f(const material *m, vec3 wo, vec2 u, vec3 *wi, float *pdf);
-bool __real_refract(vec3 wo, float ior, vec3 *wi);
-rgb __wrap_mirror_sample_f(const material *m, vec3 wo, vec3 *wi, float *pdf);
-rgb __wrap_refraction_sample_f(const material *m, vec3 wo, vec3 *wi, float *pdf);
-rgb __wrap_glass_sample_f(const material *m, vec3 wo, vec2 u, vec3 *wi, float *pdf);
-bool __wrap_refract(vec3 wo, float ior, vec3 *wi);
-
-static rgb record_sample(seam_fn fn, uint64_t in, seam_call *call, rgb f, const vec3 *wi, const float *pdf)
-{
-    sample_out out;
-    memset(&out, 0, sizeof out);
-    out.f = f;
-    if (wi) out.wi = *wi;
-    if (pdf) out.pdf = *pdf;
-    seam_end(call, fn, in, NULL, &out, sizeof out, NULL, NULL, 0);
-    return f;
-}
-
-rgb __wrap_mirror_sample_f(const material *m, vec3 wo, vec3 *wi, float *pdf)
-{
-    seam_call call;
-    uint64_t in = sample_inputs(m, wo, NULL, wi, pdf);
-    if (!seam_begin(&call)) return __real_mirror_sample_f(m, wo, wi, pdf);
-    return record_sample(SEAM_mirror_sample_f, in, &call, __real_mirror_sample_f(m, wo, wi, pdf), wi, pdf);
-}
-
-rgb __wrap_refraction_sample_f(const material *m, vec3 wo, vec3 *wi, float *pdf)
-{
-    seam_call call;
-    uint64_t in = sample_inputs(m, wo, NULL, wi, pdf);
-    if (!seam_begin(&call)) return __real_refraction_sample_f(m, wo, wi, pdf);
-    return record_sample(SEAM_refraction_sample_f, in, &call, __real_refraction_sample_f(m, wo, wi, pdf), wi, pdf);
-}
-
-rgb __wrap_glass_sample_f(const material *m, vec3 wo, vec2 u, vec3 *wi, float *pdf)
-{
-    seam_call call;
-    uint64_t in = sample_inputs(m, wo, &u, wi, pdf);
-    if (!seam_begin(&call)) return __real_glass_sample_f(m, wo, u, wi, pdf);
-    return record_sample(SEAM_glass_sample_f, in, &call, __real_glass_sample_f(m, wo, u, wi, pdf), wi, pdf);
-}
+/* The samplers fill *wi and *pdf as well (SEAM_SAMPLER). */
+SEAM_SAMPLER(mirror_sample_f, (const material *m, vec3 wo, vec3 *wi, float *pdf), (m, wo, wi, pdf),
+             seam_hash_bsdf_sample(m, wo, NULL, wi, pdf))
+SEAM_SAMPLER(refraction_sample_f, (const material *m, vec3 wo, vec3 *wi, float *pdf), (m, wo, wi, pdf),
+             seam_hash_bsdf_sample(m, wo, NULL, wi, pdf))
+SEAM_SAMPLER(glass_sample_f, (const material *m, vec3 wo, vec2 u, vec3 *wi, float *pdf), (m, wo, u, wi, pdf),
+             seam_hash_bsdf_sample(m, wo, &u, wi, pdf))
 
 /* refract: whether it found a direction, and the direction it left in *wi (the caller's, when not). */
+#ifdef PL_SEAM_SUBJECT
+bool __real_refract(vec3 wo, float ior, vec3 *wi);
+bool __wrap_refract(vec3 wo, float ior, vec3 *wi);
+
 bool __wrap_refract(vec3 wo, float ior, vec3 *wi)
 {
     seam_call call;
@@ -87,30 +45,6 @@ bool __wrap_refract(vec3 wo, float ior, vec3 *wi)
 #endif
 
 #ifdef PL_SEAM_JUDGE
-static rgb replay_sample(seam_fn fn, uint64_t in, vec3 *wi, float *pdf)
-{
-    sample_out out;
-    seam_replay_fixed(fn, in, NULL, &out, sizeof out);
-    if (wi) *wi = out.wi;
-    if (pdf) *pdf = out.pdf;
-    return out.f;
-}
-
-rgb mirror_sample_f(const material *m, vec3 wo, vec3 *wi, float *pdf)
-{
-    return replay_sample(SEAM_mirror_sample_f, sample_inputs(m, wo, NULL, wi, pdf), wi, pdf);
-}
-
-rgb refraction_sample_f(const material *m, vec3 wo, vec3 *wi, float *pdf)
-{
-    return replay_sample(SEAM_refraction_sample_f, sample_inputs(m, wo, NULL, wi, pdf), wi, pdf);
-}
-
-rgb glass_sample_f(const material *m, vec3 wo, vec2 u, vec3 *wi, float *pdf)
-{
-    return replay_sample(SEAM_glass_sample_f, sample_inputs(m, wo, &u, wi, pdf), wi, pdf);
-}
-
 bool refract(vec3 wo, float ior, vec3 *wi)
 {
     refract_out out;

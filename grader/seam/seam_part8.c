@@ -6,7 +6,6 @@
 #include "../../parts/part8_envlight/part8.h"
 #include <string.h>
 
-typedef struct { rgb L; vec3 wi; float pdf; } sample_out;
 
 static uint64_t map_hash(const envmap *e)
 {
@@ -37,46 +36,18 @@ static uint64_t pdf_inputs(const envmap *e, const env_distribution *d, vec3 wi)
     return SEAM_HASH(tables_hash(map_hash(e), e, d), wi);
 }
 
-_Static_assert(sizeof(sample_out) == 7 * 4, "padding in sample_out");
-
 /* The density answers with its value (see SEAM_FIXED in seam.h). */
 SEAM_FIXED(float, float, env_pdf, (const envmap *e, const env_distribution *d, vec3 wi), (e, d, wi), pdf_inputs(e, d, wi), NULL)
 
+/* The two samplers also fill *wi and *pdf: the answer is the three together (SEAM_SAMPLER). */
+SEAM_SAMPLER(env_sample_uniform, (const envmap *e, vec2 u, vec3 *wi, float *pdf), (e, u, wi, pdf),
+             sample_inputs(e, NULL, u, wi, pdf))
+SEAM_SAMPLER(env_sample_importance, (const envmap *e, const env_distribution *d, vec2 u, vec3 *wi, float *pdf),
+             (e, d, u, wi, pdf), sample_inputs(e, d, u, wi, pdf))
+
 #ifdef PL_SEAM_SUBJECT
-rgb __real_env_sample_uniform(const envmap *e, vec2 u, vec3 *wi, float *pdf);
-rgb __real_env_sample_importance(const envmap *e, const env_distribution *d, vec2 u, vec3 *wi, float *pdf);
 void __real_env_build_distribution(const envmap *e, env_distribution *d);
-rgb __wrap_env_sample_uniform(const envmap *e, vec2 u, vec3 *wi, float *pdf);
-rgb __wrap_env_sample_importance(const envmap *e, const env_distribution *d, vec2 u, vec3 *wi, float *pdf);
 void __wrap_env_build_distribution(const envmap *e, env_distribution *d);
-
-/* The two samplers also fill *wi and *pdf: the answer is the three together (sample_out). */
-static rgb record_sample(seam_fn fn, uint64_t in, seam_call *call, rgb L, const vec3 *wi, const float *pdf)
-{
-    sample_out out;
-    memset(&out, 0, sizeof out);
-    out.L = L;
-    if (wi) out.wi = *wi;
-    if (pdf) out.pdf = *pdf;
-    seam_end(call, fn, in, NULL, &out, sizeof out, NULL, NULL, 0);
-    return L;
-}
-
-rgb __wrap_env_sample_uniform(const envmap *e, vec2 u, vec3 *wi, float *pdf)
-{
-    seam_call call;
-    uint64_t in = sample_inputs(e, NULL, u, wi, pdf);
-    if (!seam_begin(&call)) return __real_env_sample_uniform(e, u, wi, pdf);
-    return record_sample(SEAM_env_sample_uniform, in, &call, __real_env_sample_uniform(e, u, wi, pdf), wi, pdf);
-}
-
-rgb __wrap_env_sample_importance(const envmap *e, const env_distribution *d, vec2 u, vec3 *wi, float *pdf)
-{
-    seam_call call;
-    uint64_t in = sample_inputs(e, d, u, wi, pdf);
-    if (!seam_begin(&call)) return __real_env_sample_importance(e, d, u, wi, pdf);
-    return record_sample(SEAM_env_sample_importance, in, &call, __real_env_sample_importance(e, d, u, wi, pdf), wi, pdf);
-}
 
 /* The tables go back whole: the two arrays, at the sizes the map gives them. */
 void __wrap_env_build_distribution(const envmap *e, env_distribution *d)
@@ -97,25 +68,6 @@ void __wrap_env_build_distribution(const envmap *e, env_distribution *d)
 #endif
 
 #ifdef PL_SEAM_JUDGE
-static rgb replay_sample(seam_fn fn, uint64_t in, vec3 *wi, float *pdf)
-{
-    sample_out out;
-    seam_replay_fixed(fn, in, NULL, &out, sizeof out);
-    if (wi) *wi = out.wi;
-    if (pdf) *pdf = out.pdf;
-    return out.L;
-}
-
-rgb env_sample_uniform(const envmap *e, vec2 u, vec3 *wi, float *pdf)
-{
-    return replay_sample(SEAM_env_sample_uniform, sample_inputs(e, NULL, u, wi, pdf), wi, pdf);
-}
-
-rgb env_sample_importance(const envmap *e, const env_distribution *d, vec2 u, vec3 *wi, float *pdf)
-{
-    return replay_sample(SEAM_env_sample_importance, sample_inputs(e, d, u, wi, pdf), wi, pdf);
-}
-
 /* The tables, of exactly the sizes the map gives them (the record is sized before it is read). */
 void env_build_distribution(const envmap *e, env_distribution *d)
 {
