@@ -48,8 +48,13 @@ static bool microfacet(const material *m) { return m->kind == MATERIAL_MICROFACE
 #else
 #define PL_RARE
 #endif
+/* External, not static: C forbids an inline function with external linkage (the three below) to
+ * refer to one with internal linkage, and clang says so. */
+rgb material_other_f(const material *m, vec3 wo, vec3 wi);
+float material_other_pdf(const material *m, vec3 wo, vec3 wi);
+rgb material_other_sample_f(const material *m, vec3 wo, vec2 u, vec3 *wi, float *pdf);
 
-static PL_RARE rgb other_f(const material *m, vec3 wo, vec3 wi)
+PL_RARE rgb material_other_f(const material *m, vec3 wo, vec3 wi)
 {
 #ifdef PL_HAS_PART7
     if (microfacet(m)) return microfacet_f(m, wo, wi);
@@ -57,7 +62,7 @@ static PL_RARE rgb other_f(const material *m, vec3 wo, vec3 wi)
     return material_is_delta(m) ? rgb_gray(0.0f) : bsdf_f(m, wo, wi);
 }
 
-static PL_RARE float other_pdf(const material *m, vec3 wo, vec3 wi)
+PL_RARE float material_other_pdf(const material *m, vec3 wo, vec3 wi)
 {
 #ifdef PL_HAS_PART7
     if (microfacet(m)) return microfacet_pdf(m, wo, wi);
@@ -65,7 +70,7 @@ static PL_RARE float other_pdf(const material *m, vec3 wo, vec3 wi)
     return material_is_delta(m) ? 0.0f : bsdf_pdf(m, wo, wi);
 }
 
-static PL_RARE rgb other_sample_f(const material *m, vec3 wo, vec2 u, vec3 *wi, float *pdf)
+PL_RARE rgb material_other_sample_f(const material *m, vec3 wo, vec2 u, vec3 *wi, float *pdf)
 {
 #ifdef PL_HAS_PART7
     if (microfacet(m)) return microfacet_sample_f(m, wo, u, wi, pdf);
@@ -91,15 +96,15 @@ static PL_RARE rgb other_sample_f(const material *m, vec3 wo, vec2 u, vec3 *wi, 
 
 inline rgb material_f(const material *m, vec3 wo, vec3 wi)
 {
-    return OTHER_KINDS(m) ? other_f(m, wo, wi) : bsdf_f(m, wo, wi);
+    return OTHER_KINDS(m) ? material_other_f(m, wo, wi) : bsdf_f(m, wo, wi);
 }
 
 inline float material_pdf(const material *m, vec3 wo, vec3 wi)
 {
-    return OTHER_KINDS(m) ? other_pdf(m, wo, wi) : bsdf_pdf(m, wo, wi);
+    return OTHER_KINDS(m) ? material_other_pdf(m, wo, wi) : bsdf_pdf(m, wo, wi);
 }
 
 inline rgb material_sample_f(const material *m, vec3 wo, vec2 u, vec3 *wi, float *pdf)
 {
-    return OTHER_KINDS(m) ? other_sample_f(m, wo, u, wi, pdf) : bsdf_sample_f(m, wo, u, wi, pdf);
+    return OTHER_KINDS(m) ? material_other_sample_f(m, wo, u, wi, pdf) : bsdf_sample_f(m, wo, u, wi, pdf);
 }
