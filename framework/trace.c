@@ -637,6 +637,33 @@ static void check_delta_weight(trace_log *t, const material *m, vec3 wo, vec3 wi
          "or 1) (part 6, tasks 6.4 and 6.5)", RGB(weight), RGB(m->transmittance), (double)(eta * eta));
 }
 
+/* A mirror's or glass's f and pdf are no functions of wi (material.h): the sample that sent the
+ * bounce ray wi is replayed on the numbers the vertex drew, checked against wi and weighed. Its two
+ * numbers are the vertex's first two draws, or the second and third where roulette drew first (both
+ * orders are the part's to choose). Returns f and sets *pdf. */
+static rgb delta_replay(trace_log *t, const material *m, vec3 wo, vec3 wi, float *pdf)
+{
+    trace_path *p = &t->path;
+    rgb fr = rgb_gray(0.0f);
+    vec3 said = wi, first = wi;
+    bool matched = false;
+    for (int k = 0; k + 1 < p->draws && k < 2 && !matched; k++) {
+        replaying = true;
+        fr = material_sample_f(m, wo, vec2_make(p->value[k], p->value[k + 1]), &said, pdf);
+        replaying = false;
+        if (k == 0) first = said;
+        matched = vec3_dot(said, wi) >= 0.9999f * vec3_length(wi);
+    }
+    if (!matched) {
+        mark(t, "the bounce ray leaves along " V3 " (local) but material_sample_f sent " V3, XYZ(wi), XYZ(first));
+        replaying = true;
+        fr = material_sample_f(m, wo, vec2_make(p->value[0], p->value[1]), &said, pdf);
+        replaying = false;
+    }
+    if (*pdf > 0.0f) check_delta_weight(t, m, wo, said, rgb_scale(fr, fabsf(said.z) / *pdf));
+    return fr;
+}
+
 /* The BSDF sample that sent wi (local) from the current vertex; returns the new throughput. */
 static rgb bsdf_step(trace_log *t, vec3 wo, vec3 wi, const char *how)
 {
@@ -645,28 +672,8 @@ static rgb bsdf_step(trace_log *t, vec3 wo, vec3 wi, const char *how)
     rgb fr = rgb_gray(0.0f);
     float pdf = 0.0f;
     bool delta = m && material_is_delta(m);
-    if (delta && p->draws >= 2) {
-        /* A mirror's or glass's f and pdf are no functions of wi (material.h): replay the sample on
-         * the numbers it drew, and check that the bounce ray went where it said. Its two numbers are
-         * the vertex's first two draws, or the second and third where roulette drew first (both
-         * orders are the part's to choose). */
-        vec3 said = wi, first = wi;
-        bool matched = false;
-        for (int k = 0; k + 1 < p->draws && k < 2 && !matched; k++) {
-            replaying = true;
-            fr = material_sample_f(m, wo, vec2_make(p->value[k], p->value[k + 1]), &said, &pdf);
-            replaying = false;
-            if (k == 0) first = said;
-            matched = vec3_dot(said, wi) >= 0.9999f * vec3_length(wi);
-        }
-        if (!matched) {
-            mark(t, "the bounce ray leaves along " V3 " (local) but material_sample_f sent " V3, XYZ(wi), XYZ(first));
-            replaying = true;
-            fr = material_sample_f(m, wo, vec2_make(p->value[0], p->value[1]), &said, &pdf);
-            replaying = false;
-        }
-        if (pdf > 0.0f) check_delta_weight(t, m, wo, said, rgb_scale(fr, fabsf(said.z) / pdf));
-    }
+    if (delta && p->draws >= 2)
+        fr = delta_replay(t, m, wo, wi, &pdf);
     else if (m && !delta) {
         fr = material_f(m, wo, wi);
         pdf = material_pdf(m, wo, wi);
