@@ -83,6 +83,20 @@ static pl_status positive_child(dae_ctx *c, const xmlNode *bsdf, const char *nam
     return st;
 }
 
+/* A microfacet roughness: > 0 as every positive_child, and within the range where Beckmann's terms
+ * stay finite in float. Below 1e-4 alpha^2 is already 1e-8 and D's peak 1/(pi alpha^2) about 3e7: the
+ * surface is a mirror to float precision (use <mirror>); around 1e-23 alpha^2 underflows to 0 and D
+ * becomes 0/0. Above 10 nearly every microfacet faces sideways and the metal renders black. CS184's
+ * scenes use 0.005 to 0.5. */
+static pl_status roughness_child(dae_ctx *c, const xmlNode *bsdf, float *out)
+{
+    pl_status st = positive_child(c, bsdf, "alpha", 0.5f, out);
+    if (!st && !(*out >= 1e-4f && *out <= 10.0f))
+        st = dae_error(c, dae_child(bsdf, "alpha"), PL_ERR_INVALID,
+                       "expected a roughness from 1e-4 (a mirror to float precision) to 10, found %g", *out);
+    return st;
+}
+
 /* The diffuse stand-in's colour: the element's `name` colour when the file gives one, else
  * profile_COMMON's (the last one given wins, as before the parameters were kept). */
 static void stand_in(const xmlNode *bsdf, const char *name, rgb colour, material *m)
@@ -135,7 +149,7 @@ static pl_status read_cgl(dae_ctx *c, const xmlNode *technique, material *m)
     } else if (dae_is(bsdf, "microfacet")) {
         /* The diffuse stand-in takes the metal's colour at normal incidence. */
         m->kind = MATERIAL_MICROFACET;
-        st = positive_child(c, bsdf, "alpha", 0.5f, &m->alpha);
+        st = roughness_child(c, bsdf, &m->alpha);
         if (!st) st = dae_child_color(c, bsdf, "eta", false, &m->eta);
         if (!st) st = dae_child_color(c, bsdf, "k", false, &m->k);
         m->albedo = rgb_make(conductor_f0(m->eta.r, m->k.r), conductor_f0(m->eta.g, m->k.g), conductor_f0(m->eta.b, m->k.b));
