@@ -292,8 +292,8 @@ static int bench_scene(const char *name, int runs)
     printf("| %s | %d | build, s (%d nodes, depth %d) | %d | %.4f | %.4f | %.2f |\n", name, s.num_triangles,
            shape.nodes, shape.depth, parallel_threads(), build_s, ebuild_s, build_s / ebuild_s);
 #else
-    printf("| %s | %d | build, s (%d nodes, depth %d) | %d | %.4f | - | - |\n", name, s.num_triangles, parallel_threads(),
-           shape.nodes, shape.depth, build_s);
+    printf("| %s | %d | build, s (%d nodes, depth %d) | %d | %.4f | - | - |\n", name, s.num_triangles, shape.nodes,
+           shape.depth, parallel_threads(), build_s);
 #endif
     fflush(stdout);
 
