@@ -43,13 +43,19 @@ static inline vec3 vec3_normalize(vec3 a)
     float len = vec3_length(a);
     return len > 0.0f ? vec3_scale(a, 1.0f / len) : a;
 }
+/* Per-component minimum and maximum by one comparison each, which compiles to one minss / maxss.
+ * fminf / fmaxf would be a library call per component at -O2 (they must skip a NaN), and boxes are
+ * grown by these in every BVH build and check; the loaders refuse NaN coordinates. With a NaN,
+ * these return b. */
+static inline float float_min(float a, float b) { return a < b ? a : b; }
+static inline float float_max(float a, float b) { return a > b ? a : b; }
 static inline vec3 vec3_min(vec3 a, vec3 b)
 {
-    return vec3_make(fminf(a.x, b.x), fminf(a.y, b.y), fminf(a.z, b.z));
+    return vec3_make(float_min(a.x, b.x), float_min(a.y, b.y), float_min(a.z, b.z));
 }
 static inline vec3 vec3_max(vec3 a, vec3 b)
 {
-    return vec3_make(fmaxf(a.x, b.x), fmaxf(a.y, b.y), fmaxf(a.z, b.z));
+    return vec3_make(float_max(a.x, b.x), float_max(a.y, b.y), float_max(a.z, b.z));
 }
 /* Component by axis index: 0 = x, 1 = y, 2 = z. */
 static inline float vec3_get(vec3 a, int axis) { return axis == 0 ? a.x : axis == 1 ? a.y : a.z; }

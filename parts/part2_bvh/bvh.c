@@ -126,16 +126,8 @@ static inline int sah_bin(float c, float lo, float scale)
     return bin < SAH_BINS ? bin : SAH_BINS - 1;  /* the upper bound itself lands one past the end */
 }
 
-/* aabb_union through fminf / fmaxf is a library call per component at -O2 (they must handle NaN);
- * the build's boxes hold no NaN, and these compile to one minss / maxss each. The build spends
- * most of its time growing boxes. */
-static inline float min_f(float a, float b) { return a < b ? a : b; }
-static inline float max_f(float a, float b) { return a > b ? a : b; }
-static inline void box_grow(aabb *a, const aabb *b)
-{
-    a->min = vec3_make(min_f(a->min.x, b->min.x), min_f(a->min.y, b->min.y), min_f(a->min.z, b->min.z));
-    a->max = vec3_make(max_f(a->max.x, b->max.x), max_f(a->max.y, b->max.y), max_f(a->max.z, b->max.z));
-}
+/* The build spends most of its time growing boxes: aabb_union is one minss / maxss per component. */
+static inline void box_grow(aabb *a, const aabb *b) { *a = aabb_union(*a, *b); }
 static inline void box_grow_centroid(aabb *a, const build_prim *p)
 {
     vec3 c = vec3_make(build_centroid(p, 0), build_centroid(p, 1), build_centroid(p, 2));
