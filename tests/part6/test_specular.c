@@ -118,7 +118,7 @@ static void test_reflect__the_mirror_direction(void **state)
                     "about the normal +z keeps wo.z and turns the tangent part round (handout/part6.md, 6.1)%s",
                     (double)wo.x, (double)wo.y, (double)wo.z, (double)wi.x, (double)wi.y, (double)wi.z, want[0], want[1],
                     want[2], fabsf(wi.z + wo.z) < 1e-5f && fabsf(wi.x - wo.x) < 1e-5f
-                                  ? " (this is -wo with its z kept negative: the direction points into the surface)" : "");
+                                  ? " (this is (wo.x, wo.y, -wo.z): a reflection about the surface, not the normal; the ray goes through the mirror)" : "");
     }
 }
 
