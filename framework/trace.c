@@ -644,21 +644,27 @@ static void check_delta_weight(trace_log *t, const material *m, vec3 wo, vec3 wi
 static rgb delta_replay(trace_log *t, const material *m, vec3 wo, vec3 wi, float *pdf)
 {
     trace_path *p = &t->path;
-    rgb fr = rgb_gray(0.0f);
+    rgb fr = rgb_gray(0.0f), first_fr = fr;
     vec3 said = wi, first = wi;
+    float first_pdf = 0.0f;
     bool matched = false;
     for (int k = 0; k + 1 < p->draws && k < 2 && !matched; k++) {
         replaying = true;
         fr = material_sample_f(m, wo, vec2_make(p->value[k], p->value[k + 1]), &said, pdf);
         replaying = false;
-        if (k == 0) first = said;
+        if (k == 0) {
+            first = said;
+            first_fr = fr;
+            first_pdf = *pdf;
+        }
         matched = vec3_dot(said, wi) >= 0.9999f * vec3_length(wi);
     }
     if (!matched) {
+        /* Neither order sent wi: say so, and weigh the sample of the first two draws. */
         mark(t, "the bounce ray leaves along " V3 " (local) but material_sample_f sent " V3, XYZ(wi), XYZ(first));
-        replaying = true;
-        fr = material_sample_f(m, wo, vec2_make(p->value[0], p->value[1]), &said, pdf);
-        replaying = false;
+        said = first;
+        fr = first_fr;
+        *pdf = first_pdf;
     }
     if (*pdf > 0.0f) check_delta_weight(t, m, wo, said, rgb_scale(fr, fabsf(said.z) / *pdf));
     return fr;
