@@ -14,7 +14,9 @@ typedef struct { uint64_t state, inc; } rng;
 
 /* A generator for one (pixel, sample) of a render with the given seed. */
 PL_PART_API rng rng_for_sample(uint64_t seed, uint64_t pixel, uint64_t sample);
-/* A generator from a single 64-bit seed and stream id (tests, tools). */
+/* A generator from a single 64-bit seed and stream id (tests, tools), for one long sequence of draws.
+ * Streams of one seed are not independent of each other (their n-th states step evenly from one
+ * stream to the next): samples that must be independent each take rng_for_sample. */
 PL_PART_API rng rng_seeded(uint64_t seed, uint64_t stream);
 
 PL_PART_API uint32_t rng_u32(rng *r);

@@ -15,7 +15,7 @@ typedef rgb (*mc_estimator)(const render_ctx *ctx, const ray *r, const hit *h, r
 void mc_check_radiance(rgb L, const char *what, const char *where, const char *file, int line);
 #define assert_radiance_valid(L, what, where) mc_check_radiance((L), (what), (where), __FILE__, __LINE__)
 
-/* Sample i (0 .. n-1) draws from rng_seeded(seed, i); out[0..2] collect r, g, b. */
+/* Sample i (0 .. n-1) draws from rng_for_sample(seed, 0, i), independent streams; out[0..2] collect r, g, b. */
 void mc_run_at(const render_ctx *ctx, mc_estimator est, const char *what, const ray *r, const hit *h,
                uint64_t seed, int n, stats_acc out[3], const char *file, int line);
 /* The same for the whole radiance_estimate along r (a copy of r for every sample). */

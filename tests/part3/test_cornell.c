@@ -33,7 +33,8 @@ static void render_blocks(tiny_world *w, bool hemisphere, uint64_t seed, stats_a
     for (int y = 0; y < H; y++)
         for (int x = 0; x < W; x++)
             for (int s = 0; s < SPP; s++) {
-                rng g = rng_seeded(seed, (uint64_t)((y * W + x) * SPP + s));
+                /* Seeded as the renderer seeds a pixel's sample (mc_assert.c says why not rng_seeded). */
+                rng g = rng_for_sample(seed, (uint64_t)(y * W + x), (uint64_t)s);
                 vec2 j = rng_uniform2(&g);
                 ray r = camera_generate_ray(&w->ctx.camera, (x + j.x) / W, (y + j.y) / H);
                 rgb L = radiance_estimate(&w->ctx, &r, &g);
