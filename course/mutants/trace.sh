@@ -13,6 +13,9 @@
 set -u
 root=$(cd "$(dirname "$0")/../.." && pwd)
 scratch="$root/build/trace-mutants"
+for tool in pathtracer strip_solutions grade; do
+    [ -x "$root/bin/$tool" ] || { echo "trace-mutants: bin/$tool is not built (make trace-mutants builds what it needs)"; exit 2; }
+done
 mkdir -p "$scratch"
 failed=0
 # patch | flags of the trace (scene relative to the root) | text the mark must contain. The row
