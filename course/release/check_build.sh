@@ -169,7 +169,34 @@ check_ordered() {
             show "$log"
         fi
     fi
+    [ -z "$next" ] && ! check_readme_tests "$tree" "$n" && ok=0
     [ "$ok" = 1 ] && rm -rf "$tree"
+}
+
+# The README's second command (its test command: the second line of its first sh block, without the
+# comment), as a student runs it.
+readme_test_command() {
+    awk '/^```sh/ { inside = 1; next } /^```/ { if (inside) exit } inside { n++; if (n == 2) { sub(/#.*/, ""); print; exit } }' "$1/README.md"
+}
+
+# (p) In tree $1, where every part of the course is solved (up to part $2), the README's test command
+# passes: what every student meets once done. (Before, a grader test edited grading/cases.json by the
+# repository's layout, which the release writes again, and failed in every solved student tree.)
+check_readme_tests() {
+    cmd=$(readme_test_command "$1")
+    what="(p) every part of the course solved (1..$2): the README's test command ('$cmd') passes"
+    case "$cmd" in
+        "make test"|"make test "*) ;;
+        *) fail "$what: expected the README's second command to be make test, found '$cmd'"; return 1 ;;
+    esac
+    log="$1-readme-test.log"
+    tree_make "$1" -j"${RELEASE_JOBS:-2}" ${cmd#make} >"$log" 2>&1
+    rc=$?
+    if [ "$rc" = 0 ]; then pass "$what"; return 0; fi
+    failed_tests=$(sed -n 's/^\[  FAILED  \] \([^ ]*\)$/\1/p' "$log" | sort -u | tr '\n' ' ')
+    fail "$what (exit $rc; failed: ${failed_tests:-see log})"
+    show "$log" 15
+    return 1
 }
 
 check_render() {

@@ -20,6 +20,11 @@ for n in $COURSE_PARTS; do
     [ -n "$(find parts -maxdepth 1 -name "part${n}_*" -type d 2>/dev/null)" ] ||
         die "COURSE_PARTS names part $n, but the repository has no parts/part${n}_*/ folder"
 done
+# Parts 1-5 are the framework's own callees (the render loop calls parts 1 to 5 whatever the course;
+# only parts 6 to 9 are compiled in where the course has them, PL_HAS_PART6..9): every course has them.
+for n in 1 2 3 4 5; do
+    case " $COURSE_PARTS " in *" $n "*) ;; *) die "COURSE_PARTS=\"$COURSE_PARTS\": expected parts 1 to 5 (CS184's first assignment, which the framework and every later part build on), then any of 6 to 9" ;; esac
+done
 # Whether part $1 is one of the course's.
 part_chosen() { case " $COURSE_PARTS " in *" $1 "*) return 0 ;; esac; return 1; }
 # Whether file $1 belongs to a part the course left out: its folder, its suite, its handout text,
