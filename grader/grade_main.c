@@ -14,6 +14,7 @@
  * file that is not usable (grading/cases.json, a reference: grade_refs.h), before anyone is graded, 3
  * when the grader's own set-up on this machine is wrong (the course's problem: no part was graded). */
 #include "grade.h"
+#include "grade_facts.h"
 #include "grade_handout.h"
 #include "../framework/clock.h"
 #include "grade_guard.h"
@@ -307,16 +308,18 @@ static int prebuild_course(const char *root)
     return 0;
 }
 
-/* The table, results.json and the report; as root with a submission, results.json and the report
+/* The table, results.json, the report and the staff's facts.json (grade_facts.h); as root with a submission, results.json and the report
  * made root's alone. The exit status: 0 full marks, 1 otherwise or when an output failed. */
 static int write_outputs(const grade_result *result, const char *outdir, const grade_env *env)
 {
-    char json[4200], why[512];
+    char json[4200], facts[4200], why[512];
     pl_diag diag = pl_diag_default();
     grade_print_table(result, stdout);
     grade_path(json, sizeof json, "%s/results.json", outdir);
+    grade_path(facts, sizeof facts, "%s/facts.json", outdir);
     int code = 0;
-    if (grade_write_results_json(result, json, &diag) != PL_OK || grade_write_html(result, env->report, &diag) != PL_OK) {
+    if (grade_write_results_json(result, json, &diag) != PL_OK || grade_write_html(result, env->report, &diag) != PL_OK ||
+        grade_write_facts(result, facts, &diag) != PL_OK) {
         fprintf(stderr, "grade: %s\n", diag.error);
         code = 1;
     }

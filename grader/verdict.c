@@ -73,13 +73,14 @@ static int block_side(const verdict_params *p)
  * the reference is lit. These are the mistakes students make most (handout/part3.md, part4.md). */
 static void find_hint(verdict *v, const verdict_image *cand, const verdict_image *ref)
 {
-    static const struct { double factor; const char *text; } known[] = {
-        {2.0, "about 2x the reference: a term counted twice (emission?) or a pdf half what it should be"},
-        {0.5, "about 1/2 of the reference: a lost factor 2 (a hemisphere pdf of 1/pi instead of 1/(2 pi)?)"},
-        {M_PI, "about pi x the reference: a missing 1/pi (the diffuse BSDF is albedo / pi)"},
-        {1.0 / M_PI, "about 1/pi of the reference: an extra 1/pi (the BSDF or a pdf applied twice?)"},
+    static const struct { double factor; const char *code, *text; } known[] = {
+        {2.0, "factor_2", "about 2x the reference: a term counted twice (emission?) or a pdf half what it should be"},
+        {0.5, "factor_1/2", "about 1/2 of the reference: a lost factor 2 (a hemisphere pdf of 1/pi instead of 1/(2 pi)?)"},
+        {M_PI, "factor_pi", "about pi x the reference: a missing 1/pi (the diffuse BSDF is albedo / pi)"},
+        {1.0 / M_PI, "factor_1/pi", "about 1/pi of the reference: an extra 1/pi (the BSDF or a pdf applied twice?)"},
     };
     v->hint[0] = '\0';
+    v->hint_code = NULL;
     long lit = 0, black = 0;
     for (long i = 0; i < (long)ref->width * ref->height; i++) {
         const float *r = ref->rgb + 3 * i, *c = cand->rgb + 3 * i;
@@ -91,6 +92,7 @@ static void find_hint(verdict *v, const verdict_image *cand, const verdict_image
     if (lit > 0 && black * 4 > lit) {
         /* No count: how many pixels are black is the candidate's choice (grade_figure.h). */
         snprintf(v->hint, sizeof v->hint, "black where the reference is lit (more than a quarter of its lit pixels)");
+        v->hint_code = "black";
         return;
     }
     /* The factor is measured where it is telling: light reflected by the surfaces. A pixel that sees
@@ -123,6 +125,7 @@ static void find_hint(verdict *v, const verdict_image *cand, const verdict_image
         }
         if (any && all) {
             snprintf(v->hint, sizeof v->hint, "%s", known[k].text);
+            v->hint_code = known[k].code;
             return;
         }
     }
@@ -283,6 +286,7 @@ static void self_shadow_hint(verdict *v, const verdict_params *p)
         if (isfinite(v->ratio[ch]) && v->ratio[ch] > 0.0 && !(v->ratio[ch] < 1.0)) return;
     snprintf(v->hint, sizeof v->hint, "darker than the reference where light grazes the surfaces: self-shadowing? Rays "
              "from the raw hit point hit their own surface; spawn them with spawn.h (handout/part3.md, 3.4)");
+    v->hint_code = "self_shadowing";
 }
 
 pl_status verdict_compute(const verdict_image *cand, const verdict_image *ref, const verdict_params *p,

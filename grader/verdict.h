@@ -107,6 +107,8 @@ typedef struct {
     long bad_pixels;             /* candidate pixels with NaN, Inf or negative values */
     int bad_x, bad_y;            /* the first one, counted from the bottom-left as the renderer does */
     char hint[200];              /* a likely cause when the ratio matches a known mistake, else "" */
+    const char *hint_code;       /* the same cause as a stable code for machines ("factor_1/pi", "black",
+                                    "self_shadowing": grade_facts.h), or NULL with no hint */
     /* Deterministic cases (p_value is 1 on a pass, 0 on a failure; t holds each block's largest
      * signed difference in units of the tolerance): */
     bool deterministic;

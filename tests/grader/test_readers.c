@@ -6,6 +6,7 @@
 #include "../common/test.h"
 #include "../common/scratch.h"
 #include "../../grader/grade.h"
+#include "../../grader/grade_facts.h"
 #include "../../grader/grade_handout.h"
 #include "../../grader/grade_image.h"
 #include "../../grader/grade_refs.h"
@@ -599,6 +600,53 @@ static void test_report__every_entry_present_for_hostile_messages(void **state)
     assert_int_equal(PL_OK, grade_write_html(&res, scratch, &d));
 }
 
+
+/* facts.json names each failure's cause by its stable code, for the class report: a stub, a known
+ * factor, an image off overall, a figure off on a matching image, and a part that did not build. */
+static void test_facts__each_failure_has_its_cause(void **state)
+{
+    (void)state;
+    static grade_result res;
+    static grade_case cases[5];
+    memset(&res, 0, sizeof res);
+    res.num_parts = 2;
+    grade_part_result *p = &res.parts[0], *q = &res.parts[1];
+    p->part = 3, p->built = true, p->num_cases = 5;
+    for (int i = 0; i < 5; i++) {
+        snprintf(cases[i].name, sizeof cases[i].name, "case%d", i);
+        cases[i].points = 1;
+        p->cases[i].spec = &cases[i];
+        p->cases[i].v.ratio[0] = p->cases[i].v.ratio[1] = p->cases[i].v.ratio[2] = 1.0;
+    }
+    snprintf(p->cases[0].reason, sizeof p->cases[0].reason, "the render reached a task that is still a stub");
+    p->cases[1].ran = true, p->cases[1].v.hint_code = "factor_1/pi";
+    p->cases[2].ran = true, p->cases[2].v.ratio[0] = p->cases[2].v.ratio[1] = p->cases[2].v.ratio[2] = 0.5;
+    p->cases[3].ran = true, p->cases[3].v.pass = true, cases[3].noise_check = true, p->cases[3].noise = 2.0;
+    p->cases[4].ran = true, p->cases[4].pass = true, p->cases[4].v.pass = true;
+    q->part = 4, q->built = false;
+    snprintf(q->suite_reason, sizeof q->suite_reason, "part 4 does not compile: x.c");
+    static const char *const want[5] = {"stub", "factor_1/pi", "too_dark", "noisier", NULL};
+    const char *words;
+    for (int i = 0; i < 5; i++) {
+        const char *got = grade_case_cause(p, &p->cases[i], &words);
+        if (want[i] ? !got || strcmp(got, want[i]) : got != NULL)
+            fail_msg("case %d: expected cause %s, got %s", i, want[i] ? want[i] : "none", got ? got : "none");
+    }
+    assert_string_equal(grade_unit_cause(q), "not_built");
+    char path[256];
+    pl_diag d = pl_diag_default();
+    snprintf(path, sizeof path, "%s/facts.json", scratch);
+    assert_int_equal(PL_OK, grade_write_facts(&res, path, &d));
+    json_error_t err;
+    json_t *j = json_load_file(path, JSON_REJECT_DUPLICATES, &err);
+    assert_non_null(j);
+    assert_string_equal(json_string_value(json_object_get(j, "schema")), GRADE_FACTS_SCHEMA);
+    json_t *c1 = json_array_get(json_object_get(json_array_get(json_object_get(j, "parts"), 0), "cases"), 1);
+    assert_string_equal(json_string_value(json_object_get(c1, "cause")), "factor_1/pi");
+    assert_string_equal(json_string_value(json_object_get(c1, "cause_words")), "too dark by 1/pi");
+    json_decref(j);
+}
+
 /* ---- the grader's own memory ---------------------------------------------------------------- */
 
 /* A grading run ends normally: exit 0 (full marks) or 1 (a student's tree with stubs), its
@@ -632,6 +680,7 @@ int readers_tests(void)
         cmocka_unit_test(test_refs__the_course_references_pass),
         cmocka_unit_test(test_refs__the_json_a_check_needs_is_required),
         cmocka_unit_test(test_refs__the_film_must_be_the_cases),
+        cmocka_unit_test(test_facts__each_failure_has_its_cause),
         cmocka_unit_test(test_cases__every_member_known_and_typed),
         cmocka_unit_test(test_cases__parts_listed_once_in_order_and_hidden_ones_listed_too),
         cmocka_unit_test(test_cases__task_shares_add_up_to_the_part),
