@@ -193,6 +193,32 @@ test-$(1): $(BIN)/test-$(1) $(BIN)/pathtracer
 endef
 $(foreach s,$(SUITES),$(eval $(call suite_rules,$(s))))
 
+# ---- a part's objects, inspected as the autograder inspects them, before its suite runs --------
+# The grader refuses a part whose compiled objects call what part code may not, or hold what plain
+# C does not compile to (grader/grade_inspect.c): test-partN refuses it too, with the grader's words.
+# The part's files are compiled once more for it as the grader compiles them: without link-time
+# optimisation (so the objects hold machine code) and without the sanitizers.
+INSPECT_BUILD  := $(BUILD)/inspect
+INSPECT_CFLAGS := $(filter-out -flto% -fsanitize% -fno-sanitize% -fno-omit-frame-pointer -O1,$(CFLAGS)) -O2
+$(INSPECT_BUILD)/%.o: %.c $(BUILD)/flags
+	$(say) CC "$< (the grader's way)"
+	@mkdir -p $(dir $@)
+	$(Q)$(CC) $(CPPFLAGS) $(INSPECT_CFLAGS) -c -o $@ $<
+# The framework's global names, which a link-time optimised program no longer holds: the compiler's
+# nm reads them from the framework's objects (bytecode) through its plugin.
+NM_FOR_CC := $(if $(findstring clang,$(CC)),llvm-nm,gcc-nm)
+$(BUILD)/framework.names: $(patsubst %.c,$(BUILD)/%.o,$(FRAMEWORK_SRC))
+	$(Q){ $(NM_FOR_CC) --defined-only --extern-only --format=just-symbols $^ 2>/dev/null || true; } | \
+	    grep -v -e ':$$' -e '^$$' > $@.tmp; mv $@.tmp $@
+part_folder = $(firstword $(wildcard parts/$(1)_*))
+define inspect_rules
+test-$(1): inspect-$(1)
+.PHONY: inspect-$(1)
+inspect-$(1): $(BIN)/inspect-part $(BIN)/test-$(1) $(BUILD)/framework.names $(patsubst %.c,$(INSPECT_BUILD)/%.o,$(wildcard $(call part_folder,$(1))/*.c))
+	$$(Q)$(BIN)/inspect-part $(BIN)/test-$(1) $(BUILD)/framework.names $(call part_folder,$(1)) $(patsubst %.c,$(INSPECT_BUILD)/%.o,$(wildcard $(call part_folder,$(1))/*.c))
+endef
+$(foreach s,$(PART_SUITES),$(eval $(call inspect_rules,$(s))))
+
 # Every suite runs even when one fails; the target fails if any did. A FILTER need match in one
 # suite only: a suite with a match creates $(BUILD)/filter-matched, and the target fails without one.
 test:  ## run every suite (SAN=1: under AddressSanitizer + UBSan)

@@ -266,7 +266,9 @@ typedef struct {
     int status;                /* exit status when exited, else the signal */
     bool timed_out;
     bool output_cut;           /* it printed more than log_max */
-    double seconds;
+    double seconds;            /* wall clock */
+    double cpu_seconds;        /* user + system CPU time, the kernel's count (wait4), threads and
+                                  waited-for descendants included */
 } grade_run_result;
 
 /* Runs argv as a child in its own process group; never reads what it prints except into the log. */
@@ -276,6 +278,11 @@ grade_run_result grade_run(char *const argv[], const grade_run_opts *o);
  * r[i]. Only jobs without a capture: a build's compiles and links. */
 #define GRADE_JOBS 2
 void grade_run_jobs(int n, char *const *const argv[], const grade_run_opts o[], grade_run_result r[]);
+/* Runs fn(arg, fd) in a forked child under o's limits and, with o->untrusted, the whole confinement
+ * of an untrusted stage and the filter, installed before fn runs; the child never execs. For the
+ * grader's own code reading hostile files (the object inspection): what fn writes to fd (the
+ * capture's descriptor, o->capture required) arrives in o->capture. */
+grade_run_result grade_run_function(void (*fn)(void *arg, int out_fd), void *arg, const grade_run_opts *o);
 /* grade_run with pipe ends for the split suite (grade_judge.c): in_fd > 0 becomes the child's stdin
  * (else /dev/null), fd3 > 0 its fd 3. */
 grade_run_result grade_run_piped(char *const argv[], const grade_run_opts *o, int in_fd, int fd3);

@@ -79,6 +79,20 @@ static bool libm_function(const char *s)
 
 const char *const *grade_allowed_framework(void) { return allowed_framework; }
 
+bool grade_allowed_add_all(grade_names *set)
+{
+    bool ok = true;
+    for (const char *const *lists[] = {allowed_framework, allowed_libc}, *const *const *l = lists; l < lists + 2; l++)
+        for (const char *const *s = *l; ok && *s; s++) ok = grade_names_add(set, *s);
+    for (const char *const *s = allowed_libm; ok && *s; s++) {
+        char forms[2][64];
+        snprintf(forms[0], sizeof forms[0], "%sf", *s);
+        snprintf(forms[1], sizeof forms[1], "%sl", *s);
+        ok = grade_names_add(set, *s) && grade_names_add(set, forms[0]) && grade_names_add(set, forms[1]);
+    }
+    return ok;
+}
+
 bool grade_allowed_symbol(const char *name)
 {
     return in_list(allowed_framework, name) || in_list(allowed_libc, name) || libm_function(name);

@@ -480,10 +480,9 @@ bool grade_build_submission(const grade_env *env, int n, const char *tree, grade
     for (int i = 0; ok && i < m.count; i++)  /* the sources the inspection names (grade_inspect.c) */
         if (m.names[i][strlen(m.names[i]) - 1] == 'c') ok = copy_file(submitted, to, m.names[i], GRADE_SOURCE_BYTES);
     /* The objects against the allow-list, before the linker reads them as the grader. */
-    char program[4300], work[4300], why[sizeof r->suite_reason];
-    grade_path(program, sizeof program, "%s/bin/subject-part%d", course, n);
+    char work[4300], why[sizeof r->suite_reason];
     grade_path(work, sizeof work, "%s/part%d", env->work, n);
-    if (ok && !grade_inspect_part(tree, folder, program, work, true, why, sizeof why))
+    if (ok && !grade_inspect_part(tree, course, folder, n, work, GRADE_INSPECT_SECONDS, why, sizeof why))
         ok = (grade_msg(r->suite_reason, sizeof r->suite_reason, "%s", why), false);
     ok = ok && link_all(env, n, folder, &m, tree, r);
     if (!ok) grade_diagnostics(r->build_log, folder, GRADE_DIAG_LINES, r->build_output, sizeof r->build_output);

@@ -227,20 +227,21 @@ static bool collect(int fd, grade_capture *c)
 }
 
 /* Until the child ends or its time is up: its output to the log, its capture to memory. Returns the
- * wait status; r->timed_out when it was killed for time. */
+ * wait status; r->timed_out when it was killed for time, r->cpu_seconds what the kernel counted. */
 static int watch(pid_t pid, const grade_run_opts *o, int out_fd, int log_fd, int cap_fd, grade_run_result *r)
 {
     double t0 = clock_seconds();
     int status = 0;
     long written = 0;
+    struct rusage usage = {0};
     bool out_open = true, cap_open = cap_fd >= 0;
     for (;;) {
-        pid_t w = waitpid(pid, &status, WNOHANG);
+        pid_t w = wait4(pid, &status, WNOHANG, &usage);
         if (w == pid || (w < 0 && errno != EINTR)) break;
         if (clock_seconds() - t0 > o->wall_seconds) {
             r->timed_out = true;
             kill(-pid, SIGKILL);
-            waitpid(pid, &status, 0);
+            wait4(pid, &status, 0, &usage);
             break;
         }
         struct pollfd p[2] = {{out_open ? out_fd : -1, POLLIN, 0}, {cap_open ? cap_fd : -1, POLLIN, 0}};
@@ -259,6 +260,11 @@ static int watch(pid_t pid, const grade_run_opts *o, int out_fd, int log_fd, int
         if (poll(&p, 1, 0) <= 0) break;
     }
     r->output_cut = o->log_max > 0 && written > o->log_max;
+    /* The kernel's count of the child's CPU time, its waited-for descendants' included (a namespace's
+     * relay waits for its init, which waits for the confined process): the one measure of a child's
+     * work the grader scores, since nothing the child says about itself is trusted. */
+    r->cpu_seconds = (double)usage.ru_utime.tv_sec + 1e-6 * (double)usage.ru_utime.tv_usec +
+                     (double)usage.ru_stime.tv_sec + 1e-6 * (double)usage.ru_stime.tv_usec;
     return status;
 }
 
@@ -300,7 +306,7 @@ void grade_run_jobs(int n, char *const *const argv[], const grade_run_opts o[], 
         for (int k = 0; k < batch; k++) pid[k] = start_job(argv[first + k], &o[first + k], &from[k]);
         for (int k = 0; k < batch; k++) {
             grade_run_result *out = &r[first + k];
-            *out = (grade_run_result){false, -1, false, false, 0.0};
+            *out = (grade_run_result){false, -1, false, false, 0.0, 0.0};
             if (pid[k] < 0) continue;
             grade_run_result got;
             ssize_t len;
@@ -312,9 +318,32 @@ void grade_run_jobs(int n, char *const *const argv[], const grade_run_opts o[], 
     }
 }
 
-grade_run_result grade_run_piped(char *const argv[], const grade_run_opts *o, int in_fd, int fd3)
+/* What a child runs once child_setup has confined it: a program (exec), or a function of the
+ * grader's (grade_run_function). */
+typedef struct {
+    char *const *argv;                 /* a program, or NULL */
+    void (*fn)(void *arg, int out_fd); /* else this, with arg, writing to the capture's descriptor */
+    void *arg;
+} child_work;
+
+static _Noreturn void run_child_work(const grade_run_opts *o, const child_work *w)
 {
-    grade_run_result r = {false, -1, false, false, 0.0};
+    if (w->argv) {
+        if (o->untrusted && !o->compiler && sandbox.filter) sandbox_exec(w->argv, o->writes_files);
+        else execvp(w->argv[0], w->argv);
+        _exit(127);
+    }
+    /* A function never execs: the filter goes on before it reads anything hostile. */
+    if (o->untrusted && sandbox.filter && !sandbox_confine_self()) _exit(126);
+    w->fn(w->arg, o->capture ? o->capture->child_fd : -1);
+    _exit(0);
+}
+
+/* Forks a child for w under o's limits and confinement, watches it to its end, and cleans up after
+ * it: the one path every child of the grader takes. */
+static grade_run_result run_child(const child_work *w, const grade_run_opts *o, int in_fd, int fd3)
+{
+    grade_run_result r = {false, -1, false, false, 0.0, 0.0};
     double t0 = clock_seconds();
     int log_fd = open_log(o->log_path), fds[2] = {-1, -1}, cap[2] = {-1, -1};
     if (o->capture) o->capture->len = 0, o->capture->overflow = false;
@@ -327,9 +356,7 @@ grade_run_result grade_run_piped(char *const argv[], const grade_run_opts *o, in
     pid_t pid = fork();
     if (pid == 0) {
         child_setup(o, fds[1], cap[1], in_fd, fd3);
-        if (o->untrusted && !o->compiler && sandbox.filter) sandbox_exec(argv, o->writes_files);
-        else execvp(argv[0], argv);
-        _exit(127);
+        run_child_work(o, w);
     }
     if (pid > 0) setpgid(pid, pid);  /* also from the parent: no race with the first kill */
     close(fds[1]);
@@ -355,6 +382,18 @@ grade_run_result grade_run_piped(char *const argv[], const grade_run_opts *o, in
     else if (pid > 0 && WIFSIGNALED(status))
         r.status = WTERMSIG(status);
     return r;
+}
+
+grade_run_result grade_run_piped(char *const argv[], const grade_run_opts *o, int in_fd, int fd3)
+{
+    child_work w = {argv, NULL, NULL};
+    return run_child(&w, o, in_fd, fd3);
+}
+
+grade_run_result grade_run_function(void (*fn)(void *arg, int out_fd), void *arg, const grade_run_opts *o)
+{
+    child_work w = {NULL, fn, arg};
+    return run_child(&w, o, 0, 0);
 }
 
 void grade_run_describe(const grade_run_result *r, char *out, size_t size)

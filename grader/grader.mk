@@ -6,10 +6,16 @@
 # grade. grader/probe_main.c is bin/grade-probe, the sandbox's self-test (its own program).
 SANDBOX_SRC := $(if $(shell pkg-config --exists libseccomp 2>/dev/null && echo yes),grader/sandbox_linux.c,grader/sandbox_posix.c)
 SANDBOX_IMPL := $(if $(filter grader/sandbox_linux.c,$(SANDBOX_SRC)),linux,posix)
-GRADER_SRC := $(filter-out grader/grade_main.c grader/probe_main.c grader/sandbox_linux.c grader/sandbox_posix.c,\
+GRADER_SRC := $(filter-out grader/grade_main.c grader/probe_main.c grader/inspect_main.c grader/sandbox_linux.c grader/sandbox_posix.c,\
                 $(wildcard grader/*.c)) $(SANDBOX_SRC)
 GRADER_OBJ := $(patsubst %.c,$(BUILD)/%.o,$(GRADER_SRC))
 GRADER_LIBS := $(if $(filter linux,$(SANDBOX_IMPL)),$(shell pkg-config --libs libseccomp))
+# The object inspection reads ELF objects with elfutils' libelf (libelf-dev, in tools/setup's list);
+# without it (macOS: its objects are Mach-O) the inspection says it is the autograder's, and
+# bin/grade --submission as root refuses to grade.
+HAVE_LIBELF := $(shell pkg-config --exists libelf 2>/dev/null && echo yes)
+GRADER_LIBS += $(if $(HAVE_LIBELF),$(shell pkg-config --libs libelf))
+$(BUILD)/grader/grade_inspect.o: CPPFLAGS += $(if $(HAVE_LIBELF),-DPL_HAVE_LIBELF $(shell pkg-config --cflags libelf))
 # bin/grade links the framework's file, image and statistics code, never a part: it must not run
 # student code in its own process. The command line and the render key (cli.o, range.o and the
 # output.o the merge writes through) come along for checking the references (grade_refs.c).
@@ -38,6 +44,12 @@ $(GRADE_RECIPES): FORCE
 	   echo '$(call grade_link,$(BIN)/test-part$(n),$(call suite_obj,part$(n)) $(COMMON_OBJ) $(LIB_OBJ),$(shell pkg-config --libs $(TPKGS)))'; \
 	   echo '$(call grade_link,$(BIN)/subject-part$(n),$(foreach f,$(call part_fns,$(n)),-Wl$(comma)--wrap=$(f)) $(call suite_obj,part$(n)) $(COMMON_OBJ) $(LIB_OBJ) $(call seam_obj,subject,record,$(n)),$(shell pkg-config --libs $(TPKGS)))';) \
 	 } >$@.tmp && mv $@.tmp $@
+
+# The object inspection on a student's own tree (make test-partN runs it: Makefile, inspect_rules).
+$(BIN)/inspect-part: $(BUILD)/grader/inspect_main.o $(GRADER_OBJ) $(GRADER_FRAMEWORK_OBJ)
+	$(say) LD $@
+	@mkdir -p $(dir $@)
+	$(Q)$(CC) $(LDFLAGS) -o $@ $^ $(LDLIBS) $(GRADER_LIBS)
 
 # The sandbox's self-test: tries what the filter forbids, and sweeps folders for secret bytes, as a
 # stage of a grading is confined (it links the grader's library for that).

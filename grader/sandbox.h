@@ -24,6 +24,11 @@ void sandbox_filter_name(char *out, size_t size);
  * lets it create and write files (the legacy XML suite; nothing else). Returns only on failure. */
 void sandbox_exec(char *const argv[], bool may_write_files);
 
+/* In a forked child that will not exec (a function of the grader's reading hostile files: the
+ * object inspection), as its last privileged step: no_new_privs and the same filter, with no exec
+ * at all (the exec slot can never be opened). False when it could not be installed. */
+bool sandbox_confine_self(void);
+
 /* PID and mount namespaces (Linux, as root; Docker's default seccomp profile refuses them): whether
  * this machine gives them, tried in a throwaway child. */
 bool sandbox_isolation_supported(void);
@@ -37,8 +42,9 @@ bool sandbox_isolation_supported(void);
 void sandbox_isolate(void);
 
 /* In the child sandbox_isolate returned to, still privileged: the stage's private view of the file
- * system. Everything becomes read-only; /tmp, /var/tmp and /dev/shm become fresh tmpfs of tmp_bytes
- * each, which vanish with the namespace; `keep` (the sandbox's folder, which may sit under /tmp)
+ * system. Everything becomes read-only; /dev holds only null, zero and urandom (a file that blocks
+ * when read, a terminal, a device of the machine's, is out of view); /tmp, /var/tmp and /dev/shm
+ * become fresh tmpfs of tmp_bytes each, which vanish with the namespace; `keep` (the sandbox's folder, which may sit under /tmp)
  * stays where it is, read-only; `writable` (NULL: none), a folder under it, is the one place the
  * stage may write. False when a step was refused (the caller ends the child: _exit(126)). */
 bool sandbox_private_view(const char *keep, const char *writable, long tmp_bytes);

@@ -36,6 +36,7 @@
 #include <sys/ioctl.h>
 #include <sys/mount.h>
 #include <sys/stat.h>
+#include <sys/sysmacros.h>
 #include <sys/prctl.h>
 #include <sys/resource.h>
 #include <sys/syscall.h>
@@ -137,6 +138,12 @@ void sandbox_exec(char *const argv[], bool may_write_files)
     struct rlimit l = {SANDBOX_EXEC_FD, SANDBOX_EXEC_FD};
     if (setrlimit(RLIMIT_NOFILE, &l) != 0 || !load_filter(may_write_files)) return;
     syscall(SYS_execveat, SANDBOX_EXEC_FD, "", argv, environ, AT_EMPTY_PATH);
+}
+
+bool sandbox_confine_self(void)
+{
+    struct rlimit l = {SANDBOX_EXEC_FD, SANDBOX_EXEC_FD};
+    return setrlimit(RLIMIT_NOFILE, &l) == 0 && load_filter(false);
 }
 
 bool sandbox_filter_supported(char *why, size_t size)
@@ -266,13 +273,28 @@ static bool make_path(const char *path)
         }
 }
 
+/* A /dev of three devices: a tmpfs over the machine's, holding null, zero and urandom as the
+ * kernel numbers them (Documentation/admin-guide/devices.txt), and an empty shm for the tmpfs below.
+ * So `#include "/dev/stdin"` or a terminal's device cannot block a compile, and no stage reads a
+ * device of the machine's. */
+static bool minimal_dev(void)
+{
+    static const struct { const char *path; unsigned minor; } devices[] = {
+        {"/dev/null", 3}, {"/dev/zero", 5}, {"/dev/urandom", 9}};
+    if (mount("tmpfs", "/dev", "tmpfs", MS_NOSUID | MS_NOEXEC, "size=64k,mode=755") != 0) return false;
+    for (size_t i = 0; i < sizeof devices / sizeof devices[0]; i++)
+        if (mknod(devices[i].path, S_IFCHR | 0666, makedev(1, devices[i].minor)) != 0 || chmod(devices[i].path, 0666) != 0)
+            return false;
+    return mkdir("/dev/shm", 01777) == 0 && chmod("/dev/shm", 01777) == 0;
+}
+
 bool sandbox_private_view(const char *keep, const char *writable, long tmp_bytes)
 {
     /* `keep` is taken first, as a detached copy of its mount: the tmpfs below may cover its path. */
     int kept = keep ? (int)open_tree(AT_FDCWD, keep, OPEN_TREE_CLONE | OPEN_TREE_CLOEXEC | AT_RECURSIVE) : -1;
     if (keep && kept < 0) return false;
     struct mount_attr ro = {.attr_set = MOUNT_ATTR_RDONLY | MOUNT_ATTR_NOSUID};
-    bool ok = mount_setattr(AT_FDCWD, "/", AT_RECURSIVE, &ro, sizeof ro) == 0;
+    bool ok = mount_setattr(AT_FDCWD, "/", AT_RECURSIVE, &ro, sizeof ro) == 0 && minimal_dev();
     char options[64];
     snprintf(options, sizeof options, "size=%ld,mode=1777", tmp_bytes);
     bool covered = false;

@@ -28,6 +28,8 @@ void sandbox_exec(char *const argv[], bool may_write_files)
     execvp(argv[0], argv);
 }
 
+bool sandbox_confine_self(void) { return false; }
+
 bool sandbox_isolation_supported(void) { return false; }
 
 void sandbox_isolate(void) {}

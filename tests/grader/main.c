@@ -6,6 +6,7 @@ int readers_tests(void);  /* references, suite results, results.json read as hos
 int allow_tests(void);  /* the allow-list, the PL_PART_API marks and the handout agree */
 int figure_tests(void);  /* what reaches the student: figures rounded, hidden cases coarse */
 int manifest_tests(void);  /* a submitted part's folder, read as data before anything builds it */
+int inspect_tests(void);  /* the object inspection, attacked one rule at a time */
 
 int main(void)
 {
@@ -16,5 +17,6 @@ int main(void)
     failed += allow_tests();
     failed += figure_tests();
     failed += manifest_tests();
+    failed += inspect_tests();
     return failed != 0;
 }

@@ -1,0 +1,71 @@
+/* Grader machinery: not part of any assignment.
+ * bin/inspect-part: the autograder's object inspection (grade_inspect.c), on a student's own tree,
+ * so that `make test-partN` refuses what the grader refuses, with the grader's words, before the
+ * suite runs. make compiles the part's files once more as the grader does (no link-time
+ * optimisation, so the objects hold machine code) and runs
+ *
+ *   bin/inspect-part PROGRAM NAMES FOLDER OBJECT...
+ *
+ * PROGRAM: the part's test program (its libraries are the ones a part may not redefine); NAMES: the
+ * framework's global names, one a line (make lists them from the framework's objects); FOLDER:
+ * parts/<folder>; each OBJECT has its dependency file beside it (<name>.d). Exit status 0 when every
+ * object keeps to the allow-list, 1 with the grader's message otherwise, 2 on a usage error. Where
+ * the machine has no libelf (macOS: its objects are Mach-O), it says the inspection is the
+ * autograder's and exits 0. */
+#include "grade.h"
+#include "grade_inspect.h"
+#include <stdio.h>
+#include <string.h>
+
+#define MAX_FILES 32
+
+/* "parts/<folder>/<name>.c" for object ".../<name>.o": the file the student wrote. */
+static void source_name(const char *folder, const char *object, char *out, size_t size)
+{
+    const char *base = strrchr(object, '/');
+    base = base ? base + 1 : object;
+    size_t n = strlen(base);
+    grade_msg(out, size, "%s/%.*s.c", folder, n > 2 ? (int)n - 2 : (int)n, base);
+}
+
+int main(int argc, char **argv)
+{
+    if (argc < 5 || argc - 4 > MAX_FILES || strncmp(argv[3], "parts/", 6)) {
+        fprintf(stderr, "usage: bin/inspect-part PROGRAM NAMES parts/<folder> OBJECT... (at most %d objects)\n", MAX_FILES);
+        return 2;
+    }
+    const char *folder = argv[3] + 6;
+    int n = argc - 4;
+    const char *objects[MAX_FILES + 1], *shown[MAX_FILES];
+    static char names[MAX_FILES][300], deps[MAX_FILES][4096];
+    char what[512], why[1024];
+    for (int i = 0; i < n; i++) {
+        objects[i] = argv[4 + i], shown[i] = names[i];
+        source_name(argv[3], objects[i], names[i], sizeof names[i]);
+        size_t len = strlen(objects[i]);
+        grade_msg(deps[i], sizeof deps[i], "%.*s.d", len > 2 ? (int)len - 2 : (int)len, objects[i]);
+        if (!grade_inspect_dependencies(folder, deps[i], what, sizeof what)) {
+            printf("%s: %s\n", names[i], what);
+            return 1;
+        }
+    }
+    objects[n] = NULL;
+    grade_inspect_course course;
+    if (!grade_inspect_course_load(argv[1], objects, &course, why, sizeof why)) {
+        printf("inspect-part: the object inspection is not run here: %s\n", why);
+        return 0;
+    }
+    if (!grade_inspect_course_add_names(&course, argv[2])) {
+        printf("inspect-part: cannot read %s (make lists the framework's names there)\n", argv[2]);
+        grade_inspect_course_free(&course);
+        return 2;
+    }
+    grade_inspect_verdict v = grade_inspect_objects(objects, n, &course);
+    if (v.code != GRADE_INSPECT_OK) {
+        grade_inspect_describe(&v, &course, shown, why, sizeof why);
+        printf("%s\nThe autograder refuses this part for it (0 points: it checks the compiled objects before "
+               "anything runs), so its tests were not run.\n", why);
+    }
+    grade_inspect_course_free(&course);
+    return v.code != GRADE_INSPECT_OK;
+}
