@@ -15,6 +15,9 @@ LTO     ?= 1   # 0: no link-time optimisation (the grader's builds: objects hold
 STB     ?= auto  # auto: the system's stb where pkg-config finds it, else third_party/stb; vendored: always third_party/stb
 PKGS    := libxml-2.0 stb jansson zlib OpenEXR
 TPKGS   := cmocka
+# The grader's suite also renders results.json's Markdown as a course platform does (CommonMark's
+# reference library), to prove that no markup a submission plants survives.
+GRADER_TPKGS := libcmark
 # The course's parts: one folder each, parts/partN_<name>/ (a course's release holds the parts it
 # chose in course/course.mk, COURSE_PARTS). PART_SUITES: part1 part2 ..., in order.
 PART_SUITES := $(sort $(foreach d,$(wildcard parts/part*_*),$(firstword $(subst _, ,$(notdir $(d))))))
@@ -40,7 +43,7 @@ EXR_WAY_OUT := $(if $(filter Darwin,$(shell uname -s)),Run `brew upgrade openexr
   use Ubuntu 24.04 or later, or Debian 12 or later, or the devcontainer in .devcontainer/ (README.md, \
   "Platforms"), or build OpenEXR 3 from source and add its lib/pkgconfig to PKG_CONFIG_PATH.)
 ifneq ($(filter-out help clean,$(or $(MAKECMDGOALS),all)),)
-  MISSING := $(strip $(foreach p,$(PKGS) $(TPKGS),$(if $(shell pkg-config --exists $(p) 2>/dev/null && echo y),,$(p))))
+  MISSING := $(strip $(foreach p,$(PKGS) $(TPKGS) $(GRADER_TPKGS),$(if $(shell pkg-config --exists $(p) 2>/dev/null && echo y),,$(p))))
   ifneq ($(MISSING),)
     $(error pkg-config finds no $(MISSING): run `sh tools/setup` (README.md, "Platforms"))
   endif

@@ -61,6 +61,7 @@ test-grade-local: release $(BIN)/grade  ## make grade without the sandbox: the a
 
 # ---- references: the solution's renders of every grading case, locally or as a Slurm job array ---
 REF_OBJ := $(BUILD)/course/references/references.o $(BUILD)/grader/grade_cases.o $(BUILD)/grader/grade_run.o \
+           $(BUILD)/grader/grade_rate.o \
            $(BUILD)/grader/grade_fmt.o \
            $(BUILD)/grader/sandbox_$(SANDBOX_IMPL).o $(LIB_OBJ)
 $(BIN)/references: $(REF_OBJ)

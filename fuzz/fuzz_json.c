@@ -1,7 +1,7 @@
 /* Test machinery: not part of any assignment.
  * The grader's JSON fuzzer (libFuzzer, `make fuzz FUZZ_TARGET=json`): every input is read as the
  * course's cases file (grade_spec_load: grading/cases.json) and as a reference's JSON
- * (grade_refs_figures, for a plain, an adaptive and a work_per_ray case). Refusals are expected;
+ * (grade_refs_figures, for a plain case and an adaptive one, whose rate map it reads). Refusals are expected;
  * only crashes, sanitizer reports and leaks count. */
 #include "../grader/grade.h"
 #include "../grader/grade_refs.h"
@@ -34,12 +34,12 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
     static char flag[] = "-a";
     grade_case k;
     memset(&k, 0, sizeof k);
-    for (int kind = 0; kind < 3; kind++) {
-        double spp, work;
+    static grade_course_figures figures;
+    k.width = 120, k.height = 90;
+    for (int kind = 0; kind < 2; kind++) {
         k.flags[0] = flag;
         k.num_flags = kind == 1;
-        k.work_per_ray = kind == 2;
-        grade_refs_figures(exr, &k, &spp, &work, &quiet);
+        grade_refs_figures(exr, &k, &figures, &quiet);
     }
     return 0;
 }

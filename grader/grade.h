@@ -20,8 +20,15 @@
 #define GRADE_MAX_TASKS 8         /* a part's unit-test tasks ("unit_tasks" in cases.json) */
 #define GRADE_MAX_MATCH 4         /* test-name prefixes per task */
 #define GRADE_MAX_TESTS 256       /* tests in one suite: the course's largest has ~40 */
-#define GRADE_WORK_FACTOR 3.0     /* a BVH may do up to 3x the course's work per camera ray */
+/* The BVH's work: the kernel's count of the render's CPU time, against a render in which no student
+ * code runs, of the same case in the same grading (grade_image.c, grading/README.md: calibrated on
+ * the solution and the correct alternatives, slow ones included). */
+#define GRADE_WORK_FACTOR 5.0     /* at most 5x the CPU time of the course's own part 2 (the autograder) */
+#define GRADE_SCAN_FACTOR 8.0     /* at least 8x faster than the framework's linear scan (a student's own
+                                     tree, which holds no course part 2 to compare with) */
 #define GRADE_SPP_TOLERANCE 0.05  /* an adaptive render's mean samples per pixel: the course's +-5% */
+#define GRADE_RATE_TOLERANCE 0.5  /* and its map, block by block: at most half the course's variation
+                                     unfollowed (grade_rate_map_distance; grading/CALIBRATION.md) */
 #define GRADE_NOISE_FACTOR 1.15   /* noise_check cases: per-sample variance at most 1.15x the course's
                                      (grading/README.md: measured on the solution and the alternatives) */
 
@@ -40,7 +47,7 @@ typedef struct {
     int num_reference_flags;            /* 0: the reference uses flags */
     double points;
     bool hidden;
-    bool work_per_ray;                  /* also judge BVH node visits per ray against the solution's */
+    bool work_check;                    /* also judge the render's CPU time against the course's BVH */
     bool known_variance;                /* "statistic": "known_variance" (verdict.h), else the paired t */
     bool grazing;                       /* "grazing": lit at grazing angles, so dark means self-shadowing */
     bool noise_check;                   /* also judge the per-sample variance against the reference's */
@@ -102,7 +109,12 @@ typedef struct {
     char reason[256];          /* why it did not run or failed, when it did not pass */
     verdict v;                 /* the image verdict (when ran) */
     double spp, course_spp;    /* adaptive cases: mean samples per pixel, the candidate's and the course's */
-    double work, course_work;  /* work_per_ray cases: node visits + primitive tests per camera ray */
+    double rate_distance;      /* adaptive cases: the sample-rate map's distance from the course's
+                                  (grade_rate_map_distance; -1: not judged) */
+    double cpu, base_cpu;      /* work_check cases: CPU seconds of the candidate's render and of the
+                                  baseline's, each as the kernel counted it (0: not judged) */
+    bool base_is_scan;         /* the baseline is the framework's linear scan (a student's own tree),
+                                  not the course's BVH (the autograder) */
     double noise;              /* noise_check cases: per-sample variance over the course's (0: not judged) */
     double score;
     char images[3][320];       /* candidate, reference, z-map PNGs, relative to the report folder */
@@ -159,6 +171,12 @@ void grade_score_note_test(grade_part_result *r, const char *name, bool passed);
 int grade_task_of(const grade_part_spec *p, const char *name);
 /* The whole grading's points, and its maximum in *max. */
 double grade_score_total(const grade_result *r, double *max);
+/* A case's figures beside its image, each true where the case does not judge it: the adaptive
+ * render's mean samples per pixel and its sample-rate map against the course's, and the render's
+ * CPU time against the baseline's (GRADE_WORK_FACTOR, GRADE_SCAN_FACTOR). */
+bool grade_case_spp_ok(const grade_case_result *c);
+bool grade_case_rate_ok(const grade_case_result *c);
+bool grade_case_work_ok(const grade_case_result *c);
 
 /* ---- running children ---------------------------------------------------------------------- */
 
@@ -206,6 +224,10 @@ double grade_score_total(const grade_result *r, double *max);
  * grade_msg: a message for a person, cut to fit with "..." at the end. */
 bool grade_path(char *out, size_t size, const char *format, ...) __attribute__((format(printf, 3, 4)));
 void grade_msg(char *out, size_t size, const char *format, ...) __attribute__((format(printf, 3, 4)));
+/* Text for Markdown (results.json's "md" outputs): the first len bytes of in (to its NUL), every
+ * character CommonMark could read as markup escaped with a backslash, cut to fit out (never inside a
+ * character, a backslash never left alone). A text escaped so shows as itself, whatever it holds. */
+void grade_md_escape(const char *in, size_t len, char *out, size_t size);
 
 /* What a child sends the grader on a descriptor of its own besides its log (a render's film): the
  * grader reads it while the child runs, into memory, never through a file the child could name. */
@@ -219,6 +241,8 @@ typedef struct {
 
 typedef struct {
     double wall_seconds;       /* kill the whole process group after this */
+    double deadline;           /* and at the latest at this clock_seconds() (the grading's deadline:
+                                  grade_env), 0 for none; a child never starts past it */
     const char *cwd;           /* run in this folder */
     const char *log_path;      /* stdout and stderr go here (a fresh file the grader writes, in a folder
                                   the child cannot write), cut at log_max bytes; NULL: discarded */
@@ -265,6 +289,8 @@ typedef struct {
     bool exited;               /* ended by exit(), not by a signal or the timeout */
     int status;                /* exit status when exited, else the signal */
     bool timed_out;
+    bool out_of_time;          /* timed out at the grading's deadline, not at the stage's own limit (or
+                                  not started: the deadline had passed) */
     bool output_cut;           /* it printed more than log_max */
     double seconds;            /* wall clock */
     double cpu_seconds;        /* user + system CPU time, the kernel's count (wait4), threads and
@@ -275,9 +301,11 @@ typedef struct {
 grade_run_result grade_run(char *const argv[], const grade_run_opts *o);
 /* Runs the n jobs (argv[i] with o[i]) two at a time, the machine's cores, each in a helper process
  * of its own that adopts its job's orphans (so a job's clean-up never touches the other), and fills
- * r[i]. Only jobs without a capture: a build's compiles and links. */
+ * r[i]. With stop_on_failure, no job starts after one failed (those read as not exited, status -1):
+ * a part's compile stops at its first file that fails, so a file that stalls its compile costs one
+ * compile's time, not one per file. Only jobs without a capture: a build's compiles and links. */
 #define GRADE_JOBS 2
-void grade_run_jobs(int n, char *const *const argv[], const grade_run_opts o[], grade_run_result r[]);
+void grade_run_jobs(int n, char *const *const argv[], const grade_run_opts o[], grade_run_result r[], bool stop_on_failure);
 /* Runs fn(arg, fd) in a forked child under o's limits and, with o->untrusted, the whole confinement
  * of an untrusted stage and the filter, installed before fn runs; the child never execs. For the
  * grader's own code reading hostile files (the object inspection): what fn writes to fd (the
@@ -290,6 +318,8 @@ grade_run_result grade_run_piped(char *const argv[], const grade_run_opts *o, in
 bool grade_pipe(int fds[2]);
 /* A one-line reason for a child that did not exit normally ("killed by signal 11", "timed out"). */
 void grade_run_describe(const grade_run_result *r, char *out, size_t size);
+/* The words for running out of the grading's time (r->out_of_time), the same everywhere. */
+#define GRADE_OUT_OF_TIME "the grading ran out of time (each part gets its share of the autograder's limit)"
 
 /* ---- one part -------------------------------------------------------------------------------- */
 
@@ -302,6 +332,9 @@ typedef struct {
     bool public_only;
     uint64_t seed;
     int threads;
+    double deadline;           /* clock_seconds() by which this part's grading must end (its share of
+                                  bin/grade --deadline), 0 for none: every stage's limit is the least
+                                  of its own and what is left (grade_run_opts.deadline) */
     grade_sandbox sandbox;     /* what containment this machine allows */
 } grade_env;
 

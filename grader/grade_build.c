@@ -53,13 +53,12 @@ static bool looks_like_code(const char *name)
     return n >= 2 && name[n - 2] == '.' && strchr("cChH", name[n - 1]);
 }
 
-/* A name as the student may see it again: their own, but only when it is short printable ASCII. */
-static const char *shown_name(const char *name)
+/* What a refused entry is, in words: its name is never quoted (a name is the student's choice, and
+ * results.json is Markdown that a course platform renders: a name holding markup would come back
+ * as markup), so the entry is described by kind. */
+static const char *entry_kind(const struct stat *st)
 {
-    size_t n = strlen(name);
-    for (size_t i = 0; i < n; i++)
-        if (name[i] < 0x20 || name[i] > 0x7E) return "a file whose name is not printable ASCII";
-    return n <= 80 ? name : "a file whose name is over 80 characters";
+    return S_ISDIR(st->st_mode) ? "a folder" : S_ISLNK(st->st_mode) ? "a symbolic link" : "a special file";
 }
 
 /* One entry of the part's folder: taken into m, passed over (*ignored: never read, never named to a
@@ -74,16 +73,15 @@ static bool manifest_entry(const char *dir, const char *folder, const char *name
     bool code = looks_like_code(name) && name[0] != '.';
     *ignored = false;
     if (!grade_path(path, sizeof path, "%s/%s", dir, name) || lstat(path, &st) != 0)
-        return grade_msg(why, size, "parts/%s/%s cannot be read", folder, shown_name(name)), false;
+        return grade_msg(why, size, "parts/%s holds an entry that cannot be read", folder), false;
     if (!code) return *ignored = true;
     if (!S_ISREG(st.st_mode))
-        return grade_msg(why, size, "parts/%s/%s is %s: submit the file itself", folder, shown_name(name),
-                         S_ISDIR(st.st_mode) ? "a folder" : S_ISLNK(st.st_mode) ? "a symbolic link" : "a special file"),
-               false;
+        return grade_msg(why, size, "parts/%s holds %s named like C code (.c or .h): submit the file itself",
+                         folder, entry_kind(&st)), false;
     if (!source_name(name))
-        return grade_msg(why, size, "parts/%s/%s: only files named with a-z, 0-9 and _ and ending in .c or .h (at most "
-                                    "%d characters) are built; rename it", folder, shown_name(name), GRADE_SOURCE_NAME),
-               false;
+        return grade_msg(why, size, "parts/%s holds a .c or .h file whose name has characters other than a-z, 0-9 and "
+                                    "_ (or more than %d of them): only files named so are built; rename it", folder,
+                         GRADE_SOURCE_NAME - 2), false;
     if (st.st_size > GRADE_SOURCE_BYTES)
         return grade_msg(why, size, "parts/%s/%s is over %ld KiB: a part's file is far smaller", folder, name,
                          GRADE_SOURCE_BYTES >> 10), false;
@@ -223,8 +221,10 @@ static bool out_of_memory(const char *log)
 static void build_verdict(const grade_run_result *rr, int n, const char *step, const char *name, double limit,
                           const char *log, grade_part_result *r)
 {
-    if (rr->timed_out) grade_msg(r->suite_reason, sizeof r->suite_reason, "part %d's build ran past %.0f s: the %s of %s",
-                                 n, limit, step, name);
+    if (rr->out_of_time) grade_msg(r->suite_reason, sizeof r->suite_reason, "part %d's build did not finish: %s (the %s "
+                                   "of %s)", n, GRADE_OUT_OF_TIME, step, name);
+    else if (rr->timed_out) grade_msg(r->suite_reason, sizeof r->suite_reason, "part %d's build ran past %.0f s: the %s of %s",
+                                      n, limit, step, name);
     else if (rr->output_cut)
         grade_msg(r->suite_reason, sizeof r->suite_reason, "part %d's build printed more than %d KiB: the %s of %s", n,
                   GRADE_LOG_MAX / 1024, step, name);
@@ -287,12 +287,12 @@ static bool compile_all(const grade_env *env, int n, const char *folder, const g
         for (int w = 0; tail[w]; w++) j->argv[argc++] = tail[w];
         j->argv[argc] = NULL;
         argvs[count] = j->argv;
-        opts[count] = (grade_run_opts){.wall_seconds = GRADE_COMPILE_SECONDS, .cwd = src, .log_path = j->log,
+        opts[count] = (grade_run_opts){.wall_seconds = GRADE_COMPILE_SECONDS, .deadline = env->deadline, .cwd = src, .log_path = j->log,
                                        .log_max = GRADE_LOG_MAX, .env = envv, .untrusted = env->submission != NULL,
                                        .compiler = true, .writable = out};
         count++;
     }
-    if (ok) grade_run_jobs(count, argvs, opts, results);
+    if (ok) grade_run_jobs(count, argvs, opts, results, true);
     for (int k = 0; ok && k < count; k++) {
         append_log(jobs[k].log, r->build_log);
         if (!results[k].exited || results[k].status != 0) {
@@ -428,10 +428,10 @@ static bool link_all(const grade_env *env, int n, const char *folder, const grad
             ok = (grade_msg(r->suite_reason, sizeof r->suite_reason, "the course's build recipes have no link of %s: the "
                             "course's problem, please tell the staff", bin), false);
         argvs[k] = links[k].argv;
-        opts[k] = (grade_run_opts){.wall_seconds = GRADE_LINK_SECONDS, .cwd = tree, .log_path = links[k].log,
+        opts[k] = (grade_run_opts){.wall_seconds = GRADE_LINK_SECONDS, .deadline = env->deadline, .cwd = tree, .log_path = links[k].log,
                                    .log_max = GRADE_LOG_MAX, .bounded = true};
     }
-    if (ok) grade_run_jobs(2, argvs, opts, results);
+    if (ok) grade_run_jobs(2, argvs, opts, results, false);
     for (int k = 0; ok && k < 2; k++) {
         append_log(links[k].log, r->build_log);
         if (!results[k].exited || results[k].status != 0) {
@@ -482,7 +482,7 @@ bool grade_build_submission(const grade_env *env, int n, const char *tree, grade
     /* The objects against the allow-list, before the linker reads them as the grader. */
     char work[4300], why[sizeof r->suite_reason];
     grade_path(work, sizeof work, "%s/part%d", env->work, n);
-    if (ok && !grade_inspect_part(tree, course, folder, n, work, GRADE_INSPECT_SECONDS, why, sizeof why))
+    if (ok && !grade_inspect_part(tree, course, folder, n, work, env->deadline, why, sizeof why))
         ok = (grade_msg(r->suite_reason, sizeof r->suite_reason, "%s", why), false);
     ok = ok && link_all(env, n, folder, &m, tree, r);
     if (!ok) grade_diagnostics(r->build_log, folder, GRADE_DIAG_LINES, r->build_output, sizeof r->build_output);

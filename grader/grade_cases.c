@@ -36,7 +36,7 @@ typedef struct { const char *name; char type; } member;
 static const member case_members[] = {
     {"name", 's'}, {"scene", 's'}, {"flags", 'a'}, {"resolution", 'a'}, {"samples", 'i'}, {"reference_samples", 'i'},
     {"reference_flags", 'a'}, {"points", 'n'}, {"visibility", 's'}, {"shows", 's'}, {"block_side", 'i'},
-    {"work_per_ray", 'b'}, {"statistic", 's'}, {"grazing", 'b'}, {"noise_check", 'b'}, {NULL, 0}};
+    {"work_check", 'b'}, {"statistic", 's'}, {"grazing", 'b'}, {"noise_check", 'b'}, {NULL, 0}};
 static const member part_members[] = {{"part", 'i'}, {"unit_points", 'n'}, {"unit_tests", 'i'}, {"unit_tasks", 'a'},
                                       {"cases", 'a'}, {NULL, 0}};
 static const member task_members[] = {{"task", 's'}, {"functions", 's'}, {"points", 'n'}, {"tests", 'i'}, {"match", 'a'},
@@ -56,8 +56,8 @@ static bool has_type(json_t *v, char type)
     }
 }
 
-/* Every member of obj is a known one of its type: a misspelt key ("work_per_rays") would otherwise be
- * ignored and the check it asks for skipped in silence, and "work_per_ray": "yes" read as false. */
+/* Every member of obj is a known one of its type: a misspelt key ("work_checks") would otherwise be
+ * ignored and the check it asks for skipped in silence, and "work_check": "yes" read as false. */
 static pl_status check_members(const char *path, const char *where, json_t *obj, const member *known, pl_diag *diag)
 {
     if (!json_is_object(obj)) return pl_fail(diag, PL_ERR_PARSE, "%s: %s: expected an object", path, where);
@@ -108,7 +108,7 @@ static pl_status read_case(const char *path, int part, json_t *j, grade_case *c,
     /* The verdict: points, block size, the optional checks and the statistic (grading/README.md). */
     c->points = json_number_value(json_object_get(j, "points"));
     c->block_side = (int)json_integer_value(json_object_get(j, "block_side"));
-    c->work_per_ray = json_is_true(json_object_get(j, "work_per_ray"));
+    c->work_check = json_is_true(json_object_get(j, "work_check"));
     c->noise_check = json_is_true(json_object_get(j, "noise_check"));
     const char *statistic = json_string_value(json_object_get(j, "statistic"));
     c->known_variance = statistic && !strcmp(statistic, "known_variance");

@@ -49,9 +49,9 @@ static const char *figure_cause(const grade_case_result *c, const char **words)
 {
     if (c->spec->noise_check && !(c->noise <= GRADE_NOISE_FACTOR))
         return *words = "noisier than the course's", "noisier";
-    if (c->course_spp > 0 && !(fabs(c->spp / c->course_spp - 1.0) <= GRADE_SPP_TOLERANCE))
-        return *words = "samples per pixel unlike the course's", "samples_per_pixel";
-    if (c->course_work > 0) return *words = "more work per ray than the course's BVH", "work";
+    if (!grade_case_spp_ok(c)) return *words = "samples per pixel unlike the course's", "samples_per_pixel";
+    if (!grade_case_rate_ok(c)) return *words = "samples spent unlike the course's (not adaptive)", "not_adaptive";
+    if (!grade_case_work_ok(c)) return *words = "slower than the course's BVH", "slow";
     return *words = "a figure of its render is off", "figure";
 }
 
@@ -112,14 +112,27 @@ static json_t *task_facts(const grade_part_result *p, int t)
                      "points", k->points, "score", p->task_score[t], "tests", k->tests, "passed", p->task_passed[t]);
 }
 
+/* The figures a case judges beside its image, each where it judges them (else null). */
+static json_t *figure_facts(const grade_case_result *c)
+{
+    bool work = c->spec->work_check && c->base_cpu > 0;
+    return json_pack("{s:o, s:o, s:o, s:o, s:o, s:o}", "noise", c->spec->noise_check ? number(c->noise) : json_null(),
+                     "samples_per_pixel", c->course_spp > 0 ? number(c->spp) : json_null(),
+                     "rate_map_distance", c->rate_distance >= 0 ? number(c->rate_distance) : json_null(),
+                     "cpu_seconds", work ? number(c->cpu) : json_null(),
+                     "baseline_cpu_seconds", work ? number(c->base_cpu) : json_null(),
+                     "baseline", work ? json_string(c->base_is_scan ? "linear scan" : "course") : json_null());
+}
+
 static json_t *case_facts(const grade_part_result *p, const grade_case_result *c)
 {
     const char *words, *cause = grade_case_cause(p, c, &words);
-    return json_pack("{s:o, s:b, s:f, s:f, s:b, s:b, s:b, s:o, s:o, s:o, s:o}", "name", text(c->spec->name),
+    return json_pack("{s:o, s:b, s:f, s:f, s:b, s:b, s:b, s:o, s:o, s:o, s:o, s:o}", "name", text(c->spec->name),
                      "hidden", c->spec->hidden, "points", c->spec->points, "score", c->score, "passed", c->pass,
                      "ran", c->ran, "rendered_twice", c->rendered_twice, "cause", text(cause),
                      "cause_words", text(cause ? words : NULL), "p_value", c->ran ? number(c->v.p_value) : json_null(),
-                     "mean_ratio", c->ran ? number(mean_ratio(&c->v)) : json_null());
+                     "mean_ratio", c->ran ? number(mean_ratio(&c->v)) : json_null(),
+                     "figures", c->ran ? figure_facts(c) : json_null());
 }
 
 /* One part: its score, its unit tests task by task and test by test, its cases. NULL when out of

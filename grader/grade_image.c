@@ -2,6 +2,7 @@
 #include "grade_image.h"
 #include "grade_figure.h"
 #include "grade_guard.h"
+#include "grade_rate.h"
 #include "grade_refs.h"
 #include "../framework/file.h"
 #include "../framework/image.h"
@@ -203,7 +204,8 @@ void grade_image_log_reason(const char *log, char *out, size_t size)
 static void render_failure(const grade_run_result *rr, const char *log, char *why, size_t size)
 {
     char reason[256];
-    if (rr->timed_out) grade_msg(why, size, "the render ran past its %d s", GRADE_RENDER_SECONDS);
+    if (rr->out_of_time) grade_msg(why, size, "the render did not finish: %s", GRADE_OUT_OF_TIME);
+    else if (rr->timed_out) grade_msg(why, size, "the render ran past its %d s", GRADE_RENDER_SECONDS);
     else if (rr->exited && (grade_image_log_reason(log, reason, sizeof reason), reason[0]))
         grade_msg(why, size, "the render stopped with an error: %s", reason);
     else if (rr->exited) grade_msg(why, size, "the render exited with an error status (its log says why)");
@@ -214,11 +216,59 @@ static void render_failure(const grade_run_result *rr, const char *log, char *wh
     else grade_msg(why, size, "the render was killed by a signal (an abort, a crash or a kill)");
 }
 
+/* One render of case k by program bin at `seed`, its film streamed to the grader (into film_pipe)
+ * and its log written by the grader; with no_bvh, through the framework's linear scan. Contained as
+ * student code is when the grading is a submission's and the program is not the course's own
+ * (course: the grader's user, bounded, in the grader's own folder). */
+static grade_run_result render_once(const grade_env *env, const char *bin, const char *cwd, const char *scene,
+                                    const grade_case *k, bool no_bvh, bool course, const char *log,
+                                    grade_capture *film_pipe)
+{
+    char *argv[GRADE_MAX_FLAGS + 17];
+    grade_case_text text;
+    grade_case_command(k, bin, scene, NULL, env->seed, env->threads, &text, argv);
+    if (no_bvh) {  /* the flag after the program's name; the rest shifted along, NULL included */
+        int n = 0;
+        while (argv[n]) n++;
+        memmove(argv + 2, argv + 1, (size_t)n * sizeof *argv);
+        argv[1] = "--no-bvh";
+    }
+    *film_pipe = (grade_capture){.child_fd = GRADE_FILM_FD, .max = GRADE_FILM_MAX};
+    grade_run_opts o = {.wall_seconds = GRADE_RENDER_SECONDS, .deadline = env->deadline, .cwd = cwd, .log_path = log,
+                        .log_max = GRADE_LOG_MAX, .untrusted = env->submission != NULL && !course, .bounded = course,
+                        .capture = film_pipe};
+    return grade_run(argv, &o);
+}
+
+/* The work check's baseline: the CPU time of the case rendered where no student code runs, the
+ * least of GRADE_BASELINE_RUNS renders (a busy machine only ever adds time). Grading a submission,
+ * the course's own renderer with its part 2 (built before any student file was read); in a
+ * student's own tree, which holds no course part 2, their renderer through the framework's linear
+ * scan, which calls no part 2 code. 0 when a render failed. */
+#define GRADE_BASELINE_RUNS 2
+static double baseline_cpu(const grade_env *env, const char *tree, int part, const char *scene, grade_case_result *c)
+{
+    char bin[4200], cwd[4200], log[4200];
+    c->base_is_scan = env->submission == NULL;
+    if (c->base_is_scan) grade_path(cwd, sizeof cwd, "%s", tree);
+    else grade_path(cwd, sizeof cwd, "%s/course", env->work);
+    grade_path(bin, sizeof bin, "%s/bin/pathtracer", cwd);
+    grade_path(log, sizeof log, "%s/part%d/%s.baseline.log", env->work, part, c->spec->name);
+    double best = 0.0;
+    for (int run = 0; run < GRADE_BASELINE_RUNS; run++) {
+        grade_capture film_pipe;
+        grade_run_result rr = render_once(env, bin, cwd, scene, c->spec, c->base_is_scan, !c->base_is_scan, log, &film_pipe);
+        free(film_pipe.data);
+        if (!rr.exited || rr.status != 0) return 0.0;
+        if (run == 0 || rr.cpu_seconds < best) best = rr.cpu_seconds;
+    }
+    return best;
+}
+
 /* The candidate's render, in a child: the student's code never runs in the grader's process, and
- * its film comes back through a pipe, checked for shape, into out (counts: the framework's counters
- * as the render's process reported them). False with c->reason. */
-static bool render_candidate(const grade_env *env, const char *tree, int part, grade_case_result *c, film *out,
-                             output_film_counts *counts)
+ * its film comes back through a pipe, checked for shape, into out; a work_check case also measures
+ * the baseline's CPU time and the candidate's. False with c->reason. */
+static bool render_candidate(const grade_env *env, const char *tree, int part, grade_case_result *c, film *out)
 {
     const grade_case *k = c->spec;
     char log[4096], bin[4096], scene[4096];
@@ -229,18 +279,25 @@ static bool render_candidate(const grade_env *env, const char *tree, int part, g
         grade_msg(c->reason, sizeof c->reason, "the course's scene: %s", diag.error);
         return false;
     }
-    char *argv[GRADE_MAX_FLAGS + 16];
-    grade_case_text text;
-    grade_case_command(k, bin, scene, NULL, env->seed, env->threads, &text, argv);
-    grade_capture film_pipe = {.child_fd = GRADE_FILM_FD, .max = GRADE_FILM_MAX};
-    grade_run_opts o = {.wall_seconds = GRADE_RENDER_SECONDS, .cwd = tree, .log_path = log, .log_max = GRADE_LOG_MAX,
-                        .untrusted = env->submission != NULL, .capture = &film_pipe};
-    grade_run_result rr = grade_run(argv, &o);
+    if (k->work_check) c->base_cpu = baseline_cpu(env, tree, part, scene, c);
+    grade_capture film_pipe;
+    grade_run_result rr = render_once(env, bin, tree, scene, k, false, false, log, &film_pipe);
+    c->cpu = rr.cpu_seconds;
+    /* A slow candidate is measured once more: its best time counts, as the baseline's does. */
+    if (k->work_check && rr.exited && rr.status == 0 && c->base_cpu > 0 && !grade_case_work_ok(c)) {
+        grade_capture again;
+        char log2[4200];
+        grade_path(log2, sizeof log2, "%s.again", log);
+        grade_run_result r2 = render_once(env, bin, tree, scene, k, false, false, log2, &again);
+        free(again.data);
+        if (r2.exited && r2.status == 0 && r2.cpu_seconds < c->cpu) c->cpu = r2.cpu_seconds;
+    }
     drop_scene_copy(k, scene);
+    output_film_counts counts;  /* the render's own word about its work: never read */
     bool ok = rr.exited && rr.status == 0;
     if (!ok) render_failure(&rr, log, c->reason, sizeof c->reason);
     else if (film_pipe.overflow || output_film_receive(film_pipe.data, (size_t)film_pipe.len, k->width, k->height, out,
-                                                       counts, &diag) != PL_OK) {
+                                                       &counts, &diag) != PL_OK) {
         grade_msg(c->reason, sizeof c->reason, "the render sent no usable film: %s",
                  film_pipe.overflow ? "it sent more than any film of the case takes" : diag.error);
         ok = false;
@@ -281,86 +338,104 @@ static void write_candidate_exr(const grade_env *env, int part, const grade_case
     if (out) fclose(out);
 }
 
-/* The course's figures: an adaptive part 5 must spend about the samples the course's does (one
- * that never stops renders the reference's image at full cost), and a part 2 BVH may do at most
- * GRADE_WORK_FACTOR times the course's work per ray (a degenerate tree, or none, loses its speed
- * points). Both figures are the candidate process's word (its film's counts, its counters). */
-static bool figures_ok(const char *ref, const grade_case *k, double cand_n, const output_film_counts *counts,
-                       grade_case_result *c)
+/* The course's figures, each from the candidate's film or from what the kernel measured of its
+ * render, never from what the render's process says of itself (grading/README.md lists them):
+ * - an adaptive part 5 spends about the samples the course's does (one that never stops renders the
+ *   reference's image at full cost) and where the course's does: its sample-rate map, block by
+ *   block (grade_rate.h: a fixed count is not adaptive, however close its mean);
+ * - a part 2 BVH saves work: its render's CPU time at most GRADE_WORK_FACTOR times the course's own
+ *   part's (a degenerate tree, a tree the traversal ignores, or none, loses its points). */
+static bool figures_ok(const char *ref, const grade_case *k, const film *f, double cand_n, grade_case_result *c)
 {
-    double course_spp = 0, course_work = 0;
+    grade_course_figures *course = malloc(sizeof *course);  /* a map of blocks: not for the stack */
     pl_diag diag = pl_diag_default();
-    bool ok = grade_refs_figures(ref, k, &course_spp, &course_work, &diag) == PL_OK;  /* checked before grading */
-    if (!ok) grade_msg(c->reason, sizeof c->reason, "the course's reference: %s", diag.error);
-    if (adaptive_case(k) && course_spp > 0) {
+    bool ok = course && grade_refs_figures(ref, k, course, &diag) == PL_OK;  /* checked before grading */
+    if (!ok) grade_msg(c->reason, sizeof c->reason, "the course's reference: %s", course ? diag.error : "out of memory");
+    c->rate_distance = -1.0;
+    if (ok && adaptive_case(k)) {
+        grade_rate_map *map = malloc(sizeof *map);
         c->spp = cand_n;
-        c->course_spp = course_spp;
-        ok = fabs(cand_n / course_spp - 1.0) <= GRADE_SPP_TOLERANCE;
+        c->course_spp = course->spp;
+        if (map) grade_rate_map_of(f, map);
+        c->rate_distance = map ? grade_rate_map_distance(map, &course->map) : INFINITY;
+        ok = grade_case_spp_ok(c) && grade_case_rate_ok(c);
+        free(map);
     }
-    if (k->work_per_ray && course_work > 0) {
-        c->work = counts->rays > 0 ? (double)(counts->node_visits + counts->prim_tests) / (double)counts->rays : -1.0;
-        c->course_work = course_work;
-        ok = ok && c->work >= 0 && c->work <= GRADE_WORK_FACTOR * course_work;
-    }
+    if (ok && k->work_check) ok = grade_case_work_ok(c);
+    free(course);
     return ok;
 }
 
-/* The GRADE_TRACE_PIXELS pixels that do not see an emitter and whose luminance differs most from the
- * reference's, as lines
- * "pixel (x, y) ...: bin/pathtracer <the case's flags> --trace-pixel x y <scene>" with x, y from
- * the bottom-left: the command replays exactly the samples the render took of that pixel. */
+/* The pixels to trace: one in each of the GRADE_TRACE_PIXELS blocks that differ most by their
+ * statistic (the verdict's |t| or z, not the raw difference, which follows the noise: the bright
+ * blocks are the noisy ones), each the pixel of its block that differs most for its noise and does
+ * not see an emitter. As lines "pixel (x, y) ...: bin/pathtracer <the case's flags> --trace-pixel x y
+ * <scene>", x and y from the bottom-left: the command replays exactly the samples the render took. */
 #define GRADE_TRACE_PIXELS 3
-/* Keeps the GRADE_TRACE_PIXELS best scores in order, with their pixels and differences. */
-static void rank_pixel(int *best, float *diff, float *scores, float score, long i, float d)
+
+/* The blocks of v by their largest |t| over the channels, the largest first, into best (up to n). */
+static int worst_blocks(const verdict *v, int *best, int n)
 {
-    for (int j = 0; j < GRADE_TRACE_PIXELS; j++)
-        if (score > scores[j]) {  /* insert at j, shifting the lower ones down */
-            memmove(&scores[j + 1], &scores[j], (GRADE_TRACE_PIXELS - 1 - j) * sizeof *scores);
-            memmove(&diff[j + 1], &diff[j], (GRADE_TRACE_PIXELS - 1 - j) * sizeof *diff);
-            memmove(&best[j + 1], &best[j], (GRADE_TRACE_PIXELS - 1 - j) * sizeof *best);
-            scores[j] = score, diff[j] = d, best[j] = (int)i;
-            return;
+    int found = 0;
+    float top[GRADE_TRACE_PIXELS];
+    for (int b = 0; b < v->blocks_x * v->blocks_y; b++) {
+        float t = fmaxf(fabsf(v->t[3 * b]), fmaxf(fabsf(v->t[3 * b + 1]), fabsf(v->t[3 * b + 2])));
+        if (!(t > 0.0f) || (found == n && t <= top[n - 1])) continue;
+        int at = found < n ? found++ : n - 1;  /* a new entry, or the smallest one replaced */
+        top[at] = t, best[at] = b;
+        for (; at > 0 && top[at - 1] < top[at]; at--) {  /* bubbled up to its place */
+            float tt = top[at]; top[at] = top[at - 1], top[at - 1] = tt;
+            int bb = best[at]; best[at] = best[at - 1], best[at - 1] = bb;
         }
+    }
+    return found;
+}
+
+/* In block b of the image, the pixel that differs most for the noise its mean should have there (the
+ * reference's per-sample variance at the candidate's samples), passing over those that see an
+ * emitter (within a quarter of the reference's brightest: their value is the light's own Le, which
+ * shows little of the student's estimator); a NaN pixel first. -1 when none. */
+static long block_pixel(const grade_case *k, const verdict *v, int b, const image *cand, const image *ref,
+                        const image *refvar, float brightest, float *diff)
+{
+    int bx = b % v->blocks_x, by = b / v->blocks_x, w = cand->width, h = cand->height;
+    bool have_var = refvar && refvar->pixels && refvar->width == w && refvar->height == h;
+    long best = -1;
+    float score = -1.0f;
+    for (int y = by * h / v->blocks_y; y < (by + 1) * h / v->blocks_y; y++)
+        for (int x = bx * w / v->blocks_x; x < (bx + 1) * w / v->blocks_x; x++) {
+            long i = (long)y * w + x;
+            float d = fabsf(rgb_luminance(cand->pixels[i]) - rgb_luminance(ref->pixels[i]));
+            if (!(d >= 0.0f)) return *diff = d, i;
+            if (rgb_luminance(ref->pixels[i]) > 0.25f * brightest) continue;
+            double sd = have_var ? sqrt(fmax(0.0, (double)rgb_luminance(refvar->pixels[i])) * k->reference_samples /
+                                        k->samples) : 0.0;
+            float s = (float)(d / (sd + 1e-3));
+            if (s > score) score = s, best = i, *diff = d;
+        }
+    return best;
 }
 
 static void point_at_pixels(const grade_env *env, const grade_case *k, const image *cand, const image *ref,
                             const image *refvar, grade_case_result *c)
 {
-    int best[GRADE_TRACE_PIXELS];
-    float diff[GRADE_TRACE_PIXELS], scores[GRADE_TRACE_PIXELS];
-    for (int i = 0; i < GRADE_TRACE_PIXELS; i++) best[i] = -1, diff[i] = scores[i] = -1.0f;
-    long n = (long)cand->width * cand->height;
-    /* Pixels that see an emitter directly (within a quarter of the reference's brightest) are passed
-     * over: their value is mostly the light's own Le, so a trace there shows the emitter and little
-     * of the student's estimator, and their difference is the emitter's edge noise. */
+    if (cand->width != ref->width || cand->height != ref->height || !c->v.t) return;
     float brightest = 0.0f;
-    for (long i = 0; i < n && cand->width == ref->width && cand->height == ref->height; i++)
+    for (long i = 0; i < (long)ref->width * ref->height; i++)
         if (isfinite(rgb_luminance(ref->pixels[i]))) brightest = fmaxf(brightest, rgb_luminance(ref->pixels[i]));
-    bool have_var = refvar && refvar->pixels && refvar->width == ref->width && refvar->height == ref->height;
-    for (long i = 0; i < n && cand->width == ref->width && cand->height == ref->height; i++) {
-        float d = fabsf(rgb_luminance(cand->pixels[i]) - rgb_luminance(ref->pixels[i]));
-        if (!(d >= 0.0f)) {  /* a NaN pixel differs most */
-            rank_pixel(best, diff, scores, INFINITY, i, d);
-            continue;
-        }
-        if (rgb_luminance(ref->pixels[i]) > 0.25f * brightest) continue;
-        /* Ranked by |t|, the difference over the noise the candidate's mean should have there (the
-         * reference's per-sample variance at the candidate's samples), so that the edge of an
-         * emitter, where a few samples decide the value, is not taken for a bug. */
-        double sd = have_var ? sqrt(fmax(0.0, (double)rgb_luminance(refvar->pixels[i])) * k->reference_samples /
-                                    k->samples) : 0.0;
-        rank_pixel(best, diff, scores, (float)(d / (sd + 1e-3)), i, d);
-    }
     char flags[512] = "";
     for (int f = 0, len = 0; f < k->num_flags && len < (int)sizeof flags; f++)
         len += snprintf(flags + len, sizeof flags - len, "%s ", k->flags[f]);
-    int len = 0;
-    for (int j = 0; j < GRADE_TRACE_PIXELS && best[j] >= 0 && len < (int)sizeof c->trace; j++) {
-        int x = grade_figure_pixel(best[j] % cand->width, k->width);
-        int y = grade_figure_pixel(cand->height - 1 - best[j] / cand->width, k->height);
+    int blocks[GRADE_TRACE_PIXELS], n = worst_blocks(&c->v, blocks, GRADE_TRACE_PIXELS), len = 0;
+    for (int j = 0; j < n && len < (int)sizeof c->trace; j++) {
+        float diff = 0.0f;
+        long i = block_pixel(k, &c->v, blocks[j], cand, ref, refvar, brightest, &diff);
+        if (i < 0) continue;
+        int x = grade_figure_pixel((int)(i % cand->width), k->width);
+        int y = grade_figure_pixel(cand->height - 1 - (int)(i / cand->width), k->height);
         len += snprintf(c->trace + len, sizeof c->trace - len,
                         "pixel (%d, %d), luminance off by %.3g: bin/pathtracer %s-r %d %d -s %d --seed %llu "
-                        "--trace-pixel %d %d %s\n", x, y, grade_figure((double)diff[j], GRADE_FIGURE_DIGITS, 0.0,
+                        "--trace-pixel %d %d %s\n", x, y, grade_figure((double)diff, GRADE_FIGURE_DIGITS, 0.0,
                         GRADE_RATIO_MAX), flags, k->width, k->height, k->samples, (unsigned long long)env->seed, x, y,
                         k->scene);
     }
@@ -384,7 +459,7 @@ static void write_pictures(const grade_env *env, int part, grade_case_result *c,
 
 /* The verdict, in this process, from the film the grader received and the course's reference. */
 static void judge(const grade_env *env, const grade_spec *spec, int part, const char *ref, const image *refimg,
-                  const image *refvar, const film *f, const output_film_counts *counts, grade_case_result *c)
+                  const image *refvar, const film *f, grade_case_result *c)
 {
     const grade_case *k = c->spec;
     image cand = {0}, candvar = {0};
@@ -414,7 +489,7 @@ static void judge(const grade_env *env, const grade_spec *spec, int part, const 
     if (verdict_compute(&vc, &vr, &vp, &c->v, &diag) != PL_OK) grade_msg(c->reason, sizeof c->reason, "%s", diag.error);
     else {
         c->ran = true;
-        bool figures = figures_ok(ref, k, cand_n, counts, c);
+        bool figures = figures_ok(ref, k, f, cand_n, c);
         if (k->noise_check) {  /* as noisy as the course's render, not more (verdict_noise_ratio) */
             c->noise = verdict_noise_ratio(&vc, &vr, k->samples, k->reference_samples);
             figures = figures && c->noise <= GRADE_NOISE_FACTOR;
@@ -433,11 +508,10 @@ static void render_and_judge(const grade_env *env, const grade_spec *spec, const
                              const image *refimg, const image *refvar, grade_case_result *c)
 {
     film f = {0};
-    output_film_counts counts;
     c->seed = env->seed;
-    if (render_candidate(env, tree, part, c, &f, &counts)) {
+    if (render_candidate(env, tree, part, c, &f)) {
         write_candidate_exr(env, part, c->spec, &f);
-        judge(env, spec, part, ref, refimg, refvar, &f, &counts, c);
+        judge(env, spec, part, ref, refimg, refvar, &f, c);
     }
     film_free(&f);
 }

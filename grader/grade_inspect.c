@@ -443,10 +443,10 @@ bool grade_inspect_course_add_names(grade_inspect_course *c, const char *path)
 static void reference_text(const grade_inspect_verdict *v, const grade_inspect_course *c, char *out, size_t size)
 {
     if (grade_names_has(&c->library, v->name))
-        grade_msg(out, size, "calls `%s`, a C library function part code may not use (handout/README.md, \"What "
+        grade_msg(out, size, "calls '%s', a C library function part code may not use (handout/README.md, \"What "
                   "your part may call\", lists what it may)", v->name);
     else if (grade_names_has(&c->program, v->name))
-        grade_msg(out, size, "calls `%s`, a framework function part code may not call (its declaration has no "
+        grade_msg(out, size, "calls '%s', a framework function part code may not call (its declaration has no "
                   "PL_PART_API: it is the framework's own)", v->name);
     else
         grade_msg(out, size, "refers to a name that is on no list of what part code may call and that no other file "
@@ -456,10 +456,10 @@ static void reference_text(const grade_inspect_verdict *v, const grade_inspect_c
 static void redefinition_text(const grade_inspect_verdict *v, const grade_inspect_course *c, char *out, size_t size)
 {
     if (grade_names_has(&c->library, v->name))
-        grade_msg(out, size, "defines `%s`, which a library of the program already defines: part code may not replace "
+        grade_msg(out, size, "defines '%s', which a library of the program already defines: part code may not replace "
                   "library functions (rename it, or make it static)", v->name);
     else if (grade_names_has(&c->program, v->name))
-        grade_msg(out, size, "defines `%s`, which the framework or another part already defines (rename it, or make "
+        grade_msg(out, size, "defines '%s', which the framework or another part already defines (rename it, or make "
                   "it static)", v->name);
     else grade_msg(out, size, "defines a name the framework or a library already defines (rename it, or make it static)");
 }
@@ -652,7 +652,7 @@ static int part_files(const char *tree, const char *folder, char names[][300], c
 }
 
 bool grade_inspect_part(const char *tree, const char *course, const char *folder, int n, const char *work,
-                        double seconds, char *why, size_t size)
+                        double deadline, char *why, size_t size)
 {
     static char names[MAX_OBJECTS][300], objects[MAX_OBJECTS][4400], deps[MAX_OBJECTS][4400], own[MAX_OBJECTS][4400];
     const char *shown[MAX_OBJECTS], *own_list[MAX_OBJECTS + 1];
@@ -674,13 +674,14 @@ bool grade_inspect_part(const char *tree, const char *course, const char *folder
      * back one fixed-size verdict. */
     grade_capture cap = {.child_fd = 3, .max = sizeof(grade_inspect_verdict)};
     grade_path(log, sizeof log, "%s/inspect.log", work);
-    grade_run_opts o = {.wall_seconds = seconds, .log_path = log, .log_max = GRADE_LOG_MAX, .untrusted = true,
+    grade_run_opts o = {.wall_seconds = GRADE_INSPECT_SECONDS, .deadline = deadline, .log_path = log, .log_max = GRADE_LOG_MAX, .untrusted = true,
                         .capture = &cap};
     grade_run_result rr = grade_run_function(inspect_child, &in, &o);
     grade_inspect_verdict v;
     bool ok = rr.exited && rr.status == 0 && verdict_received(&cap, in.count, &v);
     if (!ok) grade_msg(why, size, "parts/%s: its objects could not be inspected (%s)", folder,
-                      rr.timed_out ? "the inspection ran out of time" : "the inspection stopped");
+                      rr.out_of_time ? GRADE_OUT_OF_TIME : rr.timed_out ? "the inspection ran out of time"
+                                                                        : "the inspection stopped");
     else if (v.code != GRADE_INSPECT_OK) {
         grade_inspect_describe(&v, &c, shown, why, size);
         ok = false;

@@ -89,11 +89,12 @@ void grade_inspect_describe(const grade_inspect_verdict *v, const grade_inspect_
 /* Inspects the objects the build made from the .c files of parts/<folder> in the tree (built
  * without LTO), before anything is linked from them, with its logs in work (a folder the child
  * cannot write): the files the compiler read (its dependency files), then the objects, in a child
- * confined as an untrusted stage (grade_run_function), within `seconds`. The course's names come
+ * confined as an untrusted stage (grade_run_function), within GRADE_INSPECT_SECONDS and the grading's
+ * deadline (clock_seconds(), 0 for none). The course's names come
  * from course (its built tree): its bin/subject-part<n> and its own objects of the part. True when
  * every object keeps to the allow-list; otherwise false with why = "parts/<folder>/<file>: <what>". */
 bool grade_inspect_part(const char *tree, const char *course, const char *folder, int n, const char *work,
-                        double seconds, char *why, size_t size);
+                        double deadline, char *why, size_t size);
 
 /* The files the compiler read for one object (its dependency file dep_file), each the part's own
  * (parts/<folder>/), a framework header or a part's header; false with what = why not. */

@@ -35,7 +35,7 @@ static void seam_message(const char *log, char *out, size_t size)
 /* The subject, in a helper process (grade_run waits for its child, and the judge must read at the
  * same time): the submission's code, contained, its records on fd 3, its output in its log only. */
 static pid_t start_subject(const char *tree, int n, const char *name, const char *dir, int k, int record_fd,
-                           int judge_fd)
+                           int judge_fd, double deadline)
 {
     pid_t helper = fork();
     if (helper != 0) return helper;
@@ -50,7 +50,7 @@ static pid_t start_subject(const char *tree, int n, const char *name, const char
     grade_path(log, sizeof log, "%s/subject-%d.log", dir, k);
     grade_path(filter, sizeof filter, "PL_TEST_FILTER=%s", name);
     char *envv[] = {filter, "PL_SEAM_FD=3", NULL}, *argv[] = {bin, NULL};
-    grade_run_opts o = {.wall_seconds = GRADE_TEST_SECONDS, .cwd = tree, .log_path = log, .log_max = GRADE_LOG_MAX,
+    grade_run_opts o = {.wall_seconds = GRADE_TEST_SECONDS, .deadline = deadline, .cwd = tree, .log_path = log, .log_max = GRADE_LOG_MAX,
                         .env = envv, .untrusted = true};
     grade_run_piped(argv, &o, 0, record_fd);
     _exit(0);
@@ -69,12 +69,12 @@ static void run_test(const grade_env *env, const char *tree, const char *judge, 
     int fds[2];
     grade_run_result rr = {.status = -1};
     if (grade_pipe(fds)) {
-        pid_t helper = start_subject(tree, n, name, dir, k, fds[1], fds[0]);
+        pid_t helper = start_subject(tree, n, name, dir, k, fds[1], fds[0], env->deadline);
         close(fds[1]);
         char *envv[] = {filter, "PL_SEAM_FD=0", "CMOCKA_MESSAGE_OUTPUT=xml", xml_env, NULL}, *argv[] = {(char *)judge, NULL};
         /* The judge is the course's code, but it parses what the subject sent: bounded like it. */
-        grade_run_opts o = {.wall_seconds = GRADE_JUDGE_SECONDS, .cwd = env->root, .log_path = log,
-                            .log_max = GRADE_LOG_MAX, .env = envv, .bounded = true};
+        grade_run_opts o = {.wall_seconds = GRADE_JUDGE_SECONDS, .deadline = env->deadline, .cwd = env->root,
+                            .log_path = log, .log_max = GRADE_LOG_MAX, .env = envv, .bounded = true};
         if (helper > 0) rr = grade_run_piped(argv, &o, fds[0], 0);
         close(fds[0]);
         if (helper > 0) waitpid(helper, NULL, 0);
@@ -90,6 +90,7 @@ static void run_test(const grade_env *env, const char *tree, const char *judge, 
     r->tests_run = run + 1;
     r->tests_failed = failed + 1;
     if (rr.exited && rr.status == JUDGE_SEAM_STATUS) seam_message(log, why, sizeof why);
+    else if (rr.out_of_time) grade_msg(why, sizeof why, "did not finish: %s", GRADE_OUT_OF_TIME);
     else {
         char how[128];
         grade_run_describe(&rr, how, sizeof how);
@@ -98,6 +99,18 @@ static void run_test(const grade_env *env, const char *tree, const char *judge, 
     snprintf(line, sizeof line, "- `%s`: %s\n", name, why);
     size_t len = strlen(r->failures);
     if (len + 1 < sizeof r->failures) snprintf(r->failures + len, sizeof r->failures - len, "%s", line);
+}
+
+/* The tests of list from `from` on, failed as not run, with why (the grader's words). */
+static void not_run(const grade_test_list *list, int from, const char *why, grade_part_result *r)
+{
+    for (int i = from; i < list->count; i++) {
+        grade_score_note_test(r, list->names[i], false);
+        r->tests_run++, r->tests_failed++;
+        size_t len = strlen(r->failures);
+        if (len + 1 < sizeof r->failures)
+            snprintf(r->failures + len, sizeof r->failures - len, "- `%s`: did not run: %s\n", list->names[i], why);
+    }
 }
 
 void grade_judge_suite(const grade_env *env, const char *tree, const grade_part_spec *p, grade_part_result *r)
@@ -129,11 +142,15 @@ void grade_judge_suite(const grade_env *env, const char *tree, const grade_part_
                  "%d: the course's problem, please tell the staff", list.count, p->unit_tests);
         return;
     }
+    /* The suite's own limit, or the grading's deadline: the tests left then fail as not run, and the
+     * tasks whose tests all finished keep their shares. */
     double t0 = clock_seconds();
     for (int k = 0; k < list.count; k++) {
-        if (clock_seconds() - t0 > GRADE_SUITE_SECONDS) {
-            grade_msg(r->suite_reason, sizeof r->suite_reason, "the suite ran past %d s (%d of %d tests run)", GRADE_SUITE_SECONDS,
-                     k, list.count);
+        bool suite_over = clock_seconds() - t0 > GRADE_SUITE_SECONDS;
+        bool no_time = env->deadline > 0 && clock_seconds() >= env->deadline;
+        if (suite_over || no_time) {
+            not_run(&list, k, suite_over ? "the part's tests ran past their time together"
+                                                               : GRADE_OUT_OF_TIME, r);
             break;
         }
         run_test(env, tree, judge, p->part, list.names[k], dir, k, r);

@@ -1,11 +1,14 @@
 /* Grader machinery: not part of any assignment.
- * bin/grade [--submission DIR] [--public] [--out DIR] [--seed N] [--threads N] [--parts 1,3]
+ * bin/grade [--submission DIR] [--public] [--out DIR] [--seed N] [--threads N] [--parts 1,3] [--deadline S]
  * bin/grade --calibrate N [--parts ...] [--cases name,name]
  * bin/grade --prebuild   build the course's objects ahead of time (setup.sh), for every grading to reuse
  * bin/grade --handout write|check   the grading tables of handout/part<N>.md from grading/cases.json
  *   --submission DIR  grade DIR/parts/ part by part, each among the solution's other parts (autograder);
  *                     without it, grade this tree as it is, public cases only (a student's make grade)
  *   --out DIR         where results.json, the report (DIR/report/index.html) and scratch go (out/grade)
+ *   --deadline S      the whole grading ends within S seconds of the start (the autograder passes its own
+ *                     limit, less the time it needs after): every stage's limit is the least of its own
+ *                     and what is left of its part's share; what ran out says so, what finished counts
  *   --calibrate N     render every case of this tree N times with fresh seeds and print, per case, how
  *                     often its first render failed beside the alpha it claims, how often the case
  *                     failed (its second render too), and the deciles of the first render's p-values
@@ -37,7 +40,7 @@
 static int usage(const char *msg)
 {
     fprintf(stderr, "grade: %s\nusage: grade [--submission DIR] [--public] [--out DIR] [--seed N] [--threads N] [--prebuild] "
-                    "[--parts 1,2,...]\n       grade --calibrate N [--parts 1,2,...] [--cases name,...]\n       grade --handout write|check\n", msg);
+                    "[--parts 1,2,...] [--deadline S]\n       grade --calibrate N [--parts 1,2,...] [--cases name,...]\n       grade --handout write|check\n", msg);
     return 2;
 }
 
@@ -63,6 +66,16 @@ static bool name_listed(const char *names, const char *name)
     return false;
 }
 
+/* The smallest and largest of a figure over the runs (NaN and negative values, "not judged", left out). */
+typedef struct { double min, max; } figure_range;
+
+static void range_add(figure_range *r, double x)
+{
+    if (!(x >= 0)) return;
+    if (x < r->min) r->min = x;
+    if (x > r->max) r->max = x;
+}
+
 static int calibrate(const grade_env *base, const grade_spec *spec, const char *parts, const char *cases, int runs)
 {
     int worst = 0;
@@ -78,7 +91,7 @@ static int calibrate(const grade_env *base, const grade_spec *spec, const char *
         for (int i = 0; i < p->num_cases; i++) {
             if (!name_listed(cases, p->cases[i].name)) continue;
             int failures = 0, confirmed = 0, decile[10] = {0};
-            double noise_min = INFINITY, noise_max = 0.0;  /* noise_check cases: the range over the runs */
+            figure_range noise = {INFINITY, 0}, rate = {INFINITY, 0}, work = {INFINITY, 0};
             for (int run = 0; run < runs; run++) {
                 grade_env env = *base;
                 env.seed = fresh_seed();
@@ -102,16 +115,22 @@ static int calibrate(const grade_env *base, const grade_spec *spec, const char *
                                     "shows it\n", p->part, c.spec->name, (unsigned long long)env.seed, first_p,
                             c.pass ? ", its second render passes" : c.rendered_twice ? ", its second render too" : "",
                             p->part, (unsigned long long)env.seed);
-                noise_max = c.noise > noise_max ? c.noise : noise_max;
-                noise_min = c.noise < noise_min ? c.noise : noise_min;
+                range_add(&noise, c.noise);
+                range_add(&rate, c.rate_distance);
+                range_add(&work, c.base_cpu > 0 ? c.cpu / c.base_cpu : NAN);
                 decile[first_p >= 1.0 ? 9 : (int)(first_p * 10)]++;
                 verdict_free(&c.v);
             }
             printf("part%d/%-22s %6d %9d %9d %8.0e ", p->part, p->cases[i].name, runs, failures, confirmed,
                    spec->family_alpha);
             for (int d = 0; d < 10; d++) printf(" %3d", decile[d]);
-            if (p->cases[i].noise_check) printf("   noise ratio %.3f to %.3f (limit %.2f)", noise_min, noise_max,
-                                                   GRADE_NOISE_FACTOR);
+            if (p->cases[i].noise_check)
+                printf("   noise ratio %.3f to %.3f (limit %.2f)", noise.min, noise.max, GRADE_NOISE_FACTOR);
+            if (rate.max > 0)
+                printf("   rate map distance %.3f to %.3f (limit %.2f)", rate.min, rate.max, GRADE_RATE_TOLERANCE);
+            if (p->cases[i].work_check)  /* a tree's own grading: against the framework's linear scan */
+                printf("   CPU time over the linear scan's %.4f to %.4f (limit %.4f)", work.min, work.max,
+                       1.0 / GRADE_SCAN_FACTOR);
             printf("\n");
             fflush(stdout);
             worst = confirmed > worst ? confirmed : worst;
@@ -247,14 +266,22 @@ static bool setup_ok(const grade_env *env, const char *outdir, const char *parts
 }
 
 /* Grades the parts listed in `parts` into result; the staff log gets one line a part. */
+/* Each part in turn. Under a deadline (--deadline), each gets an equal share of what is left when it
+ * starts, so a part that stalls runs out of its own share and every later part still has its
+ * own (what a quick part leaves goes to the parts after it). */
 static void grade_parts(const grade_env *env, grade_spec *spec, const char *parts, grade_result *result)
 {
     double t0 = clock_seconds();
+    int left = 0;
+    for (int k = 0; k < GRADE_MAX_PART; k++) left += strchr(parts, '1' + k) != NULL;
     for (int k = 0; k < GRADE_MAX_PART; k++) {
         char digit[2] = {(char)('1' + k), 0};
         if (!strstr(parts, digit)) continue;
         fprintf(stderr, "grade: part %d ...\n", k + 1);
-        grade_part(env, spec, &spec->parts[k], &result->parts[result->num_parts++]);
+        grade_env part = *env;
+        if (env->deadline > 0) part.deadline = clock_seconds() + (env->deadline - clock_seconds()) / left;
+        left--;
+        grade_part(&part, spec, &spec->parts[k], &result->parts[result->num_parts++]);
         result->seconds = clock_seconds() - t0;
     }
 }
@@ -345,6 +372,7 @@ typedef struct {
     bool public_only, seed_given, prebuild;
     uint64_t seed;
     int threads, calibrate_runs;
+    double deadline;  /* --deadline: seconds the whole grading may take, 0 for no limit */
 } grade_args;
 
 /* Reads argv into a; NULL, or what was wrong. */
@@ -361,12 +389,14 @@ static const char *parse_args(int argc, char **argv, grade_args *a)
         else if (!strcmp(f, "--parts")) a->parts = argv[++i];
         else if (!strcmp(f, "--seed")) { a->seed = strtoull(argv[++i], NULL, 10); a->seed_given = true; }
         else if (!strcmp(f, "--threads")) a->threads = atoi(argv[++i]);
+        else if (!strcmp(f, "--deadline")) a->deadline = strtod(argv[++i], NULL);
         else if (!strcmp(f, "--calibrate")) a->calibrate_runs = atoi(argv[++i]);
         else if (!strcmp(f, "--cases")) a->cases = argv[++i];
         else if (!strcmp(f, "--handout")) a->handout = argv[++i];
         else return "unknown option";
     }
     if (a->threads < 1 || a->threads > 64) return "--threads: expected 1..64";
+    if (!(a->deadline >= 0 && a->deadline <= 86400)) return "--deadline: expected seconds, 0..86400";
     if (a->handout && strcmp(a->handout, "write") && strcmp(a->handout, "check")) return "--handout: expected write or check";
     if (!a->submission) a->public_only = true;  /* a student's own tree has no hidden cases */
     return NULL;
@@ -467,6 +497,7 @@ static void announce_protections(const grade_env *env, grade_result *result)
 
 int main(int argc, char **argv)
 {
+    double start = clock_seconds();
     grade_args a;
     const char *bad = parse_args(argc, argv, &a);
     if (bad) return usage(bad);
@@ -492,6 +523,8 @@ int main(int argc, char **argv)
     grade_env env = {.root = f.root, .submission = a.submission ? f.submission : NULL, .work = f.work,
                      .sandbox_dir = sandbox_dir, .report = f.report, .public_only = a.public_only, .seed = result.seed,
                      .threads = a.threads, .sandbox = grade_sandbox_probe()};
+    /* The deadline counts from the grader's start, the course's build and checks included. */
+    if (a.deadline > 0) env.deadline = start + a.deadline;
     grade_sandbox_keep(&env.sandbox, sandbox_dir);
     /* Before any child runs: the grader's own set-up, and the answers out of the children's reach. */
     char why[512] = "";

@@ -85,7 +85,7 @@ static void run_suite(const grade_env *env, const char *tree, const grade_part_s
     grade_path(bin, sizeof bin, "%s/bin/test-part%d", tree, p->part);
     char *envv[] = {"CMOCKA_MESSAGE_OUTPUT=xml", xml_env, NULL};
     char *argv[] = {bin, NULL};
-    grade_run_opts o = {.wall_seconds = GRADE_SUITE_SECONDS, .cwd = tree, .log_path = log, .log_max = GRADE_LOG_MAX,
+    grade_run_opts o = {.wall_seconds = GRADE_SUITE_SECONDS, .deadline = env->deadline, .cwd = tree, .log_path = log, .log_max = GRADE_LOG_MAX,
                         .env = envv, .untrusted = contained, .writes_files = true, .writable = dir};
     grade_run_result rr = grade_run(argv, &o);
 

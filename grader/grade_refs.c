@@ -114,26 +114,29 @@ static json_t *load_json(const char *ref_exr, char *path, size_t size, pl_diag *
     return j;
 }
 
-pl_status grade_refs_figures(const char *ref_exr, const grade_case *k, double *spp, double *work, pl_diag *diag)
+pl_status grade_refs_figures(const char *ref_exr, const grade_case *k, grade_course_figures *out, pl_diag *diag)
 {
     char path[4200];
+    memset(out, 0, sizeof *out);
     json_t *j = load_json(ref_exr, path, sizeof path, diag);
     if (!j) return PL_ERR_PARSE;
     json_t *r = json_object_get(j, "case_render");
-    bool ok = json_is_object(r) && positive(r, "mean_samples_per_pixel", adaptive_case(k), spp) &&
-              positive(r, "work_per_ray", k->work_per_ray, work);
+    bool adaptive = adaptive_case(k);
+    bool ok = json_is_object(r) && positive(r, "mean_samples_per_pixel", adaptive, &out->spp) &&
+              (!adaptive || grade_rate_map_read(json_object_get(r, "rate_map"), k->width, k->height, &out->map));
     json_decref(j);
-    return ok ? PL_OK : pl_fail(diag, PL_ERR_PARSE, "%s: case_render: expected positive numbers "
-                                "mean_samples_per_pixel%s and work_per_ray%s", path,
-                                adaptive_case(k) ? " (an adaptive case)" : "", k->work_per_ray ? " (a work_per_ray case)" : "");
+    return ok ? PL_OK : pl_fail(diag, PL_ERR_PARSE, "%s: case_render: expected a positive mean_samples_per_pixel%s",
+                                path, adaptive ? " and the rate_map of a case of its size (an adaptive case)" : "");
 }
 
 /* The JSON names the case and matches the film's provenance; the figures the case judges are there. */
 static pl_status check_json(const char *ref_exr, const grade_case *k, int part, const exr_info *info, pl_diag *diag)
 {
     char path[4200];
-    double spp, work;
-    if (grade_refs_figures(ref_exr, k, &spp, &work, diag) != PL_OK) return PL_ERR_PARSE;
+    grade_course_figures *figures = malloc(sizeof *figures);  /* a map of blocks: not for the stack */
+    pl_status st = figures ? grade_refs_figures(ref_exr, k, figures, diag) : pl_fail(diag, PL_ERR_NOMEM, "out of memory");
+    free(figures);
+    if (st != PL_OK) return st;
     json_t *j = load_json(ref_exr, path, sizeof path, diag);
     if (!j) return PL_ERR_PARSE;
     /* Its "key" is the reference maker's own (what decides a re-render), not the film's render key. */

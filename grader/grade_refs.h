@@ -4,6 +4,7 @@
 #define PL_GRADE_REFS_H
 
 #include "grade.h"
+#include "grade_rate.h"
 
 /* The reference of case k of part `part`: root/reference_images/[hidden/]part<N>/<case>.exr. */
 void grade_refs_path(const char *root, const grade_case *k, int part, char *out, size_t size);
@@ -16,8 +17,12 @@ void grade_refs_path(const char *root, const grade_case *k, int part, char *out,
  * figures the case judges. The error names the file, what is wrong, and what to run. */
 pl_status grade_refs_check(const char *root, const grade_spec *spec, const char *parts, bool public_only, pl_diag *diag);
 
-/* The course's figures for case k's own render, from the reference's JSON (strict): the mean
- * samples per pixel and the work per camera ray, each > 0 when the case judges it. */
-pl_status grade_refs_figures(const char *ref_exr, const grade_case *k, double *spp, double *work, pl_diag *diag);
+/* The course's figures for case k's own render, from the reference's JSON (strict): the mean samples
+ * per pixel (> 0) and the sample-rate map (grade_rate.h), required of an adaptive case. */
+typedef struct {
+    double spp;
+    grade_rate_map map;        /* columns 0 for a case that is not adaptive */
+} grade_course_figures;
+pl_status grade_refs_figures(const char *ref_exr, const grade_case *k, grade_course_figures *out, pl_diag *diag);
 
 #endif

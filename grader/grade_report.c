@@ -46,6 +46,30 @@ static double run_seconds(const grade_result *r)
     return public_figure(r->seconds, 0.0, GRADE_SECONDS_MAX);
 }
 
+/* Plain text (a reason: the grader's words, with a file's name or a figure in them) as Markdown: every
+ * character that could make markup escaped (grade_md_escape). Into a static buffer: one at a time. */
+static const char *md(const char *plain)
+{
+    static char out[2 * 1024 + 1];
+    grade_md_escape(plain, strlen(plain), out, sizeof out);
+    return out;
+}
+
+/* A fence for a block of text holding anything: one backtick longer than the longest run of
+ * backticks in it (at least three), so nothing in the block can close it (CommonMark 4.5). */
+static void md_fence(const char *text, char *fence, size_t size)
+{
+    size_t longest = 0, run = 0;
+    for (const char *s = text; *s; s++) {
+        run = *s == '`' ? run + 1 : 0;
+        if (run > longest) longest = run;
+    }
+    size_t n = longest + 1 < 3 ? 3 : longest + 1;
+    if (n >= size) n = size - 1;
+    memset(fence, '`', n);
+    fence[n] = '\0';
+}
+
 /* A deterministic case's verdict: how many pixels are beyond the rounding tolerance, against the
  * ties allowed, and the largest difference. A pass within the tolerance is never called a failure. */
 static int rounding_text(const grade_case *k, const verdict *v, char *out, size_t size)
@@ -74,31 +98,57 @@ static bool case_has_flag(const grade_case *k, const char *flag)
     return false;
 }
 
-/* The course's figures of a case's own render (samples per pixel, noise, work per ray), where the
- * case judges them; a hidden case says only whether each is within the course's bound. */
-static int figures_text(const grade_case_result *c, bool hidden, char *out, size_t size)
+/* An adaptive case's figures: its mean samples per pixel, and where it spends them (the map). */
+static int adaptive_text(const grade_case_result *c, char *out, size_t size)
+{
+    bool ok = grade_case_spp_ok(c);
+    int len = snprintf(out, size, " Samples per pixel: %.3g on average, the course's %.3g (%s %.0f%%).",
+                       public_figure(c->spp, 0.0, GRADE_SPP_MAX), public_figure(c->course_spp, 0.0, GRADE_SPP_MAX),
+                       ok ? "within" : "more than", 100.0 * GRADE_SPP_TOLERANCE);
+    if (!ok && len >= 0 && (size_t)len < size)
+        len += snprintf(out + len, size - len, " %s", c->spp > c->course_spp
+                        ? "Pixels stop later than the course's: adaptive_converged says yes too late (is I = 1.96 "
+                          "sqrt(var / n) the mean's error, with var / n and not var alone?)."
+                        : "Pixels stop earlier than the course's: adaptive_converged says yes too early (check I = "
+                          "1.96 sqrt(var / n) <= maxTolerance x mean, on the samples' luminance).");
+    if (c->rate_distance < 0 || len < 0 || (size_t)len >= size) return len;
+    ok = grade_case_rate_ok(c);
+    len += snprintf(out + len, size - len, " Where the samples go (the sample-rate map, block by block): yours misses "
+                    "%.2g%% of the course's variation from block to block (at most %.0f%%).",
+                    public_figure(100.0 * c->rate_distance, 0.0, 1e6), 100.0 * GRADE_RATE_TOLERANCE);
+    if (!ok && len >= 0 && (size_t)len < size)
+        len += snprintf(out + len, size - len, " The course's render spends many samples where the image is noisy and "
+                        "few where it is smooth; yours does not: does each pixel stop by its own confidence interval "
+                        "(task 5.1), rather than after a number of samples?");
+    return len;
+}
+
+/* A work_check case's figure: the render's CPU time against the baseline's (grade_image.c). */
+static int work_text(const grade_case_result *c, char *out, size_t size)
+{
+    bool ok = grade_case_work_ok(c);
+    int len = c->base_is_scan
+        ? snprintf(out, size, " CPU time: %.3gx faster than the framework's linear scan on this case (at least %.0fx).",
+                   public_figure(c->cpu > 0 ? c->base_cpu / c->cpu : 0.0, 0.0, GRADE_RATIO_MAX), GRADE_SCAN_FACTOR)
+        : snprintf(out, size, " CPU time: %.3gx the course's BVH on this case (at most %.0fx).",
+                   public_figure(c->base_cpu > 0 ? c->cpu / c->base_cpu : 0.0, 0.0, GRADE_RATIO_MAX), GRADE_WORK_FACTOR);
+    if (!ok && len >= 0 && (size_t)len < size)
+        len += snprintf(out + len, size - len, " The image is right, but the tree does not save work: check the SAH split, "
+                        "the leaf size, the nearest-first traversal, skipping boxes entered beyond the nearest hit, and "
+                        "stopping a shadow ray at its first hit (tasks 2.2 to 2.4).");
+    return len;
+}
+
+/* The figures of a public case's own render beside its image (samples per pixel and where they go,
+ * noise, CPU time), where the case judges them. A hidden case shows none: its verdict alone. */
+static int figures_text(const grade_case_result *c, char *out, size_t size)
 {
     int len = 0;
-    if (c->course_spp > 0) {
-        bool ok = fabs(c->spp / c->course_spp - 1.0) <= GRADE_SPP_TOLERANCE;
-        len += hidden ? snprintf(out, size, " Samples per pixel: %s %.0f%% of the course's.", ok ? "within" : "more than",
-                                 100.0 * GRADE_SPP_TOLERANCE)
-                      : snprintf(out, size, " Samples per pixel: %.3g on average, the course's %.3g (%s %.0f%%).",
-                                 public_figure(c->spp, 0.0, GRADE_SPP_MAX), public_figure(c->course_spp, 0.0, GRADE_SPP_MAX),
-                                 ok ? "within" : "more than", 100.0 * GRADE_SPP_TOLERANCE);
-        if (!ok && len >= 0 && (size_t)len < size)
-            len += snprintf(out + len, size - len, " %s", c->spp > c->course_spp
-                            ? "Pixels stop later than the course's: adaptive_converged says yes too late (is I = 1.96 "
-                              "sqrt(var / n) the mean's error, with var / n and not var alone?)."
-                            : "Pixels stop earlier than the course's: adaptive_converged says yes too early (check I = "
-                              "1.96 sqrt(var / n) <= maxTolerance x mean, on the samples' luminance).");
-    }
+    if (c->course_spp > 0) len += adaptive_text(c, out, size);
     if (c->spec->noise_check && len >= 0 && (size_t)len < size) {
         bool ok = c->noise <= GRADE_NOISE_FACTOR;
-        len += hidden ? snprintf(out + len, size - len, " Noise per sample: %s %.2fx the course's.",
-                                 ok ? "within" : "more than", GRADE_NOISE_FACTOR)
-                      : snprintf(out + len, size - len, " Noise per sample: %.3g x the course's (%s %.2fx).",
-                                 shown_ratio(c->noise), ok ? "within" : "more than", GRADE_NOISE_FACTOR);
+        len += snprintf(out + len, size - len, " Noise per sample: %.3g x the course's (%s %.2fx).",
+                        shown_ratio(c->noise), ok ? "within" : "more than", GRADE_NOISE_FACTOR);
         /* A cause only when the mean passed: an image whose mean is off is that first (where_text),
          * and its noise follows. A case that prescribes --no-rr says so, since then no roulette rule
          * (the handout allows several) can be the cause. */
@@ -109,23 +159,7 @@ static int figures_text(const grade_case_result *c, bool hidden, char *out, size
                             case_has_flag(c->spec, "--no-rr") ? " (the case renders with --no-rr, so roulette is not "
                             "the cause)" : "");
     }
-    if (c->course_work > 0 && len >= 0 && (size_t)len < size) {
-        bool ok = c->work >= 0 && c->work <= GRADE_WORK_FACTOR * c->course_work;
-        if (hidden)
-            len += snprintf(out + len, size - len, " Work per camera ray: %s %.0fx the course's BVH.",
-                            ok ? "within" : "more than", GRADE_WORK_FACTOR);
-        else if (c->work < 0)  /* no camera ray counted: nothing to divide by */
-            len += snprintf(out + len, size - len, " Work per camera ray: none counted (the course's BVH %.3g).",
-                            public_figure(c->course_work, 0.0, GRADE_WORK_MAX));
-        else
-            len += snprintf(out + len, size - len, " Work per camera ray (node visits + primitive tests, counted by "
-                            "the framework): %.3g, the course's BVH %.3g (%s %.0fx).", public_figure(c->work, 0.0, GRADE_WORK_MAX),
-                            public_figure(c->course_work, 0.0, GRADE_WORK_MAX), ok ? "within" : "more than", GRADE_WORK_FACTOR);
-        if (!ok && len >= 0 && (size_t)len < size)
-            len += snprintf(out + len, size - len, " The image is right, but the tree does not save work: check the "
-                            "SAH split, the leaf size, the nearest-first traversal, skipping boxes entered beyond the "
-                            "nearest hit, and stopping a shadow ray at its first hit (tasks 2.2 to 2.4).");
-    }
+    if (c->spec->work_check && c->ran && len >= 0 && (size_t)len < size) len += work_text(c, out + len, size - len);
     return len;
 }
 
@@ -139,6 +173,22 @@ static double mean_ratio(const verdict *v)
     return lit ? sum / lit : NAN;
 }
 
+/* The region a failed verdict differs in: its blocks' extent as pixels, and their brightness. */
+static int region_text(const grade_case *k, const verdict *v, char *out, size_t size)
+{
+    /* Blocks to pixels from the bottom-left, as the renderer and --trace-pixel count them. */
+    int x0 = v->region_x0 * k->width / v->blocks_x, x1 = (v->region_x1 + 1) * k->width / v->blocks_x - 1;
+    int y1 = k->height - 1 - v->region_y0 * k->height / v->blocks_y;
+    int y0 = k->height - (v->region_y1 + 1) * k->height / v->blocks_y;
+    bool whole = v->region_blocks == v->blocks_x * v->blocks_y;
+    return snprintf(out, size, " The image differs %s: %d of its %d blocks, within x = %d..%d and y = %d..%d (from the "
+                    "bottom-left), are %.3g times the reference's brightness together%s.",
+                    whole ? "everywhere, but not by one factor" : "in a region", v->region_blocks, v->blocks_x * v->blocks_y,
+                    grade_figure_pixel(x0, k->width), grade_figure_pixel(x1, k->width), grade_figure_pixel(y0, k->height),
+                    grade_figure_pixel(y1, k->height), public_figure(v->region_ratio, 0.0, GRADE_RATIO_MAX),
+                    whole ? "" : "; the rest matches: look at what that region shows (one object, one light, one material?)");
+}
+
 /* Where a statistical verdict failed: the first bad pixel, or the block (or the whole image) that
  * differs most, and the hint. */
 static int where_text(const grade_case *k, const verdict *v, char *out, size_t size)
@@ -148,22 +198,16 @@ static int where_text(const grade_case *k, const verdict *v, char *out, size_t s
         len = snprintf(out, size, " %ld pixels are NaN, infinite or negative; the first at x=%d y=%d (from the "
                        "bottom-left).", grade_figure_count(v->bad_pixels, case_pixels(k)),
                        grade_figure_pixel(v->bad_x, k->width), grade_figure_pixel(v->bad_y, k->height));
-    /* In order of likelihood: bad pixels, then the whole image's brightness (a mean off by more than
-     * 5%, far beyond a case's noise, is a factor everywhere, not a place), then the place. */
-    else if (!v->pass && !v->deterministic && fabs(mean_ratio(v) - 1.0) > 0.05)
-        len = snprintf(out, size, " The whole image is %s: %.3g times the reference's brightness on average, so "
-                       "look for a factor that applies everywhere before a place.",
+    /* In order of likelihood: bad pixels; then one factor everywhere (a mean off by more than 5%, far
+     * beyond a case's noise, with the differing blocks agreeing on it); then a region (the blocks
+     * that differ, named with their ratio); then the one block, or channel, that differs most. */
+    else if (!v->pass && !v->deterministic && v->uniform_factor && fabs(mean_ratio(v) - 1.0) > 0.05)
+        len = snprintf(out, size, " The whole image is %s: %.3g times the reference's brightness on average, and its "
+                       "blocks agree, so look for a factor that applies everywhere before a place.",
                        mean_ratio(v) > 1.0 ? "too bright" : "too dark", public_figure(mean_ratio(v), 0.0, GRADE_RATIO_MAX));
-    else if (!v->pass && !v->deterministic && v->worst_block_x >= 0)  /* rounding_text says where */
-        len = snprintf(out, size, " Most different: the %s channel of block (%d, %d) from the top-left (t = %+.3g: %s "
-                       "than the reference).", channel_names[v->worst_channel % 3],
-                       grade_figure_pixel(v->worst_block_x, v->blocks_x), grade_figure_pixel(v->worst_block_y, v->blocks_y),
-                       public_figure(v->worst_t, -GRADE_T_MAX, GRADE_T_MAX), v->worst_t > 0 ? "brighter" : "darker");
-    else if (!v->pass && !v->deterministic)
-        len = snprintf(out, size, " The whole image's %s channel is %s than the reference (t = %+.3g).",
-                       channel_names[v->worst_channel % 3], v->worst_t > 0 ? "brighter" : "darker",
-                       public_figure(v->worst_t, -GRADE_T_MAX, GRADE_T_MAX));
-    /* The hint's factor is measured where it is telling (verdict.c: pixels that see no light directly),
+    else if (!v->pass && !v->deterministic && v->region_blocks > 0)
+        len = region_text(k, v, out, size);
+    else if (!v->pass && !v->deterministic && v->worst_block_x >= 0)  /* rounding_text says where */    /* The hint's factor is measured where it is telling (verdict.c: pixels that see no light directly),
      * so it may differ from the whole image's ratio above: said so, or the two read as a contradiction. */
     if (!v->pass && v->hint[0] && len >= 0 && (size_t)len < size)
         len += snprintf(out + len, size - len, " Hint%s: %s.",
@@ -173,26 +217,19 @@ static int where_text(const grade_case *k, const verdict *v, char *out, size_t s
 
 
 /* A hidden case: its scene is the course's secret, and its render may have read it, so the student
- * sees the verdict and coarse figures only: the mean ratio to 2 digits, whether the course's
- * figures are within bounds; no p-value, no pixel or block, no trace command (README: "What
- * reaches the student"). */
+ * sees its verdict alone, passed or failed: no figure, no pixel or block, no trace command, nothing
+ * of what its render made (grading/README.md, "What reaches the student"). */
 static void hidden_case_text(const grade_case_result *c, char *out, size_t size)
 {
-    int len = 0;
-    if (c->rendered_twice)
-        len = snprintf(out, size, "Rendered twice: the first render differed from the reference, and a correct render "
-                       "does that by chance about once in a thousand gradings at most, so the case was rendered again; "
-                       "that render is judged here. ");
-    if (len < 0 || (size_t)len >= size) return;
-    out += len, size -= (size_t)len;
     if (!c->ran) {
-        snprintf(out, size, "**did not run**: %s", c->reason);
+        snprintf(out, size, "**did not run**: %s", md(c->reason));
         return;
     }
-    len = snprintf(out, size, "%s (a hidden case: its figures are coarse). Mean ratio to the reference %.2g.",
-                   c->v.pass ? "**matches the reference**" : "**differs from the reference**",
-                   grade_figure(mean_ratio(&c->v), GRADE_FIGURE_COARSE_DIGITS, 0.0, GRADE_HIDDEN_RATIO_MAX));
-    if (len >= 0 && (size_t)len < size) figures_text(c, true, out + len, size - len);
+    snprintf(out, size, "%s (a hidden case: its verdict alone is shown).%s",
+             c->pass ? "**passes**" : "**fails**",
+             c->rendered_twice ? " It was rendered twice: a correct render fails a case by chance about once in a "
+                                 "thousand gradings at most, so a first failure is rendered again, and only the second "
+                                 "render is judged." : "");
 }
 
 /* One case's verdict in words (Markdown): the same text in results.json and the HTML report. */
@@ -216,7 +253,7 @@ static void case_text(const grade_case_result *c, char *out, size_t size)
     if (len < 0 || (size_t)len >= size) return;
     out += len, size -= (size_t)len;
     if (!c->ran) {
-        snprintf(out, size, "**did not run**: %s", c->reason);
+        snprintf(out, size, "**did not run**: %s", md(c->reason));
         return;
     }
     len = v->deterministic ? rounding_text(k, v, out, size)
@@ -226,7 +263,7 @@ static void case_text(const grade_case_result *c, char *out, size_t size)
                                       public_figure(v->p_value, 0.0, 1.0), v->alpha, public_figure(v->rel_mse, 0.0, GRADE_REL_MSE_MAX),
                                       shown_ratio(v->ratio[0]), shown_ratio(v->ratio[1]), shown_ratio(v->ratio[2]));
     if (len >= 0 && (size_t)len < size) len += where_text(k, v, out + len, size - len);
-    if (len >= 0 && (size_t)len < size) figures_text(c, false, out + len, size - len);
+    if (len >= 0 && (size_t)len < size) figures_text(c, out + len, size - len);
 }
 
 /* A failing case's pixels and the commands that trace them (grade_image.c), after its text. */
@@ -246,15 +283,25 @@ static int tasks_failed(const grade_part_result *p)
     return n;
 }
 
-/* When several tasks failed: one bug can fail another task's tests (3.4's tests call your bsdf_f;
- * 4.2's furnace runs your path loop), so the student starts from the suite's first failure. */
+/* When several tasks failed: one bug can fail another task's tests, since a task's tests call the
+ * part's functions of the tasks before it. Said with this part's own: the first failed task, and the
+ * functions of the tasks before it that its tests may be failing through. Into a static buffer. */
 static const char *cascade_text(const grade_part_result *p)
 {
-    return tasks_failed(p) > 1 ? "Several tasks failed, but one bug can fail the tests of another task as well (a "
-                                 "task's tests call the part's other functions too: 3.4's tests run your bsdf_f, "
-                                 "4.2's furnace your path loop): fix the first failure the suite names, then run it "
-                                 "again."
-                               : "";
+    static char text[640];
+    if (tasks_failed(p) <= 1) return "";
+    int first = 0;
+    while (first < p->spec->num_tasks && p->task_score[first] >= p->spec->tasks[first].points) first++;
+    int len = snprintf(text, sizeof text, "Several tasks failed, but one bug can fail the tests of another task as "
+                       "well: a task's tests run the part's functions of the tasks before it too");
+    for (int t = first + 1, named = 0; t < p->spec->num_tasks && len >= 0 && (size_t)len < sizeof text; t++)
+        if (p->task_score[t] < p->spec->tasks[t].points && !named++)
+            len += snprintf(text + len, sizeof text - len, " (task %s's tests run your %s, whose task %s failed too)",
+                            p->spec->tasks[t].task, p->spec->tasks[first].functions, p->spec->tasks[first].task);
+    if (len >= 0 && (size_t)len < sizeof text)
+        snprintf(text + len, sizeof text - len, ": fix the first failure the suite names, task %s's, then run it again.",
+                 p->spec->tasks[first].task);
+    return text;
 }
 
 /* A failing public case's cause in one line (the report's words): why it did not run; where its
@@ -272,7 +319,7 @@ static void case_cause(const grade_case_result *c, char *out, size_t size)
     }
     else {
         int len = snprintf(text, sizeof text, "the image matches the reference, but a figure of its render does not:");
-        if (len >= 0 && (size_t)len < sizeof text) figures_text(c, false, text + len, sizeof text - (size_t)len);
+        if (len >= 0 && (size_t)len < sizeof text) figures_text(c, text + len, sizeof text - (size_t)len);
     }
     snprintf(out, size, "%s", text + (text[0] == ' '));
 }
@@ -402,11 +449,13 @@ pl_status grade_write_results_json(const grade_result *r, const char *path, pl_d
         snprintf(name, sizeof name, "Part %d: unit tests", p->part);
         /* Unit tests: why nothing was earned (with the compiler's last lines, the student's own
          * files only: grade_diag.c), or how many passed and the failures' messages. */
+        char fence[64];
+        md_fence(p->build_output, fence, sizeof fence);
         if (p->suite_reason[0] && p->build_output[0])
-            snprintf(text, sizeof text, "**0 points**: %s. The end of the compiler's output:\n\n```\n%s\n```\n",
-                     p->suite_reason, p->build_output);
+            snprintf(text, sizeof text, "**0 points**: %s. The end of the compiler's output:\n\n%s\n%s\n%s\n",
+                     md(p->suite_reason), fence, p->build_output, fence);
         else if (p->suite_reason[0])
-            snprintf(text, sizeof text, "**0 points**: %s.", p->suite_reason);
+            snprintf(text, sizeof text, "**0 points**: %s.", md(p->suite_reason));
         else {
             int len = snprintf(text, sizeof text, "%d of %d tests passed.\n\n", p->tests_run - p->tests_failed, p->tests_run);
             len += tasks_text(p, text + len, sizeof text - (size_t)len);
@@ -442,20 +491,24 @@ pl_status grade_write_results_json(const grade_result *r, const char *path, pl_d
 
 /* ---- the HTML report: one page, a row per case with its three pictures ----------------------- */
 
-/* Escapes text for HTML (valid UTF-8 first: report_text); the Markdown bold of the shared verdict
- * text (**...**) becomes <b>. */
-static void html_escape(FILE *f, const char *text)
+/* Escapes text for HTML (valid UTF-8 first: report_text). With markdown (the verdicts' shared text,
+ * results.json's): its bold (**...**) becomes <b>, and a character escaped for Markdown (a
+ * backslash before it: grade_md_escape) shows as itself. Plain text (a compiler's lines, a command)
+ * is shown exactly as it is. */
+static void html_escape(FILE *f, const char *text, bool markdown)
 {
     bool bold = false;
     char *valid = report_text(text);
     const char *s = valid ? valid : "(out of memory)";
     for (; *s; s++) {
-        if (s[0] == '*' && s[1] == '*') {
+        if (markdown && s[0] == '*' && s[1] == '*') {
             fputs(bold ? "</b>" : "<b>", f);
             bold = !bold;
             s++;
+            continue;
         }
-        else if (*s == '<') fputs("&lt;", f);
+        if (markdown && s[0] == '\\' && s[1] && strchr("\\`*_[]<>&|~!#-+=.)", s[1])) s++;
+        if (*s == '<') fputs("&lt;", f);
         else if (*s == '>') fputs("&gt;", f);
         else if (*s == '&') fputs("&amp;", f);
         else if (*s == '"') fputs("&quot;", f);
@@ -465,11 +518,19 @@ static void html_escape(FILE *f, const char *text)
     free(valid);
 }
 
-/* Text between an opening and a closing tag: the one way any grader or student text enters the page. */
+/* Text between an opening and a closing tag: the one way any grader or student text enters the page,
+ * plain (html_wrapped) or the verdicts' Markdown (html_markdown). */
 static void html_wrapped(FILE *f, const char *open, const char *text, const char *close)
 {
     fputs(open, f);
-    html_escape(f, text);
+    html_escape(f, text, false);
+    fputs(close, f);
+}
+
+static void html_markdown(FILE *f, const char *open, const char *text, const char *close)
+{
+    fputs(open, f);
+    html_escape(f, text, true);
     fputs(close, f);
 }
 
@@ -527,8 +588,8 @@ static void html_unit_tests(FILE *f, const grade_part_result *p)
     fprintf(f, "<p class=\"%s\">Unit tests: %d of %d passed</p>\n", p->tests_failed ? "fail" : "pass",
             p->tests_run - p->tests_failed, p->tests_run);
     char tasks[2048];
-    if (tasks_text(p, tasks, sizeof tasks) > 0) html_wrapped(f, "<pre>", tasks, "</pre>\n");
-    if (p->failures[0]) html_wrapped(f, "<pre>", p->failures, "</pre>\n");
+    if (tasks_text(p, tasks, sizeof tasks) > 0) html_markdown(f, "<pre>", tasks, "</pre>\n");
+    if (p->failures[0]) html_markdown(f, "<pre>", p->failures, "</pre>\n");
 }
 
 /* One image case: its verdict in words, the trace command, and the three pictures side by side. */
@@ -543,7 +604,7 @@ static void html_case(FILE *f, const grade_case_result *c)
     fprintf(f, "<div class=\"case\"><h3>%s%s: <span class=\"%s\">%s</span></h3>", c->spec->name,
             c->spec->hidden ? " (hidden)" : "", c->pass ? "pass" : "fail", c->pass ? "passes" : "fails");
     html_wrapped(f, "<p><i>", c->spec->shows, "</i></p>");
-    html_wrapped(f, "<p>", text, "</p>\n");
+    html_markdown(f, "<p>", text, "</p>\n");
     html_trace(f, c);
     if (c->ran && c->images[0][0] && !c->spec->hidden) {  /* a hidden case's render is not shown (case_text) */
         fprintf(f, "<div class=\"imgs\">");

@@ -297,16 +297,19 @@ static pid_t start_job(char *const argv[], const grade_run_opts *o, int *from_he
     return pid;
 }
 
-void grade_run_jobs(int n, char *const *const argv[], const grade_run_opts o[], grade_run_result r[])
+void grade_run_jobs(int n, char *const *const argv[], const grade_run_opts o[], grade_run_result r[], bool stop_on_failure)
 {
+    bool failed = false;
     for (int first = 0; first < n; first += GRADE_JOBS) {
         pid_t pid[GRADE_JOBS];
         int from[GRADE_JOBS];
         int batch = n - first < GRADE_JOBS ? n - first : GRADE_JOBS;
-        for (int k = 0; k < batch; k++) pid[k] = start_job(argv[first + k], &o[first + k], &from[k]);
+        for (int k = 0; k < batch; k++) {
+            r[first + k] = (grade_run_result){false, -1, false, false, false, 0.0, 0.0};
+            pid[k] = failed ? -1 : start_job(argv[first + k], &o[first + k], &from[k]);  /* after a failure: none */
+        }
         for (int k = 0; k < batch; k++) {
             grade_run_result *out = &r[first + k];
-            *out = (grade_run_result){false, -1, false, false, 0.0, 0.0};
             if (pid[k] < 0) continue;
             grade_run_result got;
             ssize_t len;
@@ -314,6 +317,7 @@ void grade_run_jobs(int n, char *const *const argv[], const grade_run_opts o[], 
             if (len == (ssize_t)sizeof got) *out = got;
             close(from[k]);
             waitpid(pid[k], NULL, 0);
+            failed = failed || (stop_on_failure && !(out->exited && out->status == 0));
         }
     }
 }
@@ -341,10 +345,19 @@ static _Noreturn void run_child_work(const grade_run_opts *o, const child_work *
 
 /* Forks a child for w under o's limits and confinement, watches it to its end, and cleans up after
  * it: the one path every child of the grader takes. */
-static grade_run_result run_child(const child_work *w, const grade_run_opts *o, int in_fd, int fd3)
+static grade_run_result run_child(const child_work *w, const grade_run_opts *given, int in_fd, int fd3)
 {
-    grade_run_result r = {false, -1, false, false, 0.0, 0.0};
+    grade_run_result r = {false, -1, false, false, false, 0.0, 0.0};
     double t0 = clock_seconds();
+    /* The stage's limit, or what is left of the grading's time when that is less. */
+    grade_run_opts limited = *given;
+    const grade_run_opts *o = &limited;
+    bool deadline_first = given->deadline > 0 && given->deadline - t0 < given->wall_seconds;
+    if (deadline_first) limited.wall_seconds = given->deadline - t0;
+    if (o->wall_seconds <= 0) {
+        r.timed_out = r.out_of_time = true;
+        return r;
+    }
     int log_fd = open_log(o->log_path), fds[2] = {-1, -1}, cap[2] = {-1, -1};
     if (o->capture) o->capture->len = 0, o->capture->overflow = false;
     if (log_fd < 0 || !grade_pipe(fds) || (o->capture && !grade_pipe(cap))) {
@@ -375,6 +388,7 @@ static grade_run_result run_child(const child_work *w, const grade_run_opts *o, 
     if (cap[0] >= 0) close(cap[0]);
     close(log_fd);
     r.seconds = clock_seconds() - t0;
+    r.out_of_time = r.timed_out && deadline_first;
     if (pid > 0 && !r.timed_out && WIFEXITED(status)) {
         r.exited = true;
         r.status = WEXITSTATUS(status);
@@ -398,7 +412,8 @@ grade_run_result grade_run_function(void (*fn)(void *arg, int out_fd), void *arg
 
 void grade_run_describe(const grade_run_result *r, char *out, size_t size)
 {
-    if (r->timed_out) snprintf(out, size, "ran past %.0f s", r->seconds);
+    if (r->out_of_time) snprintf(out, size, "%s", GRADE_OUT_OF_TIME);
+    else if (r->timed_out) snprintf(out, size, "ran past %.0f s", r->seconds);
     else if (!r->exited && r->status == SIGXCPU) snprintf(out, size, "ran past its CPU time");
     else if (!r->exited && r->status == SIGSYS) snprintf(out, size, "made a system call the sandbox forbids");
     else if (!r->exited) snprintf(out, size, "killed by signal %d (%s)", r->status, strsignal(r->status));

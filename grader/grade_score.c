@@ -6,6 +6,7 @@
  * not be judged (crashed, stopped, ran out of time, or its results were not its own). Each image
  * case that passed adds its points. The table, results.json and the HTML report read these figures. */
 #include "grade.h"
+#include <math.h>
 #include <stdio.h>
 #include <string.h>
 
@@ -66,4 +67,23 @@ double grade_score_total(const grade_result *r, double *max)
         *max += r->parts[i].max_score;
     }
     return total;
+}
+
+/* ---- the figures a case judges beside its image (grade_image.c measures them) ----------------- */
+
+bool grade_case_spp_ok(const grade_case_result *c)
+{
+    return !(c->course_spp > 0) || fabs(c->spp / c->course_spp - 1.0) <= GRADE_SPP_TOLERANCE;
+}
+
+bool grade_case_rate_ok(const grade_case_result *c)
+{
+    return c->rate_distance < 0 || c->rate_distance <= GRADE_RATE_TOLERANCE;
+}
+
+bool grade_case_work_ok(const grade_case_result *c)
+{
+    if (!c->spec->work_check) return true;
+    if (!(c->base_cpu > 0) || !(c->cpu > 0)) return false;  /* not measured: nothing to stand on */
+    return c->base_is_scan ? c->cpu * GRADE_SCAN_FACTOR <= c->base_cpu : c->cpu <= GRADE_WORK_FACTOR * c->base_cpu;
 }

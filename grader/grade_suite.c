@@ -31,7 +31,8 @@ static xmlNodePtr verdict_of(xmlNodePtr t)
     return NULL;
 }
 
-/* One failed test as a Markdown line: its name and message, the message cut at a character boundary. */
+/* One failed test as a Markdown line: its name and message, the message cut at a character boundary
+ * and escaped for Markdown. */
 static void add_failure(grade_part_result *r, xmlNodePtr t, xmlNodePtr v)
 {
     xmlChar *name = xmlGetProp(t, (const xmlChar *)"name");
@@ -48,9 +49,16 @@ static void add_failure(grade_part_result *r, xmlNodePtr t, xmlNodePtr v)
         cut = GRADE_MESSAGE_MAX;
         while (cut > 0 && ((unsigned char)text[cut] & 0xc0) == 0x80) cut--;  /* never inside a character */
     }
+    /* Markdown: the message escaped (it holds the candidate's numbers, and whatever a suite of a
+     * student's own tree printed), the name only when it is a C identifier, as the course's are. */
+    char escaped[2 * GRADE_MESSAGE_MAX + 2];
+    grade_md_escape(text, cut, escaped, sizeof escaped);
+    const char *shown = name && strlen((char *)name) < 200 &&
+                                strspn((char *)name, "abcdefghijklmnopqrstuvwxyzABCDEFGHIJKLMNOPQRSTUVWXYZ0123456789_") ==
+                                    strlen((char *)name)
+                            ? (char *)name : "(a test whose name is not a C identifier)";
     size_t len = strlen(r->failures);
-    if (len + 1 < sizeof r->failures)
-        snprintf(r->failures + len, sizeof r->failures - len, "- `%.200s`: %.*s\n", name ? (char *)name : "?", (int)cut, text);
+    if (len + 1 < sizeof r->failures) snprintf(r->failures + len, sizeof r->failures - len, "- `%s`: %s\n", shown, escaped);
     xmlFree(name);
     xmlFree(msg);
 }

@@ -62,7 +62,8 @@ $(BIN)/grade-probe: $(BUILD)/grader/probe_main.o $(GRADER_OBJ) $(GRADER_FRAMEWOR
 # bin/grade itself once (a clean run, leak detection on under SAN=1) and bin/grade-probe under the
 # sandbox (order-only: not linked in).
 $(BIN)/test-grader: $(GRADER_OBJ) | $(BIN)/grade-probe
-$(BIN)/test-grader: LDLIBS += $(GRADER_LIBS)
+$(BIN)/test-grader: LDLIBS += $(GRADER_LIBS) $(shell pkg-config --libs $(GRADER_TPKGS))
+$(BUILD)/tests/grader/%.o: CPPFLAGS += $(shell pkg-config --cflags $(GRADER_TPKGS))
 test-grader: $(BIN)/grade
 # The grader builds with GCC's -Wformat-truncation on: paths go through grade_path (refused, never
 # cut) and messages through grade_msg (cut on purpose, marked), both in grader/grade_fmt.c.

@@ -263,6 +263,49 @@ static void run_tests(verdict *v, const verdict_params *p, bool known, const dif
     v->pass = v->bad_pixels == 0 && v->p_value >= p->family_alpha;
 }
 
+static int compare_doubles(const void *a, const void *b)
+{
+    double x = *(const double *)a, y = *(const double *)b;
+    return (x > y) - (x < y);
+}
+
+/* Where a failed statistical verdict differs (verdict.h): the blocks that stand out, their extent and
+ * ratio, and whether they say "one factor everywhere": they cover at least 60% of the lit blocks
+ * (those holding at least 1% of the brightest block's light) and 80% of them lie within 15% of their
+ * median ratio. A bug confined to one object (a glass's radiance scale, a flipped row of an
+ * environment map) differs in its blocks only, however far the image's mean ratio moves. */
+static void find_region(verdict *v, const diff_acc *acc)
+{
+    long nblocks = (long)v->blocks_x * v->blocks_y;
+    double brightest = 0.0, cand_sum = 0.0, ref_sum = 0.0;
+    for (long b = 0; b < nblocks; b++) brightest = fmax(brightest, acc[3 * b].ref + acc[3 * b + 1].ref + acc[3 * b + 2].ref);
+    double *ratios = malloc((size_t)nblocks * sizeof *ratios);
+    long lit = 0, standing = 0;
+    v->region_x0 = v->blocks_x, v->region_y0 = v->blocks_y, v->region_x1 = v->region_y1 = -1;
+    for (long b = 0; b < nblocks; b++) {
+        double r = acc[3 * b].ref + acc[3 * b + 1].ref + acc[3 * b + 2].ref, d = acc[3 * b].s1 + acc[3 * b + 1].s1 + acc[3 * b + 2].s1;
+        bool is_lit = r > 0.01 * brightest;
+        bool stands = fmaxf(fabsf(v->t[3 * b]), fmaxf(fabsf(v->t[3 * b + 1]), fabsf(v->t[3 * b + 2]))) >= VERDICT_REGION_T;
+        lit += is_lit;
+        if (!stands) continue;
+        int bx = (int)(b % v->blocks_x), by = (int)(b / v->blocks_x);
+        v->region_blocks++;
+        v->region_x0 = bx < v->region_x0 ? bx : v->region_x0, v->region_x1 = bx > v->region_x1 ? bx : v->region_x1;
+        v->region_y0 = by < v->region_y0 ? by : v->region_y0, v->region_y1 = by > v->region_y1 ? by : v->region_y1;
+        cand_sum += r + d, ref_sum += r;
+        if (is_lit && ratios) ratios[standing++] = (r + d) / r;
+    }
+    v->region_ratio = ref_sum > 0.0 ? cand_sum / ref_sum : NAN;
+    if (ratios && standing > 0 && standing * 10 >= lit * 6) {
+        qsort(ratios, (size_t)standing, sizeof *ratios, compare_doubles);
+        double median = ratios[standing / 2];
+        long agree = 0;
+        for (long i = 0; i < standing; i++) agree += fabs(ratios[i] / median - 1.0) <= 0.15;
+        v->uniform_factor = agree * 10 >= standing * 8;
+    }
+    free(ratios);
+}
+
 /* The deterministic verdict: at most tie_pixels pixels beyond the tolerance (verdict.h); the worst
  * block is the one holding the largest difference. */
 static void judge_rounding(verdict *v, int width, int height)
@@ -315,7 +358,10 @@ pl_status verdict_compute(const verdict_image *cand, const verdict_image *ref, c
     out->tie_pixels = p->tie_pixels;
     scan_pixels(out, cand, ref, p, acc);
     if (p->deterministic) judge_rounding(out, w, h);
-    else run_tests(out, p, p->known_variance && ref->var, acc);
+    else {
+        run_tests(out, p, p->known_variance && ref->var, acc);
+        find_region(out, acc);
+    }
     free(acc);
     out->alpha = p->family_alpha;
     find_hint(out, cand, ref);

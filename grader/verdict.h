@@ -52,6 +52,8 @@
  * pixel counts as having seen no variation at all (its samples equal up to the rounding of the
  * film's sums). */
 #define VERDICT_ROUNDING_SD 1e-4
+/* A block differs when some channel's |t| (or z) is at least this (the region of a failed verdict). */
+#define VERDICT_REGION_T 3.0
 #define VERDICT_NO_SPREAD 1e-6
 
 typedef struct {
@@ -106,6 +108,14 @@ typedef struct {
     double ratio[3];             /* sum of candidate / sum of reference, per channel */
     long bad_pixels;             /* candidate pixels with NaN, Inf or negative values */
     int bad_x, bad_y;            /* the first one, counted from the bottom-left as the renderer does */
+    /* Where a statistical verdict differs (find_region): the blocks whose |t| in some channel is at
+     * least VERDICT_REGION_T, their extent and their brightness against the reference's, and
+     * whether the image is off by one factor wherever it is lit (those blocks cover most of the lit
+     * ones and agree on their ratio) or in a region only. */
+    bool uniform_factor;
+    int region_blocks;           /* how many blocks differ; 0: none stands out */
+    int region_x0, region_y0, region_x1, region_y1;  /* their extent in blocks, from the top-left */
+    double region_ratio;         /* candidate over reference, summed over those blocks' pixels */
     char hint[200];              /* a likely cause when the ratio matches a known mistake, else "" */
     const char *hint_code;       /* the same cause as a stable code for machines ("factor_1/pi", "black",
                                     "self_shadowing": grade_facts.h), or NULL with no hint */

@@ -13,8 +13,10 @@
 #                should get: "expect: unit=0|full|lost images=0|full|lost"), graded on their part
 #                and one other, which must keep full marks ("other: none": their own part only);
 #                "present: TEXT" / "absent: TEXT" lines say what results.json must (not) hold,
-#                "absent-files: PATH..." what must not exist afterwards; no results.json may hold
-#                a line of a hidden scene
+#                "absent-files: PATH..." what must not exist afterwards, "timeout: S" the
+#                autograder's limit (AUTOGRADER_TIMEOUT); a line "/* === FILE parts/... === */"
+#                starts another file of the submission (two files of a part, or a name of its own);
+#                no results.json may hold a line of a hidden scene
 #   no-parts, linked-part, timeout   run_autograder's own fallbacks: an upload without parts/, a
 #                part folder that is a symbolic link to the solution, a grader out of time
 #   make-function-name, compile-private-tmp   the build stage: a file named like a make function is
@@ -222,8 +224,14 @@ case_adversary() {
     # but what the attack could win; base: solution -- the course's part.
     folder=$(echo "$file" | cut -d/ -f1-2)
     if [ "$base" = stub ]; then rm -rf "$r/submission/$folder" && cp -a "$repo/release/student/$folder" "$r/submission/$folder"; fi
-    cp "$f" "$r/submission/$file"
-    grade "$name" "$part${other:+,$other}"
+    # The adversary's own file, and the files after its "/* === FILE path === */" lines (an attack
+    # that needs two files of the part, or a file of a name of its own), each where its line says.
+    awk -v first="$r/submission/$file" -v top="$r/submission/" '
+        BEGIN { out = first }
+        /^\/\* === FILE .* === \*\/$/ { close(out); out = top substr($0, 13, length($0) - 19); next }
+        { print > out }' "$f"
+    limit=$(sed -n 's/^ \* timeout: *\([0-9][0-9]*\).*/\1/p' "$f")
+    grade "$name" "$part${other:+,$other}" ${limit:+AUTOGRADER_TIMEOUT=$limit}
     read_results "$name"; summary=
     graded_by_grader || problems="$problems not the grader's results;"
     grep -q '"forged"' "$r/results/results.json" && problems="$problems the forged results.json is in place;"
@@ -278,7 +286,8 @@ case_make_function_name() {
     graded_by_grader || problems="$problems not the grader's results;"
     expect_part 1 0 0
     expect_part 2 0 0
-    grep -q 'only files named with a-z, 0-9 and _' "$r/results/results.json" || problems="$problems no refusal naming the rule;"
+    grep -q 'characters other than a-z, 0-9 and' "$r/results/results.json" || problems="$problems no refusal naming the rule;"
+    grep -q 'pathlab-stash' "$r/results/results.json" && problems="$problems the refusal quotes the name;"
     finish make-function-name
 }
 

@@ -5,7 +5,8 @@
  *   reference_images/part<N>/<case>.png   a preview
  *   reference_images/part<N>/<case>.json  the provenance: the key it was made from, command, seed,
  *                                         and the course's figures for the case's own render
- *                                         (samples per pixel, work per ray: probe_case)
+ *                                         (samples per pixel, an adaptive case's sample-rate map:
+ *                                         probe_case)
  * (hidden cases under reference_images/hidden/, which the student release leaves out)
  * A case is rendered again only when its key changed: the scene file, the case's flags, resolution
  * and samples, or the code (framework/ and parts/ sources). Ranges are files of their own
@@ -20,6 +21,8 @@
  *   --out DIR (reference_images) and --work DIR (build/references) move the results and the ranges.
  * CASE is a case name or part<N>; none means every case. */
 #include "../../grader/grade.h"
+#include "../../grader/grade_rate.h"
+#include "../../framework/film.h"
 #include "../../framework/clock.h"
 #include "../../framework/exr.h"
 #include "../../framework/file.h"
@@ -222,29 +225,41 @@ static bool reference_clean(const ref_case *rc, const char *path)
 }
 
 /* The course's figures for the case's own render (its flags, resolution and samples, not the
- * reference's): the mean samples per pixel (what an adaptive part 5 must spend) and the framework-
- * counted work per camera ray, node visits plus primitive tests (what a part 2 BVH must not
- * exceed by much). One render at the reference's seed, read from its JSON sidecar; the grader
- * compares a candidate's with these. */
+ * reference's): the mean samples per pixel and, for an adaptive case, where it spends them, block
+ * by block (grader/grade_rate.h: the mean map of GRADE_RATE_RUNS renders at seeds from the
+ * reference's). The grader compares a candidate's film with these. */
 static json_t *probe_case(const ref_case *rc)
 {
-    char out[700], sidecar[700], log[700];
+    char out[700], log[700];
     snprintf(out, sizeof out, "%s/probe.exr", rc->range_dir);
-    snprintf(sidecar, sizeof sidecar, "%s/probe.json", rc->range_dir);
     snprintf(log, sizeof log, "%s/probe.log", rc->range_dir);
-    char *argv[GRADE_MAX_FLAGS + 16];
-    grade_case_text text;
-    grade_case_command(rc->spec, "bin/pathtracer", rc->spec->scene, out, rc->seed, 1, &text, argv);
-    if (!run_logged(argv, log)) return NULL;
-    json_t *s = json_load_file(sidecar, JSON_REJECT_DUPLICATES, NULL);
-    double rays = json_number_value(json_object_get(s, "rays_traced"));
-    double work = json_number_value(json_object_get(s, "node_visits")) +
-                  json_number_value(json_object_get(s, "primitive_tests"));
-    json_t *probe = s && rays > 0 ? json_pack("{s:f, s:f}", "mean_samples_per_pixel",
-                                              json_number_value(json_object_get(s, "mean_samples_per_pixel")),
-                                              "work_per_ray", work / rays)
-                                  : NULL;
-    json_decref(s);
+    bool adaptive = false;
+    for (int i = 0; i < rc->spec->num_flags; i++) adaptive = adaptive || !strcmp(rc->spec->flags[i], "-a");
+    int runs = adaptive ? GRADE_RATE_RUNS : 1;
+    static grade_rate_map map, one;
+    double spp = 0.0;
+    for (int run = 0; run < runs; run++) {
+        char *argv[GRADE_MAX_FLAGS + 16];
+        grade_case_text text;
+        grade_case_command(rc->spec, "bin/pathtracer", rc->spec->scene, out, rc->seed + (unsigned long long)run, 1, &text, argv);
+        film f = {0};
+        exr_info info;
+        pl_diag d = pl_diag_default();
+        if (!run_logged(argv, log) || exr_read(out, &f, &info, &d) != PL_OK) {
+            film_free(&f);
+            return NULL;
+        }
+        grade_rate_map_of(&f, &one);
+        if (run == 0) map = one, memset(map.mean, 0, sizeof map.mean);
+        grade_rate_map_add(&map, &one, 1.0 / runs);
+        for (long i = 0; i < (long)f.width * f.height; i++) spp += (double)f.pixels[i].n / ((double)f.width * f.height * runs);
+        film_free(&f);
+    }
+    json_t *probe = json_pack("{s:f}", "mean_samples_per_pixel", spp);
+    if (probe && adaptive && json_object_set_new(probe, "rate_map", grade_rate_map_json(&map)) != 0) {
+        json_decref(probe);
+        probe = NULL;
+    }
     return probe;
 }
 

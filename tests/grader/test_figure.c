@@ -72,7 +72,7 @@ static char *case_output(const char *path, int index)
 
 /* A failing case's figures, as a forged render would choose them (every digit a message): the
  * public case shows them rounded, the hidden one shows its verdict and a 2-digit mean ratio alone. */
-static void test_report__figures_rounded_and_a_hidden_case_coarse(void **state)
+static void test_report__figures_rounded_and_a_hidden_case_a_verdict_alone(void **state)
 {
     (void)state;
     static grade_result res;
@@ -109,7 +109,9 @@ static void test_report__figures_rounded_and_a_hidden_case_coarse(void **state)
     assert_null(strstr(shown, "1.0123"));
     assert_null(strstr(shown, "2.718"));
     assert_null(strstr(shown, "6.28"));
-    assert_non_null(strstr(hidden, "Mean ratio to the reference 10."));  /* the mean of 1e300 and two more, clamped */
+    /* A hidden case shows its verdict alone: not one figure of its render (no digit at all). */
+    assert_non_null(strstr(hidden, "**fails** (a hidden case: its verdict alone is shown)"));
+    assert_null(strpbrk(hidden, "0123456789"));
     assert_null(strstr(hidden, "p-value"));
     assert_null(strstr(hidden, "x="));
     assert_null(strstr(hidden, "block"));
@@ -125,7 +127,7 @@ int figure_tests(void)
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(test_figure__rounded_to_three_digits_and_clamped),
         cmocka_unit_test(test_figure__a_test_message_shows_rounded_numbers),
-        cmocka_unit_test_setup_teardown(test_report__figures_rounded_and_a_hidden_case_coarse, scratch_setup,
+        cmocka_unit_test_setup_teardown(test_report__figures_rounded_and_a_hidden_case_a_verdict_alone, scratch_setup,
                                         scratch_teardown),
     };
     return cmocka_run_group_tests_name("figure", tests, NULL, NULL);

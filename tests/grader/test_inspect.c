@@ -105,7 +105,7 @@ static void test_inspect__a_local_name_never_defines_an_external_one(void **stat
     grade_inspect_verdict v = inspect(objs, 2, words, sizeof words);
     assert_int_equal(GRADE_INSPECT_CALL, v.code);
     assert_int_equal(0, v.object);
-    if (!strstr(words, "parts/p/a.c: calls `open`, a C library function"))
+    if (!strstr(words, "parts/p/a.c: calls 'open', a C library function"))
         fail_msg("expected the words to name the library's open, got '%s'", words);
 }
 
@@ -181,7 +181,7 @@ static void test_inspect__a_library_function_may_not_be_replaced(void **state)
 {
     (void)state;
     expect_one("malloc", "#include <stddef.h>\nvoid *malloc(size_t n) { (void)n; return 0; }\n", NULL,
-               GRADE_INSPECT_REDEFINES, "defines `malloc`, which a library of the program already defines");
+               GRADE_INSPECT_REDEFINES, "defines 'malloc', which a library of the program already defines");
 }
 
 /* ---- only the kinds of section and symbol plain C makes -------------------------------------- */

@@ -15,6 +15,7 @@
 #include "../../framework/file.h"
 #include "../../framework/exr.h"
 #include "../../framework/utf8.h"
+#include <cmark.h>
 #include <jansson.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -100,33 +101,36 @@ static void test_refs__the_course_references_pass(void **state)
     assert_string_equal(check(root), "");
 }
 
-/* The JSON a work_per_ray or adaptive case needs: missing, empty, broken, duplicated, zero. Before,
- * a missing part 2 JSON skipped the work check, and a render without the BVH got full marks. */
+/* The JSON an adaptive case needs: missing, empty, broken, duplicated, zero, and its sample-rate map
+ * missing or of another shape. Before, a missing part 2 JSON skipped its check, and a render without
+ * the BVH got full marks. */
 static void test_refs__the_json_a_check_needs_is_required(void **state)
 {
     (void)state;
-    char root[128], json[256], adaptive[256];
+    char root[128], adaptive[256];
     fresh_root(root, sizeof root);
-    snprintf(json, sizeof json, "%s/reference_images/part2/bunny_normals.json", root);
     snprintf(adaptive, sizeof adaptive, "%s/reference_images/part5/spheres_adaptive.json", root);
-    assert_int_equal(0, unlink(json));
-    expect_refused(root, "bunny_normals.json", "bunny_normals");
-    scratch_write(json, "");
-    expect_refused(root, "bunny_normals.json", "bunny_normals");
-    scratch_write(json, "{\"case\": \"bunny_normals\", \"part\": 2, \"samples\": 1, \"seed\": 1,");
-    expect_refused(root, "bunny_normals.json", "bunny_normals");
+    assert_int_equal(0, unlink(adaptive));
+    expect_refused(root, "spheres_adaptive.json", "spheres_adaptive");
+    scratch_write(adaptive, "");
+    expect_refused(root, "spheres_adaptive.json", "spheres_adaptive");
+    scratch_write(adaptive, "{\"case\": \"spheres_adaptive\", \"part\": 5, \"samples\": 1, \"seed\": 1,");
+    expect_refused(root, "spheres_adaptive.json", "spheres_adaptive");
     fresh_root(root, sizeof root);
-    ref_edit(json, "case_render", "work_per_ray", json_integer(0), true);
-    expect_refused(root, "duplicate", "bunny_normals");
-    fresh_root(root, sizeof root);
-    ref_edit(json, "case_render", "work_per_ray", json_integer(0), false);
-    expect_refused(root, "work_per_ray (a work_per_ray case)", "bunny_normals");
+    ref_edit(adaptive, "case_render", "mean_samples_per_pixel", json_integer(0), true);
+    expect_refused(root, "duplicate", "spheres_adaptive");
     fresh_root(root, sizeof root);
     ref_edit(adaptive, "case_render", "mean_samples_per_pixel", NULL, false);
-    expect_refused(root, "mean_samples_per_pixel (an adaptive case)", "spheres_adaptive");
+    expect_refused(root, "mean_samples_per_pixel and the rate_map of a case of its size (an adaptive case)", "spheres_adaptive");
     fresh_root(root, sizeof root);
-    ref_edit(json, NULL, "case", json_string("spheres_normals"), false);
-    expect_refused(root, "expected \"case\" bunny_normals", "bunny_normals");
+    ref_edit(adaptive, "case_render", "rate_map", NULL, false);
+    expect_refused(root, "the rate_map of a case of its size", "spheres_adaptive");
+    fresh_root(root, sizeof root);
+    ref_edit(adaptive, "case_render", "rate_map", json_pack("{s:i, s:i, s:[f]}", "columns", 1, "rows", 1, "mean", 4.0), false);
+    expect_refused(root, "the rate_map of a case of its size", "spheres_adaptive");
+    fresh_root(root, sizeof root);
+    ref_edit(adaptive, NULL, "case", json_string("spheres_normals"), false);
+    expect_refused(root, "expected \"case\" spheres_adaptive", "spheres_adaptive");
 }
 
 /* A film that is not the case's: a partial range, another flag, another size, a missing file. */
@@ -220,8 +224,8 @@ static void test_cases__every_member_known_and_typed(void **state)
     char want[160];
     assert_string_equal(load_doc(cases_doc()), "");
     json_t *doc = cases_doc();
-    json_object_set_new(first_case(doc, &name), "work_per_rays", json_true());
-    snprintf(want, sizeof want, "case %s: unknown member \"work_per_rays\"", name);
+    json_object_set_new(first_case(doc, &name), "work_checks", json_true());
+    snprintf(want, sizeof want, "case %s: unknown member \"work_checks\"", name);
     expect_error(load_doc(doc), want);
     doc = cases_doc();
     json_object_set_new(first_case(doc, &name), "samples", json_string("yes"));
@@ -647,6 +651,69 @@ static void test_facts__each_failure_has_its_cause(void **state)
     json_decref(j);
 }
 
+
+/* Markup planted in every field of results.json a submission can influence (the compiler's lines
+ * about its files, a test's message, a case's reason, the reason a suite scored nothing) shows as
+ * text once a course platform renders it: each "output" is rendered with CommonMark's reference
+ * library, and no tag, link, image, heading, emphasis or entity of the plant survives. */
+static const char *const planted[] = {
+    "<img src=x onerror=alert(1)>", "<script>alert(2)</script>", "[click](javascript:alert(3))", "![i](http://x/y.png)",
+    "**bold** __strong__ *em* _em_", "`code` ``` fence", "&lt;entity&gt; &amp;", "# heading", "| a | b |\n|---|---|",
+    "~~strike~~", "<http://autolink.example>", "line\n- list item\n1. numbered", "\\*escaped\\*", "> quote"};
+
+static void test_report__no_markup_a_submission_plants_survives(void **state)
+{
+    (void)state;
+    static grade_result res;
+    static grade_case cases[2];
+    static char joined[2048];
+    size_t n = 0;
+    for (size_t i = 0; i < sizeof planted / sizeof planted[0]; i++)
+        n += (size_t)snprintf(joined + n, sizeof joined - n, "%s ", planted[i]);
+    memset(&res, 0, sizeof res);
+    res.num_parts = 2;
+    grade_part_result *built = &res.parts[0], *refused = &res.parts[1];
+    built->part = 1, built->built = true, built->tests_run = 2, built->tests_failed = 1, built->num_cases = 1;
+    snprintf(built->failures, sizeof built->failures, "- `test_x`: ");
+    /* A failed test's message goes through the suite reader, which escapes it (grade_suite.c). */
+    char body[4096], why[200];
+    snprintf(body, sizeof body, "<testsuites><testsuite name=\"part1: g\" tests=\"1\" failures=\"1\" errors=\"0\">"
+             "<testcase name=\"test_x\"><failure><![CDATA[%s]]></failure></testcase></testsuite></testsuites>", joined);
+    assert_true(read_dir("markup", "part1: g.xml", body, built, why));
+    built->part = 1, built->built = true, built->num_cases = 1;
+    snprintf(cases[0].name, sizeof cases[0].name, "case_a");
+    built->cases[0].spec = &cases[0];
+    snprintf(built->cases[0].reason, sizeof built->cases[0].reason, "%s", joined);
+    refused->part = 2, refused->num_cases = 1;
+    snprintf(refused->suite_reason, sizeof refused->suite_reason, "%s", joined);
+    snprintf(refused->build_output, sizeof refused->build_output, "x.c:1: error: %s\n```\n%s", joined, joined);
+    snprintf(cases[1].name, sizeof cases[1].name, "case_b");
+    cases[1].hidden = true;
+    refused->cases[0].spec = &cases[1];
+    snprintf(refused->cases[0].reason, sizeof refused->cases[0].reason, "%s", joined);
+    char path[256];
+    pl_diag d = pl_diag_default();
+    snprintf(path, sizeof path, "%s/markup.json", scratch);
+    assert_int_equal(PL_OK, grade_write_results_json(&res, path, &d));
+    json_t *j = json_load_file(path, 0, NULL);
+    json_t *tests = json_object_get(j, "tests");
+    assert_int_equal(4, json_array_size(tests));
+    /* (A literal "&lt;" renders "&amp;lt;"; an entity that survived would render "&lt;".) */
+    static const char *const survivors[] = {"<img", "<script", "<a ", "<h1", "<h2", "<table", "<del", "<em", "<blockquote",
+                                            "<ol", "&lt;entity", "onerror=alert(1)>"};
+    for (size_t i = 0; i < json_array_size(tests); i++) {
+        const char *md = json_string_value(json_object_get(json_array_get(tests, i), "output"));
+        char *html = cmark_markdown_to_html(md, strlen(md), CMARK_OPT_DEFAULT);
+        for (size_t k = 0; k < sizeof survivors / sizeof survivors[0]; k++)
+            if (strstr(html, survivors[k]))
+                fail_msg("results.json's entry %zu renders planted markup (%s):\n%s", i, survivors[k], html);
+        /* The planted text is there, as text (a reason planted whole shows whole). */
+        if (!strstr(html, "alert(1)") && !strstr(html, "did not run")) fail_msg("entry %zu lost the planted text:\n%s", i, html);
+        free(html);
+    }
+    json_decref(j);
+}
+
 /* ---- the grader's own memory ---------------------------------------------------------------- */
 
 /* A grading run ends normally: exit 0 (full marks) or 1 (a student's tree with stubs), its
@@ -681,6 +748,7 @@ int readers_tests(void)
         cmocka_unit_test(test_refs__the_json_a_check_needs_is_required),
         cmocka_unit_test(test_refs__the_film_must_be_the_cases),
         cmocka_unit_test(test_facts__each_failure_has_its_cause),
+        cmocka_unit_test(test_report__no_markup_a_submission_plants_survives),
         cmocka_unit_test(test_cases__every_member_known_and_typed),
         cmocka_unit_test(test_cases__parts_listed_once_in_order_and_hidden_ones_listed_too),
         cmocka_unit_test(test_cases__task_shares_add_up_to_the_part),

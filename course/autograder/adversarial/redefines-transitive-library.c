@@ -4,12 +4,13 @@
  * take their place, so part code would run inside the scene loader, where the allow-list never
  * looked. The allow-list reads the names of every library loaded, transitively, and refuses the
  * part: zero, though its answers are right (with the definitions removed it gets full marks).
+ * (_Unwind_Backtrace is also a name reserved to the implementation, refused as such: issue 46.)
  * part: 5
  * base: solution
  * replaces: parts/part5_adaptive/adaptive.c
  * expect: unit=0 images=0
  * other: none
- * present: defines `_Unwind_Backtrace`, which a library of the program already defines
+ * present: defines 'lzma_code', which a library of the program already defines
  */
 #include "part5.h"
 #include <math.h>
