@@ -51,6 +51,8 @@ typedef struct {
     bool known_variance;                /* "statistic": "known_variance" (verdict.h), else the paired t */
     bool grazing;                       /* "grazing": lit at grazing angles, so dark means self-shadowing */
     bool noise_check;                   /* also judge the per-sample variance against the reference's */
+    double tolerance;                   /* "tolerance": a block may differ by this share of its brightness
+                                           before its test counts the difference (verdict_params) */
     bool rounding;                      /* "statistic": "rounding": a deterministic case, compared up to
                                            VERDICT_ROUNDING_TOLERANCE with VERDICT_TIE_PIXELS ties */
     char shows[160];                    /* what the case makes visible, for the report */

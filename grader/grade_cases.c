@@ -36,7 +36,7 @@ typedef struct { const char *name; char type; } member;
 static const member case_members[] = {
     {"name", 's'}, {"scene", 's'}, {"flags", 'a'}, {"resolution", 'a'}, {"samples", 'i'}, {"reference_samples", 'i'},
     {"reference_flags", 'a'}, {"points", 'n'}, {"visibility", 's'}, {"shows", 's'}, {"block_side", 'i'},
-    {"work_check", 'b'}, {"statistic", 's'}, {"grazing", 'b'}, {"noise_check", 'b'}, {NULL, 0}};
+    {"work_check", 'b'}, {"statistic", 's'}, {"grazing", 'b'}, {"noise_check", 'b'}, {"tolerance", 'n'}, {NULL, 0}};
 static const member part_members[] = {{"part", 'i'}, {"unit_points", 'n'}, {"unit_tests", 'i'}, {"unit_tasks", 'a'},
                                       {"cases", 'a'}, {NULL, 0}};
 static const member task_members[] = {{"task", 's'}, {"functions", 's'}, {"points", 'n'}, {"tests", 'i'}, {"match", 'a'},
@@ -110,6 +110,7 @@ static pl_status read_case(const char *path, int part, json_t *j, grade_case *c,
     c->block_side = (int)json_integer_value(json_object_get(j, "block_side"));
     c->work_check = json_is_true(json_object_get(j, "work_check"));
     c->noise_check = json_is_true(json_object_get(j, "noise_check"));
+    c->tolerance = json_number_value(json_object_get(j, "tolerance"));
     const char *statistic = json_string_value(json_object_get(j, "statistic"));
     c->known_variance = statistic && !strcmp(statistic, "known_variance");
     c->grazing = json_is_true(json_object_get(j, "grazing"));
@@ -129,10 +130,12 @@ static pl_status read_case(const char *path, int part, json_t *j, grade_case *c,
     /* The films of a case must be ones the film reader accepts (exr.h's caps). */
     if (c->width < 1 || c->height < 1 || c->width > 4096 || c->height > 4096 ||
         (long)c->width * c->height > EXR_MAX_PIXELS || c->samples < 1 || c->points < 0 ||
-        c->reference_samples < c->samples || c->reference_samples > EXR_MAX_SAMPLES || c->block_side < 0)
+        c->reference_samples < c->samples || c->reference_samples > EXR_MAX_SAMPLES || c->block_side < 0 ||
+        !(c->tolerance >= 0.0 && c->tolerance <= 0.25))
         return pl_fail(diag, PL_ERR_PARSE,
-                       "%s: case %s: expected a resolution in 1..4096 of at most %ld pixels, samples >= 1, points >= 0 "
-                       "and samples <= reference_samples <= %d", path, c->name, EXR_MAX_PIXELS, EXR_MAX_SAMPLES);
+                       "%s: case %s: expected a resolution in 1..4096 of at most %ld pixels, samples >= 1, points >= 0, "
+                       "samples <= reference_samples <= %d and a tolerance in 0..0.25", path, c->name, EXR_MAX_PIXELS,
+                       EXR_MAX_SAMPLES);
     pl_status st = read_flags(path, c->name, flags, c->flags, &c->num_flags, diag);
     json_t *ref_flags = json_object_get(j, "reference_flags");
     if (!st && ref_flags) st = read_flags(path, c->name, ref_flags, c->reference_flags, &c->num_reference_flags, diag);

@@ -480,6 +480,7 @@ static void judge(const grade_env *env, const grade_spec *spec, int part, const 
     vp.known_variance = k->known_variance;
     vp.deterministic = k->rounding;
     vp.grazing = k->grazing;
+    vp.relative_tolerance = k->tolerance;
     vp.reference_spp = k->reference_samples;
     if (k->block_side > 0) {
         vp.min_block_pixels = k->block_side * k->block_side;

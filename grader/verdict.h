@@ -87,6 +87,13 @@ typedef struct {
      * gets the self-shadowing hint (rays that start at the raw hit point hit their own surface,
      * which darkens exactly where light grazes it: framework/spawn.h). */
     bool grazing;
+    /* A relative tolerance (0 for none): each test's summed difference is shrunk towards zero by this
+     * share of the reference's sum before it is tested, so a block (or the image) off by less than
+     * that passes whatever its noise. For a case where the handout accepts two conventions whose
+     * images differ slightly (Schlick's cosine inside or outside the glass: the glass 1.6-2.7%
+     * darker), so that either passes with margin whatever the sample count; a bug that moves a block
+     * by more still fails as before, by its excess. */
+    double relative_tolerance;
     /* Deterministic: no test, a per-pixel tolerance and a number of tie pixels (above). */
     bool deterministic;
     double tolerance;       /* VERDICT_ROUNDING_TOLERANCE */

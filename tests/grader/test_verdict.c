@@ -114,6 +114,8 @@ static void test_verdict__global_factor_fails_with_hint(void **state)
         assert_false(v.pass);
         if (cases[k].word) assert_non_null(strstr(v.hint, cases[k].word));
         else assert_string_equal(v.hint, "");
+        /* Off by one factor everywhere: the blocks that stand out agree on it. */
+        if (!v.uniform_factor) fail_msg("a factor %g everywhere: the verdict did not find the blocks agree", cases[k].factor);
         verdict_free(&v);
     }
     free(cand);
@@ -132,6 +134,16 @@ static void test_verdict__local_bias_fails_at_its_block(void **state)
     verdict v = judge(cand);
     assert_false(v.pass);
     assert_true(v.worst_t < 0);
+    /* A region, not a factor everywhere: the blocks that stand out lie on the patch, 0.8 of its light. */
+    assert_false(v.uniform_factor);
+    assert_true(v.region_blocks > 0);
+    /* Within the blocks the patch (100..130, 20..50) overlaps. */
+    int rx0 = v.region_x0 * W / v.blocks_x, rx1 = (v.region_x1 + 1) * W / v.blocks_x;
+    int ry0 = v.region_y0 * H / v.blocks_y, ry1 = (v.region_y1 + 1) * H / v.blocks_y;
+    if (!(rx0 >= 100 / (W / v.blocks_x) * (W / v.blocks_x) && rx1 <= 160 && ry0 >= 0 && ry1 <= 50 + H / v.blocks_y &&
+          rx0 < 130 && rx1 > 100 && ry0 < 50 && ry1 > 20))
+        fail_msg("the region x %d..%d, y %d..%d is not the patch's blocks (100..130, 20..50)", rx0, rx1, ry0, ry1);
+    if (!(v.region_ratio > 0.75 && v.region_ratio < 0.9)) fail_msg("the region's ratio %g: expected about 0.8", v.region_ratio);
     if (v.worst_block_x >= 0) {
         /* the block [x0, x1) x [y0, y1) overlaps the patch (100, 130) x (20, 50) */
         int x0 = v.worst_block_x * W / v.blocks_x, x1 = (v.worst_block_x + 1) * W / v.blocks_x;
@@ -475,6 +487,34 @@ static void test_verdict__known_variance_ignores_a_forged_variance(void **state)
     free(cand_var);
 }
 
+/* A tolerance (a case that accepts two conventions whose images differ a little): a region 2%
+ * darker fails without it at many samples, passes with a 4% tolerance, and a region 10% darker still
+ * fails with it. */
+static void test_verdict__a_relative_tolerance_accepts_a_small_difference_only(void **state)
+{
+    (void)state;
+    float *cand = malloc(sizeof(float) * 3 * W * H);
+    assert_non_null(cand);
+    static const struct { float factor; double tolerance; bool pass; } cases[] = {
+        {0.98f, 0.0, false}, {0.98f, 0.04, true}, {0.90f, 0.04, false}};
+    for (size_t k = 0; k < sizeof cases / sizeof cases[0]; k++) {
+        render(cand, 1024, 11);  /* many samples: the 2% difference is far beyond the noise */
+        for (int y = 0; y < H; y++)
+            for (int x = 0; x < W / 2; x++)
+                for (int ch = 0; ch < 3; ch++) cand[3 * (y * W + x) + ch] *= cases[k].factor;
+        verdict_image c = {W, H, cand, NULL}, r = {W, H, reference, NULL};
+        verdict_params p = verdict_params_default(1024);
+        p.relative_tolerance = cases[k].tolerance;
+        verdict v;
+        assert_int_equal(verdict_compute(&c, &r, &p, &v, NULL), PL_OK);
+        if (v.pass != cases[k].pass)
+            fail_msg("half the image at %g, tolerance %g: expected %s, p = %g", cases[k].factor, cases[k].tolerance,
+                     cases[k].pass ? "a pass" : "a failure", v.p_value);
+        verdict_free(&v);
+    }
+    free(cand);
+}
+
 /* ---- the noise check: as noisy as the course's render, not more --------------------------------- */
 
 /* Per-sample variances: the reference's v everywhere; a candidate equal to it but for one firefly
@@ -515,6 +555,7 @@ int verdict_tests(void)
         cmocka_unit_test(test_verdict__global_factor_fails_with_hint),
         cmocka_unit_test(test_verdict__grazing_case_dark_names_self_shadowing),
         cmocka_unit_test(test_verdict__local_bias_fails_at_its_block),
+        cmocka_unit_test(test_verdict__a_relative_tolerance_accepts_a_small_difference_only),
         cmocka_unit_test(test_verdict__black_where_lit_and_bad_pixels),
         cmocka_unit_test(test_verdict__identical_deterministic_images_pass),
         cmocka_unit_test(test_verdict__known_variance_passes_jittered_edges_at_its_alpha),
