@@ -117,7 +117,13 @@ pl_status dae_check_room(dae_ctx *c, const xmlNode *at, long more);
 /* ---- converters, one per module ---------------------------------------------------------- */
 pl_status dae_instance_geometry(dae_ctx *c, const xmlNode *inst, mat4 to_world);
 pl_status dae_instance_light(dae_ctx *c, const xmlNode *inst, mat4 to_world);
-pl_status dae_instance_camera(dae_ctx *c, const xmlNode *inst, mat4 to_world);
+/* The camera also takes its node's transform in the file's coordinates (x, before the scene's
+ * origin is taken off), where CS184's framing direction is defined (camera.h's orbit_dir). */
+pl_status dae_instance_camera(dae_ctx *c, const xmlNode *inst, mat4 to_world, const dae_xform *x);
+/* Which camera a file's render uses: the last one for a file in the course's profile (CS184's
+ * Application::load sets its camera at every camera node), the first for any other. True when the
+ * camera about to be read replaces the one read before (or is the first). */
+bool dae_camera_wins(const dae_ctx *c, bool seen_one);
 
 /* Material bindings of one <instance_geometry>: symbol -> scene material index. */
 typedef struct { const char *symbol; int material; } dae_binding;

@@ -3,6 +3,7 @@
 #include "dae_internal.h"
 #include "light.h"
 
+#include <math.h>
 #include <string.h>
 
 
@@ -84,15 +85,42 @@ static pl_status check_fov(dae_ctx *c, const xmlNode *perspective, const char *n
     return dae_error(c, perspective, PL_ERR_INVALID, "expected %s in (0, 180) degrees, found %g", name, fov);
 }
 
-pl_status dae_instance_camera(dae_ctx *c, const xmlNode *inst, mat4 to_world)
+bool dae_camera_wins(const dae_ctx *c, bool seen_one) { return !seen_one || c->out->course_profile; }
+
+/* CS184's framing direction of a camera at x (camera.h's orbit_dir): c_dir = normalize(M (0,0,-1,1)),
+ * the node's matrix (up axis included) applied to the point (0, 0, -1), computed in double in the
+ * file's coordinates, as Application::load does. Zero, with a warning, where that point is the
+ * origin: the course's direction is undefined there (CS184 normalises a zero vector); the warning
+ * only for a course file, the one framed this way by default. */
+static vec3 cs184_orbit_dir(dae_ctx *c, const xmlNode *inst, const dae_xform *x)
+{
+    double p[3], len2 = 0;
+    for (int i = 0; i < 3; i++) {
+        p[i] = x->t[i] - (double)x->linear.m[i][2];  /* t + L (0, 0, -1) */
+        len2 += p[i] * p[i];
+    }
+    if (!(len2 > 0)) {
+        if (c->out->course_profile)  /* only a course file is framed this way by default */
+            dae_warn_once(c, inst, "orbit at origin", "the camera's point M (0, 0, -1) is the origin, where CS184's "
+                          "framing direction is undefined; its framing orbits opposite the camera's view instead");
+        return vec3_make(0, 0, 0);
+    }
+    double len = sqrt(len2);
+    return vec3_make((float)(p[0] / len), (float)(p[1] / len), (float)(p[2] / len));
+}
+
+pl_status dae_instance_camera(dae_ctx *c, const xmlNode *inst, mat4 to_world, const dae_xform *x)
 {
     dae_entry *entry;
     pl_status st = dae_resolve(c, inst, "url", "camera", &entry);
     if (st) return st;
-    /* The first camera instanced wins, as in CS184; later ones are warned about. */
+    /* One camera is kept (dae_camera_wins): a course file's last, as CS184's application keeps it,
+     * any other file's first; the others are warned about. */
     if (c->has_camera) {
-        dae_warn_once(c, inst, "second camera", "the scene has more than one camera; using the first");
-        return PL_OK;
+        bool last = dae_camera_wins(c, true);
+        dae_warn_once(c, inst, "second camera", "the scene has more than one camera; using the %s",
+                      last ? "last, as CS184 does with a file in the course's profile" : "first");
+        if (!last) return PL_OK;
     }
     const xmlNode *common = dae_child(dae_child(entry->node, "optics"), "technique_common");
     const xmlNode *perspective = dae_child(common, "perspective");
@@ -119,6 +147,7 @@ pl_status dae_instance_camera(dae_ctx *c, const xmlNode *inst, mat4 to_world)
         st = dae_error(c, perspective, PL_ERR_INVALID, "expected 0 <= znear < zfar, found %g and %g", znear, zfar);
     if (st) return st;
     c->out->camera = camera_from_collada(to_world, xfov, yfov, aspect, znear, zfar);
+    c->out->camera.orbit_dir = cs184_orbit_dir(c, inst, x);
     c->has_camera = true;
     return PL_OK;
 }
