@@ -372,7 +372,8 @@ static pl_status load_document(dae_ctx *c)
         for (const xmlNode *n = vs ? dae_first(vs->node) : NULL; n && !st; n = dae_next(n))
             st = visit_child(c, n, &up, 0);
     }
-    return st;
+    /* Last: whether a light's quad covers it is known only once every mesh is read. */
+    return st ? st : dae_make_lights_visible(c);
 }
 
 /* ---- entry points ------------------------------------------------------------------------ */
@@ -402,6 +403,7 @@ pl_status dae_load_memory_limited(const char *xml, size_t len, const char *name,
     pl_status st = parse_xml(&c, xml ? xml : "", xml ? len : 0);
     if (!st) st = load_document(&c);
     dae_index_free(&c.index);
+    free(c.light_nodes);
     xmlFreeDoc(c.doc);
     if (st) {
         scene_free(out);
