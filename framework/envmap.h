@@ -8,7 +8,8 @@
  * Radiance is piecewise constant: a direction sees the texel it falls in, with no filtering, so
  * the radiance a sampler returns and the one a ray that leaves the scene sees are the same
  * function, and a texel's share of the sphere is exactly what its solid angle says. (CS184 shows
- * the map to rays bilinearly filtered; handout/part8.md says why pathlab does not.) */
+ * rays the map filtered bilinearly; pathlab keeps the one function, which a sampler's density,
+ * constant on each texel, describes exactly, and the graded references show.) */
 #ifndef PL_ENVMAP_H
 #define PL_ENVMAP_H
 

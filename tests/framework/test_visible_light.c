@@ -62,6 +62,7 @@ static void test_visible_light_coverage__is_the_share_of_the_light_emissive_tria
         {"a quad beside it", 0, 0.5f, 0.9f, -0.4f, 0.4f, true, true, 0.0},
     };
     for (size_t k = 0; k < sizeof quads / sizeof quads[0]; k++) {
+        /* one quad at a time over a fresh light: the shares never add up across cases */
         scene s;
         scene_with_light(&s);
         add_quad(&s, LIGHT_Y + quads[k].dy, quads[k].x0, quads[k].x1, quads[k].z0, quads[k].z1, quads[k].down,
@@ -108,11 +109,13 @@ static void test_visible_light_add__tiles_the_light_and_glows_on_its_side(void *
     for (int flip = 0; flip < 2; flip++) {
         scene s;
         scene_with_light(&s);
+        /* flipped, edge_u x edge_v points along the light's direction instead of against it */
         if (flip) s.lights[0].edge_u = vec3_neg(s.lights[0].edge_u);
         int first = visible_light_add(&s, 0);
         assert_int_equal(0, first);
         assert_int_equal(2, s.num_triangles);
         assert_int_equal(1, s.visible_lights);
+        /* area and coverage together: no gap, no overlap */
         assert_float_near(0.48, triangle_area(&s.triangles[0]) + triangle_area(&s.triangles[1]), 1e-6);
         assert_float_near(1.0, coverage(&s), 1e-6);
         for (int i = 0; i < 2; i++) {
@@ -149,6 +152,7 @@ static void test_dae_load__makes_visible_only_the_lights_no_mesh_covers(void **s
     warn_log w;
     load(VALID "cs184_cbspheres_hw2_like.dae", &s, &w);
     assert_int_equal(1, s.visible_lights);
+    /* the box's five quads, then the light's two triangles, which cover it whole */
     assert_int_equal(12, s.num_triangles);
     assert_float_near(1.0, visible_light_coverage(&s, &s.lights[0], s.num_triangles), 1e-6);
     assert_rgb_near(rgb_gray(10), s.materials[s.triangles[10].material].Le, 0);
@@ -225,6 +229,7 @@ static void test_dae_load__a_light_made_visible_keeps_the_caps(void **state)
     dae_limits one = dae_limits_default();
     one.max_primitives = 1;
     char *text = lone_light("0.6 0 0 0  0 0.8 0 0  0 0 1 1.49  0 0 0 1", &len);
+    /* the document has no primitive of its own: the light's two are what the limit of one refuses */
     assert_int_equal(PL_ERR_INVALID, dae_load_memory_limited(text, len, "s.dae", &one, &s, &d));
     if (!strstr(d.error, "s.dae:4: <instance_light>: the scene would hold more than 1 primitives"))
         fail_msg("%s", d.error);
@@ -309,6 +314,8 @@ static void test_render__a_light_made_visible_renders_as_the_quad_over_it_would(
     free(text);
     load(VALID "cs184_cbspheres_hw2_like.dae", &made, &w);
     assert_int_equal(0, quad.visible_lights);
+    /* -m 0: the light seen; -m 1: direct light and the mirror; -m 5: the glass and its caustic;
+     * -H: light found only by rays that hit an emitter */
     static const struct { int depth; bool hemisphere; } runs[] = {{0, false}, {1, false}, {5, false}, {1, true}};
     for (size_t k = 0; k < sizeof runs / sizeof runs[0]; k++) {
         image a, b;
