@@ -117,18 +117,26 @@ camera camera_cs184_framing(const camera *c, aabb bounds, int width, int height)
     /* The original fixes the lens for its 800x600 window first. */
     camera lens = *c;
     camera_set_aspect(&lens, 800.0f / 600.0f);
-    /* It keeps only the view direction (the camera applied to (0,0,-1)) and orbits the centre of
-     * the bounds at 1.5 x their diagonal. */
-    vec3 view = vec3_normalize(mat4_dir(c->camera_to_world, vec3_make(0, 0, -1)));
+    /* It keeps only a direction (c_dir, camera.h's orbit_dir) and orbits the centre of the bounds
+     * at 1.5 x their diagonal, the eye on that side of it (CS184's Camera::place: target + r c_dir). */
+    vec3 side = camera_orbit_dir(c);
     vec3 centre = aabb_centroid(bounds);
     float dist = 1.5f * vec3_length(aabb_extent(bounds));
-    camera out = camera_looking(&lens, vec3_sub(centre, vec3_scale(view, dist)), centre);
+    camera out = camera_looking(&lens, vec3_add(centre, vec3_scale(side, dist)), centre);
     out.znear = fminf(c->znear, dist * 1e-3f);
     out.zfar = fmaxf(c->zfar, dist * 10.0f);
     /* -r W H keeps the pixel scale: other sizes crop or extend the 800x600 view. */
     out.hfov = camera_fov_scaled(out.hfov, (float)width, 800.0f);
     out.vfov = camera_fov_scaled(out.vfov, (float)height, 600.0f);
     return out;
+}
+
+vec3 camera_orbit_dir(const camera *c)
+{
+    if (vec3_length(c->orbit_dir) > 0.0f) return vec3_normalize(c->orbit_dir);
+    /* No course direction (a -c file, the default framing): behind the camera, so the orbit looks
+     * the way the camera looks. */
+    return vec3_normalize(mat4_dir(c->camera_to_world, vec3_make(0, 0, 1)));
 }
 
 bool camera_uses_cs184_framing(const scene *s, const options *o)
@@ -147,7 +155,7 @@ void camera_framing_line(const options *o, const scene *s, char *buf, size_t siz
                       : o->camera_file           ? "the -c file's camera"
                                                  : "the file is not in the course's profile";
     if (cs184)
-        snprintf(buf, size, "camera: CS184's framing, an orbit on the scene's bounds along the file camera's direction "
+        snprintf(buf, size, "camera: CS184's framing, an orbit on the scene's bounds from the side M (0,0,-1,1) of the file's camera "
                             "(%s); --camera literal for the file's own camera", why);
     else
         snprintf(buf, size, "camera: %s, as written (%s); --camera cs184 for CS184's framing",

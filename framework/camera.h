@@ -31,6 +31,12 @@ typedef struct {
     float lens_radius;     /* thin lens, metres (not used by parts 1-5) */
     float focal_distance;  /* thin lens, metres (not used by parts 1-5) */
     bool fov_is_vertical;  /* which fov the file fixed: the other follows the image aspect */
+    /* The side CS184's framing puts the eye on: the unit direction from the orbit's target to the
+     * eye. For a COLLADA camera the course's c_dir = normalize(M (0, 0, -1, 1)), its node's matrix
+     * (up axis included) applied to the POINT (0, 0, -1), translation and scale included, in the
+     * file's coordinates (dae_light.c); zero when none was set (a -c file, the default framing, a
+     * camera whose point is the origin): then the opposite of the view direction. */
+    vec3 orbit_dir;
 } camera;
 
 /* The one fov-from-extent formula: the field of view (degrees) whose sensor half-width
@@ -58,10 +64,14 @@ camera camera_from_cs184_settings(const float lens[5], const float pose[6], cons
  * +Z at 1.5 x their diagonal (a unit box around the origin when the bounds are empty). */
 camera camera_default_framing(aabb bounds);
 
-/* CS184's framing (--cs184-camera): keep only c's view direction, orbit the bounds' centre at 1.5 x
- * their diagonal, with the fov fixed for an 800x600 frame that a width x height image crops or
- * extends (the pixel scale stays, as in the original's -r). */
+/* CS184's framing (--cs184-camera): keep only the side c->orbit_dir names (camera_orbit_dir), orbit
+ * the bounds' centre at 1.5 x their diagonal from there, looking at it with world +Y up, with the fov
+ * fixed for an 800x600 frame that a width x height image crops or extends (the pixel scale stays, as
+ * in the original's -r). */
 camera camera_cs184_framing(const camera *c, aabb bounds, int width, int height);
+/* The unit direction from the orbit's target to the eye under CS184's framing: c->orbit_dir, or,
+ * when that is zero, the opposite of c's view direction. */
+vec3 camera_orbit_dir(const camera *c);
 
 /* The -b / -d flags: each replaces the camera's value only when it was given on the command line,
  * so a -c settings file's lens survives when they are not. Inline: the command line's warnings

@@ -245,8 +245,8 @@ static bool is_transform(const xmlNode *n)
 
 /* One child of a node, under the node's world transform x: a nested node, an instance of geometry,
  * a light, a camera or another node; anything else is warned about once. On the first pass
- * (c->finding_origin) only the nodes are followed, to the first camera, whose position becomes the
- * scene's origin. */
+ * (c->finding_origin) only the nodes are followed, to the cameras: the position of the one the
+ * render uses (dae_camera_wins) becomes the scene's origin. */
 static pl_status visit_child(dae_ctx *c, const xmlNode *e, const dae_xform *x, int depth)
 {
     if (dae_is(e, "node")) return visit_node(c, e, x, depth + 1);
@@ -256,11 +256,11 @@ static pl_status visit_child(dae_ctx *c, const xmlNode *e, const dae_xform *x, i
         return st ? st : visit_node(c, target->node, x, depth + 1);
     }
     if (c->finding_origin) {
-        /* The first camera's position, so that what the camera sees is stored with float's finest
-         * steps; but a camera within DAE_ORIGIN_NEAR of the file's origin leaves it at 0, so that a
+        /* The position of the camera the render uses (dae_camera_wins), so that what it sees is
+         * stored with float's finest steps; but a camera within DAE_ORIGIN_NEAR of the file's origin leaves it at 0, so that a
          * scene near its origin loads with exactly the file's numbers. Near in the camera's own
          * units: a scene scaled by 10^-3 (its camera too) 10 m away is 10^4 of its sizes away. */
-        if (dae_is(e, "instance_camera") && !c->origin_found) {
+        if (dae_is(e, "instance_camera") && dae_camera_wins(c, c->origin_found)) {
             double units = vec3_length(mat4_dir(x->linear, vec3_make(1, 0, 0))), reach = DAE_ORIGIN_NEAR * units;
             bool near = fabs(x->t[0]) < reach && fabs(x->t[1]) < reach && fabs(x->t[2]) < reach;
             for (int i = 0; i < 3; i++) c->out->origin[i] = near ? 0.0 : x->t[i];
@@ -271,7 +271,7 @@ static pl_status visit_child(dae_ctx *c, const xmlNode *e, const dae_xform *x, i
     mat4 m = xform_to_render(c, x);
     if (dae_is(e, "instance_geometry")) return dae_instance_geometry(c, e, m);
     if (dae_is(e, "instance_light")) return dae_instance_light(c, e, m);
-    if (dae_is(e, "instance_camera")) return dae_instance_camera(c, e, m);
+    if (dae_is(e, "instance_camera")) return dae_instance_camera(c, e, m, x);
     if (dae_is(e, "instance_controller")) {
         dae_warn_once(c, e, "instance_controller",
                       "skinned or morphed meshes (<instance_controller>) are not supported; skipped");
@@ -363,8 +363,8 @@ static pl_status load_document(dae_ctx *c)
     if (!inst) return dae_error(c, sc, PL_ERR_PARSE, "expected an <instance_visual_scene>");
     dae_entry *vs;
     st = dae_resolve(c, inst, "url", "visual_scene", &vs);
-    /* Two walks of the node tree: the first finds the first camera's position, the scene's origin
-     * (no camera: the file's own), the second loads everything relative to it. */
+    /* Two walks of the node tree: the first finds the render's camera's position, the scene's
+     * origin (no camera: the file's own), the second loads everything relative to it. */
     dae_xform up = xform_linear(c->up);
     for (int pass = 0; pass < 2 && !st; pass++) {
         c->finding_origin = pass == 0;
@@ -372,7 +372,8 @@ static pl_status load_document(dae_ctx *c)
         for (const xmlNode *n = vs ? dae_first(vs->node) : NULL; n && !st; n = dae_next(n))
             st = visit_child(c, n, &up, 0);
     }
-    return st;
+    /* Last: whether a light's quad covers it is known only once every mesh is read. */
+    return st ? st : dae_make_lights_visible(c);
 }
 
 /* ---- entry points ------------------------------------------------------------------------ */
@@ -402,6 +403,7 @@ pl_status dae_load_memory_limited(const char *xml, size_t len, const char *name,
     pl_status st = parse_xml(&c, xml ? xml : "", xml ? len : 0);
     if (!st) st = load_document(&c);
     dae_index_free(&c.index);
+    free(c.light_nodes);
     xmlFreeDoc(c.doc);
     if (st) {
         scene_free(out);

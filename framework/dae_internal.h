@@ -5,7 +5,7 @@
  *   dae_xml.c       element helpers, the id index, numbers, errors and once-per-kind warnings
  *   dae_geometry.c  meshes (<triangles>, <polylist>, <polygons>) and CGL spheres
  *   dae_material.c  material binding and the effect -> material translation
- *   dae_light.c     lights and the camera */
+ *   dae_light.c     lights (and the area lights made visible geometry) and the camera */
 #ifndef PL_DAE_INTERNAL_H
 #define PL_DAE_INTERNAL_H
 
@@ -55,6 +55,8 @@ typedef struct {
     bool has_camera;
     long node_visits;      /* bounds the work <instance_node> chains can cause */
     dae_limits limits;     /* primitives and instances the scene may ask for */
+    const xmlNode **light_nodes;  /* the <instance_light> of each scene light, for located messages */
+    int num_light_nodes, light_nodes_cap;
     const char *warned[DAE_MAX_WARN_KINDS];  /* kinds already warned about (string literals or names in doc) */
     int num_warned;
 } dae_ctx;
@@ -117,7 +119,16 @@ pl_status dae_check_room(dae_ctx *c, const xmlNode *at, long more);
 /* ---- converters, one per module ---------------------------------------------------------- */
 pl_status dae_instance_geometry(dae_ctx *c, const xmlNode *inst, mat4 to_world);
 pl_status dae_instance_light(dae_ctx *c, const xmlNode *inst, mat4 to_world);
-pl_status dae_instance_camera(dae_ctx *c, const xmlNode *inst, mat4 to_world);
+/* After the whole document: every area light no emissive mesh covers becomes visible geometry
+ * (visible_light.h), in the order of the lights, with located messages. */
+pl_status dae_make_lights_visible(dae_ctx *c);
+/* The camera also takes its node's transform in the file's coordinates (x, before the scene's
+ * origin is taken off), where CS184's framing direction is defined (camera.h's orbit_dir). */
+pl_status dae_instance_camera(dae_ctx *c, const xmlNode *inst, mat4 to_world, const dae_xform *x);
+/* Which camera a file's render uses: the last one for a file in the course's profile (CS184's
+ * Application::load sets its camera at every camera node), the first for any other. True when the
+ * camera about to be read replaces the one read before (or is the first). */
+bool dae_camera_wins(const dae_ctx *c, bool seen_one);
 
 /* Material bindings of one <instance_geometry>: symbol -> scene material index. */
 typedef struct { const char *symbol; int material; } dae_binding;

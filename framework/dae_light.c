@@ -2,7 +2,11 @@
  * <light> wins over technique_common, as in CS184. */
 #include "dae_internal.h"
 #include "light.h"
+#include "buf.h"
+#include "check.h"
+#include "visible_light.h"
 
+#include <math.h>
 #include <string.h>
 
 
@@ -71,7 +75,58 @@ pl_status dae_instance_light(dae_ctx *c, const xmlNode *inst, mat4 to_world)
     }
     light l;
     if ((st = read_light(c, shape, to_world, &l))) return st;
-    if (scene_add_light(c->out, l) < 0) return pl_fail(c->diag, PL_ERR_NOMEM, "%s: out of memory", c->name);
+    if (scene_add_light(c->out, l) < 0 ||
+        buf_append(&c->light_nodes, &c->num_light_nodes, &c->light_nodes_cap, sizeof inst, &inst) < 0)
+        return pl_fail(c->diag, PL_ERR_NOMEM, "%s: out of memory", c->name);
+    return PL_OK;
+}
+
+/* ---- area lights made visible ------------------------------------------------------------ */
+
+/* How many (area light, emissive triangle) pairs coverage would compare. */
+static long coverage_pairs(const scene *s)
+{
+    long lights = 0, emissive = 0;
+    for (int k = 0; k < s->num_lights; k++) lights += s->lights[k].kind == LIGHT_AREA;
+    for (int i = 0; i < s->num_triangles; i++) emissive += !rgb_is_black(s->materials[s->triangles[i].material].Le);
+    return lights * emissive;
+}
+
+/* Light k's two triangles, within the caps: the primitive limit and the coordinates' range. */
+static pl_status make_visible(dae_ctx *c, int k, const xmlNode *at)
+{
+    pl_status st = dae_check_room(c, at, 2);
+    for (int corner = 0; corner < 4 && !st; corner++)
+        st = dae_check_coord(c, at, "a corner of the area light made visible", light_area_corner(&c->out->lights[k], corner));
+    if (!st && visible_light_add(c->out, k) < 0) st = pl_fail(c->diag, PL_ERR_NOMEM, "%s: out of memory", c->name);
+    return st;
+}
+
+pl_status dae_make_lights_visible(dae_ctx *c)
+{
+    scene *s = c->out;
+    PL_CHECK(c->num_light_nodes == s->num_lights);
+    int file_triangles = s->num_triangles, num_lights = s->num_lights;
+    long pairs = coverage_pairs(s);
+    for (int k = 0; k < num_lights; k++) {
+        const light *l = &s->lights[k];
+        if (l->kind != LIGHT_AREA || rgb_is_black(l->radiance)) continue;  /* nothing to see */
+        const xmlNode *at = c->light_nodes[k];
+        if (pairs > VISIBLE_LIGHT_MAX_PAIRS) {
+            dae_warn_once(c, at, "visible lights", "%ld pairs of area lights and emissive triangles, more than the "
+                          "%ld the loader compares to find the lights no emissive mesh covers: every area light "
+                          "stays a pure light source, which rays do not see", pairs, (long)VISIBLE_LIGHT_MAX_PAIRS);
+            return PL_OK;
+        }
+        double covered = visible_light_coverage(s, l, file_triangles);
+        if (covered >= VISIBLE_LIGHT_COVERED) continue;  /* the file's own emitter shows it */
+        if (covered > VISIBLE_LIGHT_PARTLY)
+            dae_warn_once(c, at, "partly covered light", "emissive triangles cover %.0f%% of this area light: it is "
+                          "made visible whole, as CS184's second-assignment framework makes every area light, and "
+                          "where the file's mesh lies two emitters coincide", 100.0 * covered);
+        pl_status st = make_visible(c, k, at);
+        if (st) return st;
+    }
     return PL_OK;
 }
 
@@ -84,15 +139,42 @@ static pl_status check_fov(dae_ctx *c, const xmlNode *perspective, const char *n
     return dae_error(c, perspective, PL_ERR_INVALID, "expected %s in (0, 180) degrees, found %g", name, fov);
 }
 
-pl_status dae_instance_camera(dae_ctx *c, const xmlNode *inst, mat4 to_world)
+bool dae_camera_wins(const dae_ctx *c, bool seen_one) { return !seen_one || c->out->course_profile; }
+
+/* CS184's framing direction of a camera at x (camera.h's orbit_dir): c_dir = normalize(M (0,0,-1,1)),
+ * the node's matrix (up axis included) applied to the point (0, 0, -1), computed in double in the
+ * file's coordinates, as Application::load does. Zero, with a warning, where that point is the
+ * origin: the course's direction is undefined there (CS184 normalises a zero vector); the warning
+ * only for a course file, the one framed this way by default. */
+static vec3 cs184_orbit_dir(dae_ctx *c, const xmlNode *inst, const dae_xform *x)
+{
+    double p[3], len2 = 0;
+    for (int i = 0; i < 3; i++) {
+        p[i] = x->t[i] - (double)x->linear.m[i][2];  /* t + L (0, 0, -1) */
+        len2 += p[i] * p[i];
+    }
+    if (!(len2 > 0)) {
+        if (c->out->course_profile)  /* only a course file is framed this way by default */
+            dae_warn_once(c, inst, "orbit at origin", "the camera's point M (0, 0, -1) is the origin, where CS184's "
+                          "framing direction is undefined; its framing orbits opposite the camera's view instead");
+        return vec3_make(0, 0, 0);
+    }
+    double len = sqrt(len2);
+    return vec3_make((float)(p[0] / len), (float)(p[1] / len), (float)(p[2] / len));
+}
+
+pl_status dae_instance_camera(dae_ctx *c, const xmlNode *inst, mat4 to_world, const dae_xform *x)
 {
     dae_entry *entry;
     pl_status st = dae_resolve(c, inst, "url", "camera", &entry);
     if (st) return st;
-    /* The first camera instanced wins, as in CS184; later ones are warned about. */
+    /* One camera is kept (dae_camera_wins): a course file's last, as CS184's application keeps it,
+     * any other file's first; the others are warned about. */
     if (c->has_camera) {
-        dae_warn_once(c, inst, "second camera", "the scene has more than one camera; using the first");
-        return PL_OK;
+        bool last = dae_camera_wins(c, true);
+        dae_warn_once(c, inst, "second camera", "the scene has more than one camera; using the %s",
+                      last ? "last, as CS184 does with a file in the course's profile" : "first");
+        if (!last) return PL_OK;
     }
     const xmlNode *common = dae_child(dae_child(entry->node, "optics"), "technique_common");
     const xmlNode *perspective = dae_child(common, "perspective");
@@ -119,6 +201,7 @@ pl_status dae_instance_camera(dae_ctx *c, const xmlNode *inst, mat4 to_world)
         st = dae_error(c, perspective, PL_ERR_INVALID, "expected 0 <= znear < zfar, found %g and %g", znear, zfar);
     if (st) return st;
     c->out->camera = camera_from_collada(to_world, xfov, yfov, aspect, znear, zfar);
+    c->out->camera.orbit_dir = cs184_orbit_dir(c, inst, x);
     c->has_camera = true;
     return PL_OK;
 }

@@ -7,7 +7,9 @@
  *   texel (x, y) spans phi in [x, x + 1) * 2 pi / width and theta in [y, y + 1) * pi / height.
  * Radiance is piecewise constant: a direction sees the texel it falls in, with no filtering, so
  * the radiance a sampler returns and the one a ray that leaves the scene sees are the same
- * function, and a texel's share of the sphere is exactly what its solid angle says. */
+ * function, and a texel's share of the sphere is exactly what its solid angle says. (CS184 shows
+ * rays the map filtered bilinearly; pathlab keeps the one function, which a sampler's density,
+ * constant on each texel, describes exactly, and the graded references show.) */
 #ifndef PL_ENVMAP_H
 #define PL_ENVMAP_H
 

@@ -166,6 +166,12 @@ light light_make_area(vec3 position, vec3 edge_u, vec3 edge_v, vec3 direction, r
     return l;
 }
 
+vec3 light_area_corner(const light *l, int k)
+{
+    vec3 hu = vec3_scale(l->edge_u, 0.5f), hv = vec3_scale(l->edge_v, 0.5f);
+    return vec3_add(l->position, vec3_add(k & 1 ? hu : vec3_neg(hu), k & 2 ? hv : vec3_neg(hv)));
+}
+
 /* A seam function (framework/seam.h): a trace of this thread sees every light sample. */
 bool light_sample_L(const light *l, vec3 p, vec2 u, light_sample *out)
 {

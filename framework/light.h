@@ -27,6 +27,9 @@ PL_PART_API bool light_sample_L(const light *l, vec3 p, vec2 u, light_sample *ou
  * direction (its unit normal on that side), with no attenuation. Every area light is made here, so
  * that its area and spawn_ray_to_light's offset terms are never left for its maker to fill. */
 light light_make_area(vec3 position, vec3 edge_u, vec3 edge_v, vec3 direction, rgb radiance);
+/* Corner k (0 to 3) of area light l: position - edge_u / 2 - edge_v / 2, plus edge_u when bit 0 of
+ * k is set and edge_v when bit 1 is. */
+vec3 light_area_corner(const light *l, int k);
 
 /* Makes s->env a light (LIGHT_ENVIRONMENT) with part 8: with uniform (--env-uniform) sampled by
  * task 8.1; otherwise by task 8.4 from the tables task 8.2 builds here, which are checked first

@@ -23,6 +23,7 @@
 #include "file.h"
 #include "range.h"
 #include "trace.h"
+#include "visible_light.h"
 #include <errno.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -236,12 +237,15 @@ static int run(const options *o, const char *prog)
         return code;
     }
     /* What the scene and flags do not do that they might seem to, on stderr; which framing the
-     * camera uses, on the status lines (not in a trace, whose output is the pixel's story alone). */
+     * camera uses and which lights the loader made visible, on the status lines (not in a trace,
+     * whose output is the pixel's story alone). */
     cli_warn_noops(o, &s, &diag);
     if (!o->quiet && !o->trace) {
         char line[256];
         camera_framing_line(o, &s, line, sizeof line);
         printf("[pathlab] %s\n", line);
+        visible_light_status_line(&s, line, sizeof line);
+        if (line[0]) printf("[pathlab] %s\n", line);
         fflush(stdout);
     }
     double load_seconds = clock_seconds() - t0;

@@ -95,9 +95,11 @@ typedef struct scene {
     bool has_camera;     /* false: camera_default_framing frames the bounds */
     bool course_profile; /* the file is in CS184's course profile (dae.h): by default its camera is
                             framed as CS184's application frames it (camera_uses_cs184_framing) */
+    int visible_lights;  /* area lights the loader made visible geometry (visible_light.h): each
+                            added an emitter material and two triangles after the file's own */
     char path[512];      /* the file it came from ("" for code-built scenes) */
     /* Where the render's (0, 0, 0) is in the file's coordinates. Every position above is stored
-     * relative to it (dae.c takes the file's first camera, computed in double), so a scene far from
+     * relative to it (dae.c takes the position of the file's camera, in double), so a scene far from
      * its file's origin renders with the precision of one at it: float has 1/16 m steps at 10^6 m.
      * Add it back to report a position in the file's coordinates (the trace does). */
     double origin[3];

@@ -22,6 +22,7 @@ int placement_tests(void);  /* a scene renders the same wherever it sits (framew
 int parallel_tests(void);   /* parallel_for: every call once, the work counted for the caller */
 int envmap_tests(void);     /* environment maps: the mapping, reading one, a render seeing it */
 int material_tests(void);   /* the BSDF of a material, whatever its kind (framework/material.c) */
+int visible_light_tests(void);  /* area lights made visible geometry (framework/visible_light.c) */
 
 int main(void)
 {
@@ -49,5 +50,6 @@ int main(void)
     failed += parallel_tests();
     failed += envmap_tests();
     failed += material_tests();
+    failed += visible_light_tests();
     return failed ? 1 : 0;
 }

@@ -6,6 +6,8 @@
 #include "../../framework/cli.h"
 #include "../../framework/scene.h"
 #include "../../framework/dae.h"
+#include "../common/warn_log.h"
+#include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
 
@@ -153,6 +155,81 @@ static void test_camera_for_render__every_course_fixture_has_its_bounds_in_the_f
     }
 }
 
+/* CS184's framing direction written out from its Application::load, independently of the loader:
+ * c_dir = normalize(U M (0, 0, -1, 1)), M the camera node's matrix as the file writes it (row-major),
+ * U the Z-up mapping (x, y, z) -> (-x, z, y). The eye sits at the bounds' centre + r c_dir
+ * (Camera::place). With no camera c_dir is zero, and place() puts the eye at phi = acos(0) = pi/2,
+ * theta = atan2(0, 0) = 0: along (0, 0, 1). */
+static void cs184_c_dir(const double m[16], double out[3])
+{
+    if (!m) {
+        out[0] = 0, out[1] = 0, out[2] = 1;
+        return;
+    }
+    double p[3] = {m[3] - m[2], m[7] - m[6], m[11] - m[10]};  /* M (0, 0, -1, 1) */
+    double world[3] = {-p[0], p[2], p[1]}, len = sqrt(world[0] * world[0] + world[1] * world[1] + world[2] * world[2]);
+    for (int i = 0; i < 3; i++) out[i] = world[i] / len;
+}
+
+/* The opposite of the camera's view direction, U M (0, 0, 1, 0) normalised: the old framing's side. */
+static void view_side(const double m[16], double out[3])
+{
+    double world[3] = {-m[2], m[10], m[6]}, len = sqrt(world[0] * world[0] + world[1] * world[1] + world[2] * world[2]);
+    for (int i = 0; i < 3; i++) out[i] = world[i] / len;
+}
+
+static double angle_deg(const double a[3], const double b[3])
+{
+    double d = a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
+    return acos(d > 1 ? 1 : d < -1 ? -1 : d) * 180.0 / M_PI;
+}
+
+/* Every course-profile fixture, framed by default, has its eye on the side CS184's formula names,
+ * the formula computed here from the matrix each file writes (the last camera node's, where there
+ * are two); for the files whose camera is off its view axis the formula is checked to differ from
+ * the view direction's, so framing along the view (the old rule) or by the first camera fails. */
+static void test_camera_for_render__orbits_where_cs184s_point_formula_says(void **state)
+{
+    (void)state;
+    static const double on_axis[16] = {-1, 0, 0, 0, 0, 0, 1, 3.1, 0, 1, 0, 0, 0, 0, 0, 1};
+    static const double off_axis[16] = {-1, 0, 0, -0.5, 0, 0, 1, 3.1, 0, 1, 0, 0.5, 0, 0, 0, 1};
+    static const double second[16] = {-0.83205, 0.14825, -0.534522, -1.6, -0.5547, -0.222375, 0.801784, 2.4,
+                                      0, 0.963624, 0.267261, 1.4, 0, 0, 0, 1};
+    static const struct { const char *path; const double *m; double off_view_deg; } cases[] = {
+        {"tests/data/valid/cs184_cbempty_like.dae", on_axis, 0},
+        {"tests/data/valid/cs184_layout.dae", NULL, 0},  /* no camera */
+        {"tests/data/valid/cs184_cbspheres_hw2_like.dae", on_axis, 0},
+        {"tests/data/valid/cs184_camera_off_axis.dae", off_axis, 18.6},
+        {"tests/data/valid/cs184_two_cameras.dae", second, 15.0},
+    };
+    for (size_t k = 0; k < sizeof cases / sizeof cases[0]; k++) {
+        scene s;
+        warn_log w;
+        pl_diag d = warn_log_diag(&w);  /* the two cameras' warning is test_dae's */
+        assert_int_equal(PL_OK, dae_load(cases[k].path, &s, &d));
+        options o = options_default();
+        if (!camera_uses_cs184_framing(&s, &o)) fail_msg("%s is not framed CS184's way", cases[k].path);
+        camera c = camera_for_render(&s, &o);
+        vec3 side = vec3_normalize(vec3_sub(c.position, aabb_centroid(scene_bounds(&s))));
+        double want[3], got[3] = {side.x, side.y, side.z};
+        cs184_c_dir(cases[k].m, want);
+        if (angle_deg(want, got) > 1e-3)
+            fail_msg("%s: the eye is %.4f degrees from CS184's c_dir (%.6f %.6f %.6f): along (%.6f %.6f %.6f)",
+                     cases[k].path, angle_deg(want, got), want[0], want[1], want[2], got[0], got[1], got[2]);
+        if (cases[k].m) {
+            double old[3];
+            view_side(cases[k].m, old);
+            assert_float_near(cases[k].off_view_deg, angle_deg(want, old), 0.1);
+        }
+        scene_free(&s);
+    }
+    /* The two cameras differ, so keeping the first would fail above. */
+    double first[3], last[3];
+    cs184_c_dir(on_axis, first);
+    cs184_c_dir(second, last);
+    assert_true(angle_deg(first, last) > 40.0);
+}
+
 /* pathlab's own scenes are written in CS184's dialect too, but their cameras are meant literally:
  * none of them is in the course's profile, so no reference or grading case changes framing. */
 static void test_camera_for_render__keeps_pathlabs_own_scenes_literal(void **state)
@@ -181,6 +258,7 @@ int camera_tests(void)
         cmocka_unit_test(test_camera_for_render__keeps_the_settings_files_lens_unless_flags_are_given),
         cmocka_unit_test(test_camera_for_render__frames_a_course_file_as_cs184_by_default),
         cmocka_unit_test(test_camera_for_render__every_course_fixture_has_its_bounds_in_the_frame),
+        cmocka_unit_test(test_camera_for_render__orbits_where_cs184s_point_formula_says),
         cmocka_unit_test(test_camera_for_render__keeps_pathlabs_own_scenes_literal),
     };
     return cmocka_run_group_tests_name("camera", tests, NULL, NULL);

@@ -610,6 +610,23 @@ static void test_dae_camera__yfov_only_fixes_the_vertical_fov(void **state)
     scene_free(&s);
 }
 
+/* A file in the course's profile keeps its last camera, as CS184's Application::load does (it sets
+ * its camera at every camera node), and says so once; the scene's origin follows that camera. */
+static void test_dae_camera__a_course_file_keeps_its_last_camera(void **state)
+{
+    (void)state;
+    scene s;
+    warn_log w;
+    load_ok(VALID "cs184_two_cameras.dae", &s, &w);
+    assert_true(s.course_profile);
+    /* the second camera node: file (-1.6, 2.4, 1.4), world (1.6, 1.4, 2.4), looking at (0, 0.6, 0) */
+    assert_vec3_near(vec3_make(1.6f, 1.4f, 2.4f), s.camera.position, EPS);
+    vec3 ahead = vec3_normalize(vec3_make(-1.6f, -0.8f, -2.4f));
+    assert_vec3_near(ahead, mat4_dir(s.camera.camera_to_world, vec3_make(0, 0, -1)), 1e-5f);
+    assert_int_equal(1, warn_log_count(&w, "more than one camera; using the last"));
+    scene_free(&s);
+}
+
 /* ---- materials and warnings -------------------------------------------------------------- */
 
 static void test_dae_materials__every_cgl_kind_loads_with_one_warning_per_kind(void **state)
@@ -776,6 +793,7 @@ int dae_tests(void)
         cmocka_unit_test(test_dae_lights__area_light_from_the_cs184_cornell_matrix),
         cmocka_unit_test(test_dae_camera__xfov_and_aspect_give_the_vertical_fov),
         cmocka_unit_test(test_dae_camera__yfov_only_fixes_the_vertical_fov),
+        cmocka_unit_test(test_dae_camera__a_course_file_keeps_its_last_camera),
         cmocka_unit_test(test_dae_materials__every_cgl_kind_loads_with_one_warning_per_kind),
         cmocka_unit_test(test_dae_materials__one_sphere_geometry_instanced_with_two_materials),
         cmocka_unit_test(test_dae_warnings__unsupported_features_warn_once_per_kind),
