@@ -58,9 +58,9 @@ endif
 # test-portable checks it with gcc and clang). A file that needs more names itself below, with why.
 FEATURES := -D_POSIX_C_SOURCE=200809L
 # realpath() is POSIX.1-2008, but glibc declares it only with X/Open's interfaces on.
-XOPEN_SRC := framework/output.c grader/grade_main.c
+XOPEN_SRC := framework/output.c grader/grade_plan.c
 # The autograder's Linux-only sandbox code (namespaces, setgroups, pipe2): glibc's extensions.
-LINUX_SRC := grader/grade_run.c grader/sandbox_linux.c grader/probe_main.c
+LINUX_SRC := grader/grade_run.c grader/grade_sandbox.c grader/sandbox_linux.c grader/probe_main.c
 # Their objects in any build folder (build/release, build/san, build/fuzz) take these instead.
 $(addprefix %/,$(XOPEN_SRC:.c=.o)): FEATURES += -D_XOPEN_SOURCE=700
 $(addprefix %/,$(LINUX_SRC:.c=.o)): FEATURES := -D_GNU_SOURCE

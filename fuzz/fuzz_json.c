@@ -3,7 +3,7 @@
  * course's cases file (grade_spec_load: grading/cases.json) and as a reference's JSON
  * (grade_refs_figures, for a plain case and an adaptive one, whose rate map it reads). Refusals are expected;
  * only crashes, sanitizer reports and leaks count. */
-#include "../grader/grade.h"
+#include "../grader/grade_spec.h"
 #include "../grader/grade_refs.h"
 #include <stdio.h>
 #include <stdlib.h>

@@ -12,7 +12,7 @@
  * left is what the tasks need: math, random numbers, samplers, the scene, BVH, light and BSDF
  * accessors, the intersection entry points, the stub helpers, and parallel_for, whose threads the
  * sandbox confines like the process's own and whose counted work it hands back to the caller. */
-#include "grade_inspect.h"
+#include "grade_allow.h"
 #include <stdio.h>
 #include <string.h>
 
@@ -77,9 +77,9 @@ static bool libm_function(const char *s)
     return (s[n - 1] == 'f' || s[n - 1] == 'l') && in_list(allowed_libm, base);
 }
 
-const char *const *grade_allowed_framework(void) { return allowed_framework; }
+const char *const *grade_allow_framework(void) { return allowed_framework; }
 
-bool grade_allowed_add_all(grade_names *set)
+bool grade_allow_add_all(grade_names *set)
 {
     bool ok = true;
     for (const char *const *lists[] = {allowed_framework, allowed_libc}, *const *const *l = lists; l < lists + 2; l++)
@@ -93,7 +93,7 @@ bool grade_allowed_add_all(grade_names *set)
     return ok;
 }
 
-bool grade_allowed_symbol(const char *name)
+bool grade_allow_has(const char *name)
 {
     return in_list(allowed_framework, name) || in_list(allowed_libc, name) || libm_function(name);
 }

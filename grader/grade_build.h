@@ -1,34 +1,24 @@
-/* Grader machinery: not part of any assignment. The build stage of a submission (grade_build.c says
- * what it trusts): the manifest of the submitted files, their confined compile, and the link in a
- * tree the student's code never saw. */
+/* Grader machinery: not part of any assignment.
+ * The build stage (grade_build.c says what it trusts): a submission's part compiled confined,
+ * inspected and linked in a tree the student's code never saw; or a student's own tree built by its
+ * own make. Either returns the build's facts. */
 #ifndef PL_GRADE_BUILD_H
 #define PL_GRADE_BUILD_H
 
-#include "grade.h"
+#include "grade_manifest.h"
+#include "grade_plan.h"
+#include "grade_result.h"
 
-/* A part's submitted files, checked before anything reads them as code: regular files named
- * [a-z0-9_]+ then .c or .h (at most GRADE_SOURCE_NAME characters), at most GRADE_SOURCE_FILES of
- * them, each at most GRADE_SOURCE_BYTES of UTF-8 text without NUL bytes. An entry that ends in .c
- * or .h any other way (another name, a link, a folder) is refused; the others (a patch's .orig, a
- * notes file, .DS_Store) are no code, and are passed over, never read or named to any tool. */
-typedef struct {
-    char names[GRADE_SOURCE_FILES][GRADE_SOURCE_NAME + 1];
-    int count;
-} grade_manifest;
+/* Builds the part plan describes from the submission's files (the manifest m) into plan->tree: each
+ * submitted .c compiled alone, confined by sandbox, into an object; the objects taken out, inspected,
+ * and linked as the grader with the course's own objects of everything else into bin/pathtracer and
+ * bin/subject-part<n>. out->built, or out->why and the compiler's lines about the student's own files. */
+void grade_build_submission(const grade_plan *plan, const grade_manifest *m, const grade_sandbox *sandbox,
+                            grade_build_facts *out);
 
-/* The manifest of dir (the submission's parts/<folder>); false with why, in the grader's words and
- * naming the file, when something there that ends like code is not a file the build takes. */
-bool grade_manifest_read(const char *dir, const char *folder, grade_manifest *m, char *why, size_t size);
-
-/* The graded build's recipes (grader/grader.mk writes them in the course's tree, before any student
- * code is seen): the compiler, a part file's flags, each program's link line, as argument vectors. */
-#define GRADE_RECIPES "build/release/grade-recipes.txt"
-
-/* Builds part n of env->submission into `tree` (the caller's: a new folder in env->sandbox_dir):
- * each submitted .c compiled alone, confined, into an object; the objects taken out, and linked as
- * the grader with the course's own objects of everything else into bin/pathtracer and
- * bin/subject-part<n>. False with r->suite_reason (and the compiler's lines about the student's
- * own files in r->build_output) when the part is refused, does not compile or does not link. */
-bool grade_build_submission(const grade_env *env, int n, const char *tree, grade_part_result *r);
+/* A student's own tree (make grade): built by its own make, as they build it, with the course's
+ * warnings whatever they exported and no sanitizer, so `make grade` and `make` share every object.
+ * Their own code, on their own machine: nothing here is confined. */
+void grade_build_own_tree(const grade_plan *plan, grade_build_facts *out);
 
 #endif

@@ -7,8 +7,8 @@
  * (make's, "In file included from", another file's header and excerpt) is dropped. The linker's
  * "undefined reference" lines are kept when they name the part's own objects. What is kept is made
  * valid UTF-8 without control characters (each bad byte a '?'), and bounded by lines and bytes. */
-#include "grade.h"
 #include "grade_diag.h"
+#include "grade_limits.h"
 #include "../framework/file.h"
 #include <fcntl.h>
 #include <unistd.h>
@@ -35,7 +35,7 @@ static bool excerpt_line(const char *line)
 static bool own_link_line(const char *line, const char *folder)
 {
     char object[300];
-    grade_path(object, sizeof object, "build/release/parts/%s/", folder);
+    snprintf(object, sizeof object, "build/release/parts/%s/", folder);  /* folder: the course's, under 64 */
     return (!strncmp(line, "/usr/bin/ld: ", 13) || !strncmp(line, "ld: ", 4)) && strstr(line, object) &&
            !strstr(line, "..");
 }
@@ -73,7 +73,7 @@ void grade_diagnostics(const char *log, const char *folder, int max_lines, char 
     size_t len = 0, used = 0;
     pl_diag diag = pl_diag_default();
     if (file_read_all(log, "build log", GRADE_TOOL_LOG_MAX, &text, &len, &diag) != PL_OK) return;
-    grade_path(own, sizeof own, "parts/%s/", folder);
+    snprintf(own, sizeof own, "parts/%s/", folder);
     bool keeping = false;  /* inside a kept header's excerpt */
     int kept = 0;
     for (char *save = NULL, *line = strtok_r(text, "\n", &save); line && kept < max_lines; line = strtok_r(NULL, "\n", &save)) {

@@ -10,19 +10,20 @@
 #ifndef PL_GRADE_FACTS_H
 #define PL_GRADE_FACTS_H
 
-#include "grade.h"
+#include "grade_result.h"
+#include "../framework/status.h"
 
 #define GRADE_FACTS_SCHEMA "pathlab-grade-facts/1"
 
 /* Why case c did not pass, as a stable code, and the report's words for it in *words (both static
  * strings); NULL (and *words "") when it passed. */
-const char *grade_case_cause(const grade_part_result *p, const grade_case_result *c, const char **words);
+const char *grade_facts_case_cause(const grade_part_result *p, const grade_case_result *c, const char **words);
 
 /* Why part p's unit tests earned less than their points: "not_built", "suite_stopped", or "tests"
  * (some test failed: the first is first_failed_test); NULL when they earned everything. */
-const char *grade_unit_cause(const grade_part_result *p);
+const char *grade_facts_unit_cause(const grade_part_result *p);
 
 /* Writes r's facts to path, atomically. */
-pl_status grade_write_facts(const grade_result *r, const char *path, pl_diag *diag);
+pl_status grade_facts_write(const grade_result *r, const char *path, pl_diag *diag);
 
 #endif

@@ -12,7 +12,7 @@
 #include <stdarg.h>
 #include <stdio.h>
 #include <string.h>
-#include "grade.h"
+#include "grade_fmt.h"
 
 bool grade_path(char *out, size_t size, const char *format, ...)
 {
@@ -25,6 +25,11 @@ bool grade_path(char *out, size_t size, const char *format, ...)
     fprintf(stderr, "grade: path too long (%d bytes, room for %zu): %.200s...\n", n, size ? size - 1 : 0, size ? out : "");
     if (size) out[0] = '\0';  /* an empty path opens nothing, rather than a wrong file */
     return false;
+}
+
+bool grade_join(const char *dir, const char *name, char *out, size_t size)
+{
+    return grade_path(out, size, "%s/%s", dir, name);
 }
 
 void grade_msg(char *out, size_t size, const char *format, ...)

@@ -9,8 +9,8 @@
  *   a regular file (grade_guard_open_child_file): a render "written" as a link to a reference
  *   would otherwise be read, as root, and compared with itself. */
 #include "grade_guard.h"
-#include "grade.h"
-#include "grade_tree.h"
+#include "grade_fmt.h"
+#include "grade_run.h"
 #include <errno.h>
 #include <fcntl.h>
 #include <stdio.h>
@@ -29,27 +29,16 @@ static bool make_private(const char *path, const grade_sandbox *s)
     return chmod(path, 0700) == 0;
 }
 
-bool grade_guard_secrets(const char *root, const char *outdir, const grade_sandbox *s, char *why, size_t size)
+bool grade_guard_secrets(const grade_secrets *secrets, const grade_sandbox *s, char *why, size_t size)
 {
     if (!s->as_other_user) return true;  /* the child is the grader's own user: nothing a mode can hide */
-    /* parts/: the course's solutions, which a submission could otherwise #include or link to; bin/
-     * and build/: the course's programs and objects (the solution as machine code); course/ and
-     * release/: the course's own tools, its catalogues of bugs and the bundle's own copy of everything; the course's
-     * prebuilt objects (grade_tree.h); .git/: a checkout's history holds every solution and reference
-     * (a loose object of an EXR stores its bytes as they are). */
-    static const char *const secrets[] = {"reference_images", "grading/hidden", "parts", "bin", "build", "course",
-                                          "release", ".git", GRADE_PREBUILD};
-    char path[4200];
-    for (size_t k = 0; k < sizeof secrets / sizeof secrets[0]; k++) {
-        grade_path(path, sizeof path, "%s/%s", root, secrets[k]);
-        if (!make_private(path, s)) return grade_msg(why, size, "cannot make %s private to root", path), false;
+    /* What they are, and why each, is the plan's (grade_plan_secrets): the folders become root's
+     * alone; a file (results.json), readable by root alone. */
+    for (int k = 0; k < secrets->count; k++) {
+        const char *path = secrets->path[k];
+        if (secrets->file[k] ? chmod(path, 0600) != 0 && errno != ENOENT : !make_private(path, s))
+            return grade_msg(why, size, "cannot make %s private to root", path), false;
     }
-    /* The report shows references as PNGs; results.json is the verdict. The output folder itself
-     * stays enterable (the children's scratch lives below it), its results do not. */
-    grade_path(path, sizeof path, "%s/report", outdir);
-    if (!make_private(path, s)) return grade_msg(why, size, "cannot make %s private to root", path), false;
-    grade_path(path, sizeof path, "%s/results.json", outdir);
-    if (chmod(path, 0600) != 0 && errno != ENOENT) return grade_msg(why, size, "cannot protect %s", path), false;
     return true;
 }
 

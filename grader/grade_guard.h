@@ -5,12 +5,13 @@
 #include <stdbool.h>
 #include <stddef.h>
 
-#include "grade.h"
+#include "grade_plan.h"
+#include "grade_sandbox.h"
 
-/* When children run as another user: root's reference_images/ and grading/hidden/, and outdir's
- * report/ and results.json, become root's alone (folders 0700, the file 0600). False with why when
- * one cannot be protected (grading must then not run). */
-bool grade_guard_secrets(const char *root, const char *outdir, const grade_sandbox *s, char *why, size_t size);
+/* When children run as another user: the plan's secrets (grade_plan_secrets: the references, the
+ * hidden cases, the course's solutions and tools, the report and results.json) become root's alone
+ * (folders 0700, files 0600). False with why when one cannot be protected (grading must then not run). */
+bool grade_guard_secrets(const grade_secrets *secrets, const grade_sandbox *s, char *why, size_t size);
 
 /* A fresh, empty folder at path (whatever was there is removed) for a child to write into: owned by
  * the child's user when contained and the grader is root. */

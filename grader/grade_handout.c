@@ -4,6 +4,8 @@
  * shows that file's figures, so the two cannot drift apart. `bin/grade --handout write` rewrites the
  * tables in handout/part<N>.md; `--handout check` (and make test-grader) fails on any difference. */
 #include "grade_handout.h"
+#include "grade_fmt.h"
+#include "grade_plan.h"
 #include "../framework/file.h"
 #include <dirent.h>
 #include <stdarg.h>
@@ -35,7 +37,7 @@ static int compare_names(const void *a, const void *b) { return strcmp(*(char *c
 static int suite_tests(int part, char names[][96], int max)
 {
     char dir[64];
-    snprintf(dir, sizeof dir, "%s/part%d", "tests", part);  /* (split: the release check reads paths in code) */
+    grade_plan_suite_sources(part, dir, sizeof dir);
     DIR *d = opendir(dir);
     char *files[64];
     int nfiles = 0, n = 0;
@@ -49,9 +51,9 @@ static int suite_tests(int part, char names[][96], int max)
         char path[128], *text = NULL;
         size_t len = 0;
         pl_diag diag = pl_diag_default();
-        snprintf(path, sizeof path, "%s/%s", dir, files[f]);
+        bool named = grade_join(dir, files[f], path, sizeof path);
         free(files[f]);
-        if (file_read_all(path, "test source", (size_t)1 << 22, &text, &len, &diag) != PL_OK) continue;
+        if (!named || file_read_all(path, "test source", (size_t)1 << 22, &text, &len, &diag) != PL_OK) continue;
         for (char *at = text; (at = strstr(at, "\nstatic void test_")) && n < max;) {
             at += strlen("\nstatic void ");
             size_t name = strspn(at, "abcdefghijklmnopqrstuvwxyzABCDEFGHIJKLMNOPQRSTUVWXYZ0123456789_");
@@ -83,17 +85,19 @@ bool grade_handout_table(const grade_part_spec *p, char *out, size_t size)
              put(out, size, &len, " | %d | %g |\n", p->tasks[t].tests, p->tasks[t].points);
     }
     /* Each task's tests by name, as its suite defines them: the handout's prose never lists them all. */
-    static char names[GRADE_MAX_TESTS][96];
+    char (*names)[96] = malloc(GRADE_MAX_TESTS * sizeof *names);
+    if (!names) return false;
     int count = suite_tests(p->part, names, GRADE_MAX_TESTS);
     for (int t = 0; ok && t < p->num_tasks; t++) {
         ok = put(out, size, &len, "%s- task %s's tests:", t ? "" : "\n", p->tasks[t].task);
         for (int i = 0, first = 1; ok && i < count; i++)
-            if (grade_task_of(p, names[i]) == t) {
+            if (grade_spec_task_of(p, names[i]) == t) {
                 ok = put(out, size, &len, "%s `%s`", first ? "" : ",", names[i] + strlen("test_"));
                 first = 0;
             }
         ok = ok && put(out, size, &len, ".\n");
     }
+    free(names);
     ok = ok && put(out, size, &len, "\n| case | what it shows | render | points | reference |\n"
                    "| --- | --- | --- | --- | --- |\n");
     for (int i = 0; ok && i < p->num_cases; i++) {
@@ -105,11 +109,6 @@ bool grade_handout_table(const grade_part_spec *p, char *out, size_t size)
                        k->height, k->samples, k->points, k->name, p->part, k->name);
     }
     return ok;
-}
-
-void grade_handout_path(int part, char *out, size_t size)
-{
-    snprintf(out, size, "%s/part%d%s", "handout", part, ".md");
 }
 
 pl_status grade_handout_update(const char *path, const grade_part_spec *p, bool write, pl_diag *diag)

@@ -3,15 +3,13 @@
 #ifndef PL_GRADE_HANDOUT_H
 #define PL_GRADE_HANDOUT_H
 
-#include "grade.h"
+#include <stddef.h>
+#include "grade_spec.h"
 
 /* Part p's grading table as Markdown: its unit tasks (task, functions, tests, points), then its
  * public image cases (name, what it shows, render flags, points, reference picture). False when
  * it does not fit in size bytes. */
 bool grade_handout_table(const grade_part_spec *p, char *out, size_t size);
-
-/* Part part's handout file, relative to the course's top: handout/part<N>.md. */
-void grade_handout_path(int part, char *out, size_t size);
 
 /* The generated table of the handout file at path, between its BEGIN GENERATED and END GENERATED
  * lines, against part p's: rewritten (atomically) when write, else any difference is an error. */

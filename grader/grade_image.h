@@ -1,27 +1,33 @@
-/* Grader machinery: not part of any assignment. One image case: render, read, judge, picture. */
+/* Grader machinery: not part of any assignment.
+ * The verdict stage of an image case (grade_image.c): a film against the course's reference, and the
+ * figures judged beside it, into the case's facts (grade_result.h). */
 #ifndef PL_GRADE_IMAGE_H
 #define PL_GRADE_IMAGE_H
 
-#include "grade.h"
+#include "grade_plan.h"
+#include "grade_result.h"
+#include "../framework/film.h"
+#include "../framework/image.h"
 
-/* Renders case c->spec with tree's bin/pathtracer at env->seed, reads the film it sent and the
- * reference (root/reference_images/part<N>/<case>.exr), judges them, writes the report's pictures,
- * and scores the case (all of its points on a pass, none otherwise).
- * A statistical case that fails on its p-value alone is rendered once more, at
- * grade_confirm_seed(env->seed), and judged on that render: it fails only when both renders fail.
- * A correct render fails one test by chance (at most about 1 in 1,000 measured, grading/CALIBRATION.md),
- * two independent renders of it both fail about once in a million; a bug fails both. c then holds
- * the second render's result, with the first's seed and p-value. */
-void grade_image_case(const grade_env *env, const grade_spec *spec, const char *tree, int part, grade_case_result *c);
+/* The course's reference of a case (its EXR at path): its mean image and each mean's variance; a
+ * reference that cannot be read or holds a bad pixel is the course's problem (why: GRADE_WHY_COURSE). */
+pl_status grade_image_reference(const char *path, image *out, image *var, grade_why *why);
 
-/* Why a render stopped, from its log (written by the grader from the render's output), as one of the
- * grader's own fixed sentences: a tree the framework refused (which of bvh_validate's rules it
- * broke), an error from bvh_build, a task still a stub; "" when the log names no reason the grader
- * knows. The log is the render's: nothing of it is copied, its line only selects a sentence. */
-void grade_image_log_reason(const char *log, char *out, size_t size);
+/* Judges film f of case pc against the reference (refimg, refvar) into c: c->ran, c->v, the figures,
+ * c->pass, c->chance_failure (it failed on its p-value alone), the pixels to trace (a public case that
+ * failed), and the two images for the report. A statistical case that fails on chance alone is
+ * rendered again by the caller (grade_part.c): a correct render fails about once in a thousand
+ * gradings at most (grading/CALIBRATION.md), two independent ones about once in a million; a bug
+ * fails both. */
+void grade_image_judge(const grade_spec *spec, const grade_plan_case *pc, const film *f, const image *refimg,
+                       const image *refvar, grade_case_result *c);
 
-/* The seed of a case's second render: a fixed function of the grading's seed (so bin/grade --seed
- * makes both renders again), far from it in the seed space, below 10^12 like every grading seed. */
-unsigned long long grade_confirm_seed(unsigned long long seed);
+/* A case's figures beside its image, each true where the case does not judge it: the adaptive
+ * render's mean samples per pixel and its sample-rate map against the course's, the render's CPU
+ * time against the baseline's (GRADE_WORK_FACTOR, GRADE_SCAN_FACTOR), its noise (GRADE_NOISE_FACTOR). */
+bool grade_image_spp_ok(const grade_case_result *c);
+bool grade_image_rate_ok(const grade_case_result *c);
+bool grade_image_work_ok(const grade_case_result *c);
+bool grade_image_noise_ok(const grade_case_result *c);
 
 #endif

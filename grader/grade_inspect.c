@@ -27,8 +27,10 @@
  * checks: it does not read the machine code (a disassembler can be led astray by instructions that
  * overlap), and the filter stops a system call however it is made. */
 #include "grade_inspect.h"
-#include "grade.h"
-#include "grade_tree.h"
+#include "grade_allow.h"
+#include "grade_why.h"
+#include "grade_plan.h"
+#include "grade_run.h"
 #include "../framework/file.h"
 #include "../framework/seam.h"
 #include <dirent.h>
@@ -114,7 +116,8 @@ static bool add_defined(Elf *e, Elf64_Word type, grade_names *set)
 static bool library_path(const char *name, char *out, size_t size)
 {
     char cmd[512];
-    if (strpbrk(name, "'\"\\$`\n ") || !grade_path(cmd, sizeof cmd, "cc -print-file-name='%s' 2>/dev/null", name)) return false;
+    if (strpbrk(name, "'\"\\$`\n ") || snprintf(cmd, sizeof cmd, "cc -print-file-name='%s' 2>/dev/null", name) >= (int)sizeof cmd)
+        return false;
     FILE *p = popen(cmd, "r");
     bool ok = p && fgets(out, (int)size, p) != NULL;
     if (p) pclose(p);
@@ -157,7 +160,7 @@ bool grade_inspect_course_load(const char *program, const char *const *own_objec
                                char *why, size_t size)
 {
     *c = (grade_inspect_course){0};
-    bool ok = grade_allowed_add_all(&c->allowed);
+    bool ok = grade_allow_add_all(&c->allowed);
 #define ADD_PART_FUNCTION(name, task) ok = ok && grade_names_add(&c->allowed, #name);
     PL_SEAM_PART_FUNCTIONS(ADD_PART_FUNCTION)
 #undef ADD_PART_FUNCTION
@@ -268,7 +271,7 @@ typedef struct {
 
 static grade_inspect_verdict verdict_of(int code, int object_index, const char *name, long bound)
 {
-    grade_inspect_verdict v = {code, object_index, "", bound};
+    grade_inspect_verdict v = {.code = code, .object = object_index, .bound = bound};
     if (name) snprintf(v.name, sizeof v.name, "%s", name);
     return v;
 }
@@ -419,7 +422,7 @@ void grade_inspect_course_free(grade_inspect_course *c) { (void)c; }
 grade_inspect_verdict grade_inspect_objects(const char *const objects[], int n, const grade_inspect_course *c)
 {
     (void)objects, (void)n, (void)c;
-    return (grade_inspect_verdict){GRADE_INSPECT_UNREADABLE, 0, "", 0};
+    return (grade_inspect_verdict){.code = GRADE_INSPECT_UNREADABLE};
 }
 #endif
 
@@ -436,86 +439,25 @@ bool grade_inspect_course_add_names(grade_inspect_course *c, const char *path)
     return ok;
 }
 
-/* ---- the verdict in words --------------------------------------------------------------------- */
+/* ---- what of a verdict may be shown ------------------------------------------------------------ */
 
-/* What a refused name is, said with the name only when the course knows it (a library's or the
- * program's: the course's own words); a student's name is described instead. */
-static void reference_text(const grade_inspect_verdict *v, const grade_inspect_course *c, char *out, size_t size)
+void grade_inspect_keep_known(grade_inspect_verdict *v, const grade_inspect_course *c)
 {
-    if (grade_names_has(&c->library, v->name))
-        grade_msg(out, size, "calls '%s', a C library function part code may not use (handout/README.md, \"What "
-                  "your part may call\", lists what it may)", v->name);
-    else if (grade_names_has(&c->program, v->name))
-        grade_msg(out, size, "calls '%s', a framework function part code may not call (its declaration has no "
-                  "PL_PART_API: it is the framework's own)", v->name);
-    else
-        grade_msg(out, size, "refers to a name that is on no list of what part code may call and that no other file "
-                  "of the part defines as global (a static function of another file?)");
-}
-
-static void redefinition_text(const grade_inspect_verdict *v, const grade_inspect_course *c, char *out, size_t size)
-{
-    if (grade_names_has(&c->library, v->name))
-        grade_msg(out, size, "defines '%s', which a library of the program already defines: part code may not replace "
-                  "library functions (rename it, or make it static)", v->name);
-    else if (grade_names_has(&c->program, v->name))
-        grade_msg(out, size, "defines '%s', which the framework or another part already defines (rename it, or make "
-                  "it static)", v->name);
-    else grade_msg(out, size, "defines a name the framework or a library already defines (rename it, or make it static)");
-}
-
-/* The bounds' names, as check_sections and check_symbols give them (fixed words of the grader). */
-static const char *const bound_names[] = {"sections", "symbols", "a section's name", "a symbol's name", NULL};
-
-static void bound_text(const grade_inspect_verdict *v, char *out, size_t size)
-{
-    for (const char *const *b = bound_names; *b; b++)
-        if (!strcmp(v->name, *b)) {
-            if (**b == 'a') grade_msg(out, size, "has %s over %ld bytes long: far more than plain C compiles to", *b, v->bound);
-            else grade_msg(out, size, "has over %ld %s: far more than a part's file compiles to", v->bound, *b);
-            return;
-        }
-    grade_msg(out, size, "could not be inspected within the grader's memory");
-}
-
-void grade_inspect_describe(const grade_inspect_verdict *v, const grade_inspect_course *c, const char *const names[],
-                            char *out, size_t size)
-{
-    char what[512];
-    const char *runtime = v->code == GRADE_INSPECT_BEFORE_MAIN ? runtime_section(v->name) : NULL;
-    switch (v->code) {
-    case GRADE_INSPECT_BOUND: bound_text(v, what, sizeof what); break;
-    case GRADE_INSPECT_BYTECODE:
-        grade_msg(what, sizeof what, "holds link-time optimisation bytecode, not machine code");
-        break;
-    case GRADE_INSPECT_BEFORE_MAIN:
-        if (runtime) grade_msg(what, sizeof what, "has a %s section: code the C runtime runs outside the part's tasks (a "
-                               "constructor or destructor), which part code may not have", runtime);
-        else grade_msg(what, sizeof what, "has an array of functions the C runtime calls (a constructor or destructor), "
-                       "which part code may not have");
-        break;
-    case GRADE_INSPECT_SECTION:
-        grade_msg(what, sizeof what, "has a section of a kind plain C does not compile to (a section attribute, or "
-                  "assembly?): part code may hold only code, data, read-only and zero-filled data, notes, unwind tables "
-                  "and debug information");
-        break;
-    case GRADE_INSPECT_IFUNC:
-        grade_msg(what, sizeof what, "defines an indirect function (an IFUNC, whose resolver the program's loader runs "
-                  "before main), which part code may not");
-        break;
-    case GRADE_INSPECT_SYMBOL_KIND:
-        grade_msg(what, sizeof what, "has a symbol of a type or binding plain C does not make (assembly?)");
-        break;
-    case GRADE_INSPECT_RESERVED:
-        grade_msg(what, sizeof what, "defines a global name reserved to the C implementation (one that starts with an "
-                  "underscore, or main, names the C runtime calls): make it static, or rename it");
-        break;
-    case GRADE_INSPECT_REDEFINES: redefinition_text(v, c, what, sizeof what); break;
-    case GRADE_INSPECT_CALL: reference_text(v, c, what, sizeof what); break;
-    default:
-        grade_msg(what, sizeof what, "is not an object file of this machine that the course's compiler makes");
+    v->name[sizeof v->name - 1] = '\0';
+    v->known = GRADE_NAME_UNKNOWN;
+    if (v->code == GRADE_INSPECT_CALL || v->code == GRADE_INSPECT_REDEFINES)
+        v->known = grade_names_has(&c->library, v->name) ? GRADE_NAME_LIBRARY
+                 : grade_names_has(&c->program, v->name) ? GRADE_NAME_FRAMEWORK : GRADE_NAME_UNKNOWN;
+    else if (v->code == GRADE_INSPECT_BEFORE_MAIN && runtime_section(v->name)) {
+        snprintf(v->name, sizeof v->name, "%s", runtime_section(v->name));  /* the list's spelling */
+        v->known = GRADE_NAME_RUNTIME;
     }
-    grade_msg(out, size, "%s: %s", names[v->object], what);
+    else if (v->code == GRADE_INSPECT_BOUND) {
+        static const char *const bounds[] = {"sections", "symbols", "a section's name", "a symbol's name", NULL};
+        for (const char *const *b = bounds; *b; b++)
+            if (!strcmp(v->name, *b)) v->known = GRADE_NAME_BOUND;
+    }
+    if (v->known == GRADE_NAME_UNKNOWN) v->name[0] = '\0';  /* the student's own: never shown */
 }
 
 /* ---- the files the compiler read ---------------------------------------------------------------- */
@@ -556,30 +498,25 @@ static bool allowed_input(const char *folder, const char *path)
 {
     char own[300];
     const char *slash;
-    grade_path(own, sizeof own, "parts/%s/", folder);
+    snprintf(own, sizeof own, "parts/%.200s/", folder);  /* a prefix to compare, not a path to open */
     return !strncmp(path, own, strlen(own)) ||
            (!strncmp(path, "framework/", 10) && !strchr(path + 10, '/') && is_header(path)) ||
            (!strncmp(path, "parts/", 6) && (slash = strchr(path + 6, '/')) && !strncmp(slash + 1, "part", 4) &&
             !strchr(slash + 1, '/') && is_header(path));
 }
 
-bool grade_inspect_dependencies(const char *folder, const char *dep_file, char *what, size_t size)
+bool grade_inspect_dependencies(const char *folder, const char *dep_file)
 {
     char *text = NULL;
     size_t len = 0;
     pl_diag diag = pl_diag_default();
-    if (file_read_all(dep_file, "dependency file", GRADE_TOOL_LOG_MAX, &text, &len, &diag) != PL_OK)
-        return grade_msg(what, size, "the build left no dependency file"), false;
+    if (file_read_all(dep_file, "dependency file", GRADE_TOOL_LOG_MAX, &text, &len, &diag) != PL_OK) return false;
     bool ok = true;
     for (char *save = NULL, *tok = strtok_r(text, " \t\r\n", &save); tok && ok; tok = strtok_r(NULL, " \t\r\n", &save)) {
         size_t n = strlen(tok);
         if (!strcmp(tok, "\\") || tok[n - 1] == ':') continue;  /* a line continuation, or a rule's target */
         char path[1024];
-        /* The path is the student's choice: described, never quoted. */
-        if (!tree_path(tok, path, sizeof path) || !allowed_input(folder, path))
-            ok = (grade_msg(what, size, "includes a file that is neither its part's own, a framework header nor a part's "
-                            "header (an absolute path, or one outside the part's folder?): part code may include only "
-                            "those"), false);
+        ok = tree_path(tok, path, sizeof path) && allowed_input(folder, path);
     }
     free(text);
     return ok;
@@ -587,10 +524,8 @@ bool grade_inspect_dependencies(const char *folder, const char *dep_file, char *
 
 /* ---- the grader's stage: the objects read in a confined child ------------------------------------ */
 
-#define MAX_OBJECTS 32  /* GRADE_SOURCE_FILES: a part's .c files */
-
 typedef struct {
-    const char *objects[MAX_OBJECTS];
+    const char *objects[GRADE_SOURCE_FILES];
     int count;
     const grade_inspect_course *course;
 } inspection;
@@ -613,77 +548,56 @@ static bool verdict_received(const grade_capture *cap, int count, grade_inspect_
     return v->code >= 0 && v->code < GRADE_INSPECT_CODES && v->object >= 0 && v->object < count;
 }
 
-/* The course's own objects of the part (its build's), NULL-terminated into list. */
-static int course_objects(const char *course, const char *folder, char paths[][4400], const char **list)
+/* The course's own objects of the part (its build's, in course_objects), NULL-terminated into list. */
+static void course_objects(const char *dir, grade_path_buf *paths, const char **list)
 {
-    char dir[4300];
     int n = 0;
-    grade_path(dir, sizeof dir, "%s/" GRADE_OBJECTS "/parts/%s", course, folder);
     DIR *d = opendir(dir);
-    for (struct dirent *e; d && n < MAX_OBJECTS && (e = readdir(d));) {
+    for (struct dirent *e; d && n < GRADE_SOURCE_FILES && (e = readdir(d));) {
         size_t len = strlen(e->d_name);
-        if (len > 2 && !strcmp(e->d_name + len - 2, ".o") && grade_path(paths[n], 4400, "%s/%s", dir, e->d_name))
+        if (len > 2 && !strcmp(e->d_name + len - 2, ".o") && grade_join(dir, e->d_name, paths[n], GRADE_PATH))
             list[n] = paths[n], n++;
     }
     if (d) closedir(d);
     list[n] = NULL;
-    return n;
 }
 
-/* The part's .c files in the tree (the manifest's, copied there), their objects and dependency
- * files; the count, or -1 when the folder cannot be read. */
-static int part_files(const char *tree, const char *folder, char names[][300], char objects[][4400], char deps[][4400])
+bool grade_inspect_part(const struct grade_plan *plan, const grade_sandbox *sandbox, struct grade_why *why)
 {
-    char dir[4300];
-    int n = 0;
-    grade_path(dir, sizeof dir, "%s/parts/%s", tree, folder);
-    DIR *d = opendir(dir);
-    if (!d) return -1;
-    for (struct dirent *e; n < MAX_OBJECTS && (e = readdir(d));) {
-        size_t len = strlen(e->d_name);
-        if (len < 3 || strcmp(e->d_name + len - 2, ".c")) continue;
-        grade_path(names[n], 300, "parts/%s/%s", folder, e->d_name);
-        grade_path(objects[n], 4400, "%s/" GRADE_OBJECTS "/parts/%s/%.*s.o", tree, folder, (int)len - 2, e->d_name);
-        grade_path(deps[n], 4400, "%s/" GRADE_OBJECTS "/parts/%s/%.*s.d", tree, folder, (int)len - 2, e->d_name);
-        n++;
-    }
-    closedir(d);
-    return n;
-}
-
-bool grade_inspect_part(const char *tree, const char *course, const char *folder, int n, const char *work,
-                        double deadline, char *why, size_t size)
-{
-    static char names[MAX_OBJECTS][300], objects[MAX_OBJECTS][4400], deps[MAX_OBJECTS][4400], own[MAX_OBJECTS][4400];
-    const char *shown[MAX_OBJECTS], *own_list[MAX_OBJECTS + 1];
-    inspection in = {.count = part_files(tree, folder, names, objects, deps)};
-    if (in.count < 0) return grade_msg(why, size, "cannot read parts/%s", folder), false;
-    char what[512];
+    inspection in = {.count = plan->num_sources};
     for (int i = 0; i < in.count; i++) {
-        in.objects[i] = objects[i], shown[i] = names[i];
-        if (!grade_inspect_dependencies(folder, deps[i], what, sizeof what))
-            return grade_msg(why, size, "%s: %s", names[i], what), false;
+        in.objects[i] = plan->sources[i].obj;
+        if (!grade_inspect_dependencies(plan->folder, plan->sources[i].dep)) {
+            *why = grade_why_of(GRADE_WHY_INCLUDES);
+            snprintf(why->file, sizeof why->file, "%s", plan->sources[i].name);
+            return false;
+        }
     }
-    char program[4300], log[4300];
-    grade_path(program, sizeof program, "%s/bin/subject-part%d", course, n);
-    course_objects(course, folder, own, own_list);
+    grade_path_buf *own = malloc((GRADE_SOURCE_FILES + 1) * sizeof *own);
+    const char *own_list[GRADE_SOURCE_FILES + 1] = {NULL};
     grade_inspect_course c;
-    if (!grade_inspect_course_load(program, own_list, &c, why, size)) return false;
+    if (own) course_objects(plan->course_objects, own, own_list);
+    bool loaded = own && grade_inspect_course_load(plan->course_program, own_list, &c, why->detail, sizeof why->detail);
+    free(own);
+    if (!loaded) return why->code = GRADE_WHY_COURSE, false;
     in.course = &c;
     /* The objects are hostile: libelf reads them in a child confined like student code, which sends
      * back one fixed-size verdict. */
     grade_capture cap = {.child_fd = 3, .max = sizeof(grade_inspect_verdict)};
-    grade_path(log, sizeof log, "%s/inspect.log", work);
-    grade_run_opts o = {.wall_seconds = GRADE_INSPECT_SECONDS, .deadline = deadline, .log_path = log, .log_max = GRADE_LOG_MAX, .untrusted = true,
-                        .capture = &cap};
+    grade_run_opts o = {.wall_seconds = GRADE_INSPECT_SECONDS, .deadline = plan->deadline, .log_path = plan->inspect_log,
+                        .log_max = GRADE_LOG_MAX, .untrusted = true, .capture = &cap, .sandbox = sandbox};
     grade_run_result rr = grade_run_function(inspect_child, &in, &o);
     grade_inspect_verdict v;
     bool ok = rr.exited && rr.status == 0 && verdict_received(&cap, in.count, &v);
-    if (!ok) grade_msg(why, size, "parts/%s: its objects could not be inspected (%s)", folder,
-                      rr.out_of_time ? GRADE_OUT_OF_TIME : rr.timed_out ? "the inspection ran out of time"
-                                                                        : "the inspection stopped");
+    if (!ok) {
+        *why = grade_why_of(GRADE_WHY_NOT_INSPECTED);
+        why->run = rr;
+    }
     else if (v.code != GRADE_INSPECT_OK) {
-        grade_inspect_describe(&v, &c, shown, why, size);
+        grade_inspect_keep_known(&v, &c);
+        *why = grade_why_of(GRADE_WHY_INSPECTION);
+        why->inspect = v;
+        snprintf(why->file, sizeof why->file, "%s", plan->sources[v.object].name);
         ok = false;
     }
     free(cap.data);

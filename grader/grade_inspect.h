@@ -7,18 +7,12 @@
 #define PL_GRADE_INSPECT_H
 
 #include "grade_names.h"
+#include "grade_sandbox.h"
+#include "grade_why.h"
 #include <stdbool.h>
 #include <stddef.h>
 
-/* ---- the allow-list (grade_allow.c) ----------------------------------------------------------- */
-
-/* True when part code may refer to name: the allow-list, not counting the parts' own functions. */
-bool grade_allowed_symbol(const char *name);
-/* The framework functions on that list, NULL-terminated: the ones the framework headers mark
- * PL_PART_API (tests/grader/test_allow.c checks that the two agree). */
-const char *const *grade_allowed_framework(void);
-/* Adds every name of the allow-list to set (libm's in all three precisions); false when out of memory. */
-bool grade_allowed_add_all(grade_names *set);
+struct grade_plan;
 
 /* ---- what the inspection knows of the course ------------------------------------------------ */
 
@@ -45,59 +39,34 @@ bool grade_inspect_course_add_names(grade_inspect_course *c, const char *path);
 
 /* ---- the verdict ---------------------------------------------------------------------------- */
 
-typedef enum {
-    GRADE_INSPECT_OK = 0,
-    GRADE_INSPECT_UNREADABLE,     /* not a relocatable ELF object of the course's machine */
-    GRADE_INSPECT_BOUND,          /* over one of the bounds below */
-    GRADE_INSPECT_BYTECODE,       /* link-time optimisation bytecode, not machine code */
-    GRADE_INSPECT_BEFORE_MAIN,    /* a section the C runtime runs code from (.init_array, .ctors, .init, ...) */
-    GRADE_INSPECT_SECTION,        /* a section of a kind plain C does not compile to */
-    GRADE_INSPECT_IFUNC,          /* an indirect function: its resolver runs while the program loads */
-    GRADE_INSPECT_SYMBOL_KIND,    /* a symbol of a type, binding or section plain C does not make */
-    GRADE_INSPECT_RESERVED,       /* defines a global name reserved to the C implementation */
-    GRADE_INSPECT_REDEFINES,      /* defines a name a library or the framework already defines */
-    GRADE_INSPECT_CALL,           /* refers to a name that is not on the allow-list nor the part's own */
-    GRADE_INSPECT_CODES
-} grade_inspect_code;
-
-#define GRADE_INSPECT_NAME 128    /* a name the verdict carries (longer ones are cut: never quoted then) */
+/* The verdict's type and codes are facts of a why (grade_why.h). */
 /* Bounds: an object past any of them is refused whole (the course's largest holds ~60 sections and
  * ~400 symbols); every step of the inspection is then linear in the object's size. */
 #define GRADE_INSPECT_SECTIONS 4096
 #define GRADE_INSPECT_SYMBOLS 65536
 #define GRADE_INSPECT_NAME_BYTES 1024
 
-typedef struct {
-    int code;                     /* grade_inspect_code */
-    int object;                   /* the index of the object at fault */
-    char name[GRADE_INSPECT_NAME];/* the symbol or section at fault, as the object spells it */
-    long bound;                   /* for GRADE_INSPECT_BOUND: the bound passed */
-} grade_inspect_verdict;
-
 /* Inspects the n objects of one part against the course. Reads hostile files: the grader calls it
  * only in a confined child (grade_inspect_part). */
 grade_inspect_verdict grade_inspect_objects(const char *const objects[], int n, const grade_inspect_course *c);
 
-/* The verdict in the grader's words, for the student: the object's file name (names[v->object]),
- * what is wrong and what to do. A name is quoted only when the course knows it (a library's, the
- * framework's, a section the C runtime runs): the student's own names are described, never quoted. */
-void grade_inspect_describe(const grade_inspect_verdict *v, const grade_inspect_course *c, const char *const names[],
-                            char *out, size_t size);
+/* Keeps v's name only where the course knows it (a library's or the framework's name, a runtime
+ * section of the list, a bound's own words), and says which kind it is; empties it otherwise. */
+void grade_inspect_keep_known(grade_inspect_verdict *v, const grade_inspect_course *c);
 
 /* ---- the grader's stage ----------------------------------------------------------------------- */
 
-/* Inspects the objects the build made from the .c files of parts/<folder> in the tree (built
- * without LTO), before anything is linked from them, with its logs in work (a folder the child
- * cannot write): the files the compiler read (its dependency files), then the objects, in a child
- * confined as an untrusted stage (grade_run_function), within GRADE_INSPECT_SECONDS and the grading's
- * deadline (clock_seconds(), 0 for none). The course's names come
- * from course (its built tree): its bin/subject-part<n> and its own objects of the part. True when
- * every object keeps to the allow-list; otherwise false with why = "parts/<folder>/<file>: <what>". */
-bool grade_inspect_part(const char *tree, const char *course, const char *folder, int n, const char *work,
-                        double deadline, char *why, size_t size);
+/* Inspects the objects the build made from the part's .c files (plan->sources: built without LTO, so
+ * they hold machine code), before anything is linked from them: the files the compiler read (their
+ * dependency files), then the objects, in a child confined as an untrusted stage
+ * (grade_run_function), within GRADE_INSPECT_SECONDS and the plan's deadline. The course's names
+ * come from the plan's course program and the course's own objects of the part. True when every
+ * object keeps to the allow-list; otherwise false with why (GRADE_WHY_INCLUDES, GRADE_WHY_INSPECTION
+ * and its verdict, GRADE_WHY_NOT_INSPECTED, or GRADE_WHY_COURSE). */
+bool grade_inspect_part(const struct grade_plan *plan, const grade_sandbox *sandbox, grade_why *why);
 
-/* The files the compiler read for one object (its dependency file dep_file), each the part's own
- * (parts/<folder>/), a framework header or a part's header; false with what = why not. */
-bool grade_inspect_dependencies(const char *folder, const char *dep_file, char *what, size_t size);
+/* Whether the files the compiler read for one object (its dependency file dep_file) are each the
+ * part's own (parts/<folder>/), a framework header or a part's header. */
+bool grade_inspect_dependencies(const char *folder, const char *dep_file);
 
 #endif

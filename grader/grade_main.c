@@ -16,18 +16,21 @@
  * Exit status: 0 when every graded part got full marks, 1 otherwise, 2 for bad arguments or a course's
  * file that is not usable (grading/cases.json, a reference: grade_refs.h), before anyone is graded, 3
  * when the grader's own set-up on this machine is wrong (the course's problem: no part was graded). */
-#include "grade.h"
+#include "grade_calibrate.h"
 #include "grade_facts.h"
-#include "grade_handout.h"
-#include "../framework/clock.h"
 #include "grade_guard.h"
-#include "grade_image.h"
+#include "grade_handout.h"
+#include "grade_part.h"
+#include "grade_plan.h"
 #include "grade_refs.h"
+#include "grade_report.h"
+#include "grade_score.h"
 #include "grade_tree.h"
+#include "grade_words.h"
 #include "sandbox.h"
+#include "../framework/clock.h"
 #include <dirent.h>
 #include <errno.h>
-#include <math.h>
 #include <signal.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -46,97 +49,13 @@ static int usage(const char *msg)
 
 /* The grading seed: fresh from the kernel unless given, and recorded in every output. /dev/urandom
  * is on Linux and macOS alike (getrandom is Linux's). */
-static uint64_t fresh_seed(void)
+static unsigned long long fresh_seed(void)
 {
     uint64_t s = 0;
     FILE *f = fopen("/dev/urandom", "rb");
     if (!f || fread(&s, sizeof s, 1, f) != 1) s = (uint64_t)time(NULL) * 2654435761u;
     if (f) fclose(f);
     return s % 1000000000000ull;
-}
-
-/* --calibrate: the grader's own false-failure rate, measured on this tree (the solution). */
-/* Whether name is one of the comma-separated names (NULL: every name). */
-static bool name_listed(const char *names, const char *name)
-{
-    if (!names) return true;
-    size_t len = strlen(name);
-    for (const char *p = names; (p = strstr(p, name)) != NULL; p += len)
-        if ((p == names || p[-1] == ',') && (p[len] == ',' || p[len] == '\0')) return true;
-    return false;
-}
-
-/* The smallest and largest of a figure over the runs (NaN and negative values, "not judged", left out). */
-typedef struct { double min, max; } figure_range;
-
-static void range_add(figure_range *r, double x)
-{
-    if (!(x >= 0)) return;
-    if (x < r->min) r->min = x;
-    if (x > r->max) r->max = x;
-}
-
-static int calibrate(const grade_env *base, const grade_spec *spec, const char *parts, const char *cases, int runs)
-{
-    int worst = 0;
-    printf("%-28s %6s %9s %9s %8s  p-value deciles\n", "case", "runs", "failures", "confirmed", "alpha");
-    for (int k = 0; k < GRADE_MAX_PART; k++) {
-        char digit[2] = {(char)('1' + k), 0};
-        if (!strstr(parts, digit)) continue;
-        const grade_part_spec *p = &spec->parts[k];
-        if (!grade_part_dirs(base, p->part)) {
-            fprintf(stderr, "grade: cannot create %s/part%d\n", base->work, p->part);
-            return 1;
-        }
-        for (int i = 0; i < p->num_cases; i++) {
-            if (!name_listed(cases, p->cases[i].name)) continue;
-            int failures = 0, confirmed = 0, decile[10] = {0};
-            figure_range noise = {INFINITY, 0}, rate = {INFINITY, 0}, work = {INFINITY, 0};
-            for (int run = 0; run < runs; run++) {
-                grade_env env = *base;
-                env.seed = fresh_seed();
-                grade_case_result c;
-                memset(&c, 0, sizeof c);
-                c.spec = &p->cases[i];
-                grade_image_case(&env, spec, env.root, p->part, &c);
-                if (!c.ran) {
-                    fprintf(stderr, "grade: %s: %s\n", c.spec->name, c.reason);
-                    return 1;
-                }
-                /* Two counts: the first render's failures (the test's own rate, what its alpha claims)
-                 * and the case's, confirmed by a second render (grade_image.h). A failure of the
-                 * solution is a false failure: its seed makes it again. */
-                bool first_failed = c.rendered_twice || !c.pass;
-                double first_p = c.rendered_twice ? c.first_p : c.v.p_value;
-                failures += first_failed;
-                confirmed += !c.pass;
-                if (first_failed)
-                    fprintf(stderr, "grade: part %d, case %s fails at seed %llu (p = %.3g)%s: bin/grade --parts %d --seed %llu "
-                                    "shows it\n", p->part, c.spec->name, (unsigned long long)env.seed, first_p,
-                            c.pass ? ", its second render passes" : c.rendered_twice ? ", its second render too" : "",
-                            p->part, (unsigned long long)env.seed);
-                range_add(&noise, c.noise);
-                range_add(&rate, c.rate_distance);
-                range_add(&work, c.base_cpu > 0 ? c.cpu / c.base_cpu : NAN);
-                decile[first_p >= 1.0 ? 9 : (int)(first_p * 10)]++;
-                verdict_free(&c.v);
-            }
-            printf("part%d/%-22s %6d %9d %9d %8.0e ", p->part, p->cases[i].name, runs, failures, confirmed,
-                   spec->family_alpha);
-            for (int d = 0; d < 10; d++) printf(" %3d", decile[d]);
-            if (p->cases[i].noise_check)
-                printf("   noise ratio %.3f to %.3f (limit %.2f)", noise.min, noise.max, GRADE_NOISE_FACTOR);
-            if (rate.max > 0)
-                printf("   rate map distance %.3f to %.3f (limit %.2f)", rate.min, rate.max, GRADE_RATE_TOLERANCE);
-            if (p->cases[i].work_check)  /* a tree's own grading: against the framework's linear scan */
-                printf("   CPU time over the linear scan's %.4f to %.4f (limit %.4f)", work.min, work.max,
-                       1.0 / GRADE_SCAN_FACTOR);
-            printf("\n");
-            fflush(stdout);
-            worst = confirmed > worst ? confirmed : worst;
-        }
-    }
-    return worst > 0;
 }
 
 /* Whether this machine confines student code as the autograder does (namespaces). A student's
@@ -154,37 +73,24 @@ static void clear_report(const char *report)
     DIR *d = opendir(report);
     for (struct dirent *e; d && (e = readdir(d));) {
         size_t n = strlen(e->d_name);
-        char path[4400];
+        grade_path_buf path;
         struct stat st;
         bool page = (n > 4 && !strcmp(e->d_name + n - 4, ".png")) || (n > 5 && !strcmp(e->d_name + n - 5, ".html"));
-        if (page && grade_path(path, sizeof path, "%s/%s", report, e->d_name) && lstat(path, &st) == 0 && S_ISREG(st.st_mode))
+        if (page && grade_join(report, e->d_name, path, sizeof path) && lstat(path, &st) == 0 && S_ISREG(st.st_mode))
             unlink(path);
     }
     if (d) closedir(d);
 }
 
-/* mkdir -p: the default out/grade may be the first thing made under out/. */
-static bool make_dir(const char *path)
-{
-    char buf[4096];
-    if (snprintf(buf, sizeof buf, "%s", path) >= (int)sizeof buf) return false;
-    for (char *p = buf + 1; *p; p++)
-        if (*p == '/') {
-            *p = '\0';
-            if (mkdir(buf, 0755) != 0 && errno != EEXIST) return false;
-            *p = '/';
-        }
-    return mkdir(buf, 0755) == 0 || errno == EEXIST;
-}
-
 /* The sandbox's folder: the only one the sandbox's user may enter (0711: it cannot list it either),
- * made fresh outside --out, so that an --out the sandbox's user cannot reach (a `mktemp -d` folder,
- * root's home) does not matter. */
-static bool make_sandbox_dir(char *out, size_t size)
+ * made fresh outside --out (the plan names it under $TMPDIR), so that an --out the sandbox's user
+ * cannot reach (a `mktemp -d` folder, root's home) does not matter. */
+static bool make_sandbox_dir(grade_run_plan *rp)
 {
-    const char *tmp = getenv("TMPDIR") && getenv("TMPDIR")[0] == '/' ? getenv("TMPDIR") : "/tmp";
-    grade_path(out, size, "%s/" GRADE_SANDBOX_NAME "XXXXXX", tmp);
-    return mkdtemp(out) && chmod(out, 0711) == 0;
+    grade_plan_sandbox_template(rp);
+    if (!mkdtemp(rp->sandbox) || chmod(rp->sandbox, 0711) != 0) return false;
+    grade_plan_sandbox_made(rp);
+    return true;
 }
 
 /* ---- the janitor ---------------------------------------------------------------------------- */
@@ -252,7 +158,7 @@ static bool reachable_by_sandbox_user(const grade_sandbox *s, const char *path)
 /* The grader's own set-up, checked before any part is graded (a submission, as root): the filter,
  * the sandbox's folder, the secrets out of reach, the course's own build. False with why: the
  * course's problem, which must never become a student's 0. */
-static bool setup_ok(const grade_env *env, const char *outdir, const char *parts, char *why, size_t size)
+static bool setup_ok(const grade_env *env, const grade_run_plan *rp, const char *parts, char *why, size_t size)
 {
     const grade_sandbox *s = &env->sandbox;
     if (s->as_other_user && !s->filter)
@@ -261,15 +167,18 @@ static bool setup_ok(const grade_env *env, const char *outdir, const char *parts
         return grade_msg(why, size, "the sandbox's user cannot reach %s (a parent folder closed to others? set TMPDIR "
                                    "to a folder it can reach)", env->sandbox_dir), false;
     if (chmod(env->work, 0700) != 0) return grade_msg(why, size, "cannot make %s private", env->work), false;
-    if (!grade_guard_secrets(env->root, outdir, s, why, size)) return false;
-    return grade_tree_course_build(env, parts, why, size);
+    grade_secrets secrets;
+    grade_plan_secrets(rp, &secrets);
+    if (!grade_guard_secrets(&secrets, s, why, size)) return false;
+    return grade_tree_course_build(rp, parts, why, size);
 }
 
 /* Grades the parts listed in `parts` into result; the staff log gets one line a part. */
 /* Each part in turn. Under a deadline (--deadline), each gets an equal share of what is left when it
  * starts, so a part that stalls runs out of its own share and every later part still has its
  * own (what a quick part leaves goes to the parts after it). */
-static void grade_parts(const grade_env *env, grade_spec *spec, const char *parts, grade_result *result)
+static void grade_parts(const grade_env *env, const grade_run_plan *rp, const grade_spec *spec, const char *parts,
+                        grade_result *result)
 {
     double t0 = clock_seconds();
     int left = 0;
@@ -278,10 +187,9 @@ static void grade_parts(const grade_env *env, grade_spec *spec, const char *part
         char digit[2] = {(char)('1' + k), 0};
         if (!strstr(parts, digit)) continue;
         fprintf(stderr, "grade: part %d ...\n", k + 1);
-        grade_env part = *env;
-        if (env->deadline > 0) part.deadline = clock_seconds() + (env->deadline - clock_seconds()) / left;
+        double deadline = env->deadline > 0 ? clock_seconds() + (env->deadline - clock_seconds()) / left : 0;
         left--;
-        grade_part(&part, spec, &spec->parts[k], &result->parts[result->num_parts++]);
+        grade_part(env, rp, spec, &spec->parts[k], deadline, &result->parts[result->num_parts++]);
         result->seconds = clock_seconds() - t0;
     }
 }
@@ -295,22 +203,21 @@ static void course_parts(const char *root, const grade_spec *spec, char *out, si
     out[0] = '\0';
     for (int k = 1; k <= GRADE_MAX_PART && n < size; k++) {
         char folder[256];
-        if ((spec && spec->parts[k - 1].part != k) || !grade_part_folder(root, k, folder, sizeof folder)) continue;
+        if ((spec && spec->parts[k - 1].part != k) || !grade_plan_part_folder(root, k, folder, sizeof folder)) continue;
         n += (size_t)snprintf(out + n, size - n, "%s%d", n ? "," : "", k);
     }
 }
 
 /* --parts against the course's: NULL, or what is wrong (a part the course lacks would be skipped
  * without a word). */
-static const char *check_parts(const char *asked, const char *course)
+static const char *check_parts(const char *asked, const char *course, char *why, size_t size)
 {
-    static char why[160];
     for (const char *c = asked; *c; c++) {
         if (*c == ',') continue;
         if (*c < '1' || *c > '9' || (c[1] && c[1] != ','))
             return "--parts: expected part numbers separated by commas, such as 1,3";
         if (!strchr(course, *c)) {
-            snprintf(why, sizeof why, "--parts: part %c is not one of this course's (%s)", *c, course);
+            snprintf(why, size, "--parts: part %c is not one of this course's (%s)", *c, course);
             return why;
         }
     }
@@ -319,51 +226,48 @@ static const char *check_parts(const char *asked, const char *course)
 
 /* --prebuild: the course's objects built ahead of time (setup.sh, when the image is made), so that
  * each grading only copies and links them. */
-static int prebuild_course(const char *root)
+static int prebuild_course(void)
 {
-    char work[4200], why[512];
-    grade_path(work, sizeof work, "%s/" GRADE_PREBUILD, root);
-    if (!make_dir(work) || chmod(work, 0700) != 0) return usage("--prebuild: cannot create " GRADE_PREBUILD);
-    grade_env env = {.root = root, .work = work};
-    char parts[2 * GRADE_MAX_PART + 1];
-    course_parts(root, NULL, parts, sizeof parts);
-    if (!grade_tree_course_build(&env, parts, why, sizeof why)) {
-        fprintf(stderr, "grade: --prebuild: %s\n", why);
-        return 3;
+    grade_run_plan *rp = calloc(1, sizeof *rp);
+    char why[512], parts[2 * GRADE_MAX_PART + 1];
+    const char *bad = rp ? grade_plan_prebuild(rp) : "out of memory";
+    if (bad) {
+        free(rp);
+        return usage(bad);
     }
-    fprintf(stderr, "grade: the course's objects are prebuilt in %s/course/build\n", work);
-    return 0;
+    course_parts(rp->root, NULL, parts, sizeof parts);
+    int code = 0;
+    if (!grade_tree_course_build(rp, parts, why, sizeof why)) {
+        fprintf(stderr, "grade: --prebuild: %s\n", why);
+        code = 3;
+    }
+    else fprintf(stderr, "grade: the course's objects are prebuilt in %s/build\n", rp->course);
+    free(rp);
+    return code;
 }
 
 /* The table, results.json, the report and the staff's facts.json (grade_facts.h); as root with a submission, results.json and the report
  * made root's alone. The exit status: 0 full marks, 1 otherwise or when an output failed. */
-static int write_outputs(const grade_result *result, const char *outdir, const grade_env *env)
+static int write_outputs(const grade_result *result, const grade_run_plan *rp, const grade_env *env)
 {
-    char json[4200], facts[4200], why[512];
+    char why[512];
     pl_diag diag = pl_diag_default();
-    grade_print_table(result, stdout);
-    grade_path(json, sizeof json, "%s/results.json", outdir);
-    grade_path(facts, sizeof facts, "%s/facts.json", outdir);
+    grade_report_table(result, stdout);
     int code = 0;
-    if (grade_write_results_json(result, json, &diag) != PL_OK || grade_write_html(result, env->report, &diag) != PL_OK ||
-        grade_write_facts(result, facts, &diag) != PL_OK) {
+    if (grade_report_results_json(result, rp->results, &diag) != PL_OK || grade_report_html(result, rp->report, &diag) != PL_OK ||
+        grade_facts_write(result, rp->facts, &diag) != PL_OK) {
         fprintf(stderr, "grade: %s\n", diag.error);
         code = 1;
     }
-    if (env->submission && !grade_guard_secrets(env->root, outdir, &env->sandbox, why, sizeof why)) {
+    grade_secrets secrets;
+    grade_plan_secrets(rp, &secrets);
+    if (env->submission && !grade_guard_secrets(&secrets, &env->sandbox, why, sizeof why)) {
         fprintf(stderr, "grade: %s\n", why);  /* the new results.json */
         code = 1;
     }
-    printf("results: %s\nreport:  %s/index.html\n", json, env->report);
+    printf("results: %s\nreport:  %s/index.html\n", rp->results, rp->report);
     for (int i = 0; i < result->num_parts; i++) code |= result->parts[i].score < result->parts[i].max_score;
     return code;
-}
-
-/* The verdicts' t maps, once every output is written (a leak test runs bin/grade under SAN=1). */
-static void free_verdicts(grade_result *result)
-{
-    for (int i = 0; i < result->num_parts; i++)
-        for (int k = 0; k < result->parts[i].num_cases; k++) verdict_free(&result->parts[i].cases[k].v);
 }
 
 /* The command line (see the top of this file). */
@@ -373,6 +277,7 @@ typedef struct {
     uint64_t seed;
     int threads, calibrate_runs;
     double deadline;  /* --deadline: seconds the whole grading may take, 0 for no limit */
+    char course_parts[2 * GRADE_MAX_PART + 1];  /* the course's parts, "1,2,3": parts by default */
 } grade_args;
 
 /* Reads argv into a; NULL, or what was wrong. */
@@ -418,7 +323,7 @@ static int handout_tables(bool write)
     for (int k = 0; k < GRADE_MAX_PART; k++) {
         if (!strchr(parts, '1' + k)) continue;  /* a part the course has not (or cases.json does not list) */
         char path[64];
-        grade_handout_path(k + 1, path, sizeof path);
+        grade_plan_handout(k + 1, path, sizeof path);
         if (grade_handout_update(path, &spec.parts[k], write, &diag) != PL_OK) {
             fprintf(stderr, "grade: %s\n", diag.error);
             code = 1;
@@ -430,29 +335,6 @@ static int handout_tables(bool write)
 
 /* ---- main: folders, the course's cases and references, the sandbox, then the parts ----------- */
 
-/* The folders a run needs, as absolute paths: the course (the current folder), --out with its work/
- * and report/, and the submission. Every path the grader builds later starts with one of these, so
- * bounding them here (GRADE_ROOT_MAX) leaves room for every name joined onto them. NULL or why not. */
-typedef struct { char root[GRADE_ROOT_MAX], outdir[GRADE_ROOT_MAX], work[4096], report[4096], submission[GRADE_ROOT_MAX]; } grade_folders;
-
-static const char *open_folders(const grade_args *a, grade_folders *f)
-{
-    if (!getcwd(f->root, sizeof f->root)) return "cannot read the current folder (or its path is over 1 KiB)";
-    if (a->prebuild) return NULL;
-    char real[4096];
-    if (!make_dir(a->out) || !realpath(a->out, real)) return "--out: cannot create the folder";
-    if (!grade_path(f->outdir, sizeof f->outdir, "%s", real)) return "--out: its path is over 1 KiB";
-    if (!grade_path(f->work, sizeof f->work, "%s/work", f->outdir) ||
-        !grade_path(f->report, sizeof f->report, "%s/report", f->outdir) || !make_dir(f->work) || !make_dir(f->report))
-        return "--out: cannot create its work/ and report/ folders";
-    clear_report(f->report);
-    f->submission[0] = '\0';
-    if (!a->submission) return NULL;
-    if (!realpath(a->submission, real)) return "--submission: no such folder";
-    if (!grade_path(f->submission, sizeof f->submission, "%s", real)) return "--submission: its path is over 1 KiB";
-    return NULL;
-}
-
 /* The cases, the parts to grade (--parts, checked against the course's; by default the course's),
  * and the course's references checked before anyone is graded: a broken one stops the run as the
  * course's error (exit 2), never a check skipped or a student's 0. */
@@ -463,9 +345,9 @@ static bool load_course(const char *root, grade_args *a, grade_spec *spec)
         fprintf(stderr, "grade: %s\n", diag.error);
         return false;
     }
-    static char parts[2 * GRADE_MAX_PART + 1];
-    course_parts(root, spec, parts, sizeof parts);
-    const char *bad = a->parts ? check_parts(a->parts, parts) : NULL;
+    char *parts = a->course_parts, why[160];
+    course_parts(root, spec, parts, sizeof a->course_parts);
+    const char *bad = a->parts ? check_parts(a->parts, parts, why, sizeof why) : NULL;
     if (!a->parts) a->parts = parts;
     if (bad || !parts[0]) {
         fprintf(stderr, "grade: %s\n", bad ? bad : "this tree has none of the parts grading/cases.json lists");
@@ -483,16 +365,16 @@ static bool load_course(const char *root, grade_args *a, grade_spec *spec)
 /* The protections: those in force go to the staff log; those missing to a submission's report, or
  * to a student grading their own tree as a warning (their own code on their own machine:
  * containment is the autograder's concern). */
-static void announce_protections(const grade_env *env, grade_result *result)
+static void announce_protections(const grade_env *env)
 {
-    char in_force[512];
-    grade_sandbox_in_force(&env->sandbox, in_force, sizeof in_force);
+    char in_force[512], missing[512];
+    grade_words_protections_in_force(&env->sandbox, in_force, sizeof in_force);
     fprintf(stderr, "grade: protections in force: %s\n", in_force);
-    if (env->submission) grade_sandbox_describe(&env->sandbox, result->unprotected, sizeof result->unprotected);
-    else if (!sandbox_confines(&env->sandbox))
+    grade_words_protections_missing(&env->sandbox, missing, sizeof missing);
+    if (env->submission && missing[0]) fprintf(stderr, "grade: unavailable protections: %s\n", missing);
+    else if (!env->submission && !sandbox_confines(&env->sandbox))
         fprintf(stderr, "grade: no sandbox on this machine: your own code runs unconfined; "
                         "your official grade comes from the autograder\n");
-    if (result->unprotected[0]) fprintf(stderr, "grade: unavailable protections: %s\n", result->unprotected);
 }
 
 int main(int argc, char **argv)
@@ -502,43 +384,44 @@ int main(int argc, char **argv)
     const char *bad = parse_args(argc, argv, &a);
     if (bad) return usage(bad);
     if (a.handout) return handout_tables(!strcmp(a.handout, "write"));
-    static grade_folders f;
-    if ((bad = open_folders(&a, &f))) return usage(bad);
-    if (a.prebuild) return prebuild_course(f.root);
+    if (a.prebuild) return prebuild_course();
+    /* The run's plan: every folder of the grading, each path bounded (grade_plan.h). */
+    grade_run_plan rp;
+    if ((bad = grade_plan_run(a.out, a.submission, &rp))) return usage(bad);
+    clear_report(rp.report);
     grade_spec spec;
-    if (!load_course(f.root, &a, &spec)) return 2;
-    grade_result result;
-    memset(&result, 0, sizeof result);
-    result.seed = a.seed_given ? a.seed : fresh_seed();
-    char sandbox_dir[4096];
-    if (!make_sandbox_dir(sandbox_dir, sizeof sandbox_dir)) return usage("cannot create the sandbox's folder under $TMPDIR or /tmp");
-    if (janitor_start(sandbox_dir) < 0) fprintf(stderr, "grade: cannot fork a janitor: a grading stopped from outside may leave %s\n", sandbox_dir);
+    if (!load_course(rp.root, &a, &spec)) return 2;
+    grade_result *result = grade_result_new();
+    if (!result) return usage("out of memory");
+    result->seed = a.seed_given ? a.seed : fresh_seed();
+    result->submission = a.submission != NULL;
+    if (!make_sandbox_dir(&rp)) return usage("cannot create the sandbox's folder under $TMPDIR or /tmp");
+    if (janitor_start(rp.sandbox) < 0) fprintf(stderr, "grade: cannot fork a janitor: a grading stopped from outside may leave %s\n", rp.sandbox);
     /* The grader's own children (the course's build, its compilers) keep their temporary files in
      * the sandbox's folder too, which the janitor removes whole: a compiler killed mid-file cannot
      * delete its own. Root's alone (0700); student code gets an environment of its own. */
-    char own_tmp[4200];
-    grade_path(own_tmp, sizeof own_tmp, "%s/tmp", sandbox_dir);
-    if (mkdir(own_tmp, 0700) != 0 || setenv("TMPDIR", own_tmp, 1) != 0)
+    if (mkdir(rp.own_tmp, 0700) != 0 || setenv("TMPDIR", rp.own_tmp, 1) != 0)
         return usage("cannot create the grader's temporary folder in its sandbox folder");
-    grade_env env = {.root = f.root, .submission = a.submission ? f.submission : NULL, .work = f.work,
-                     .sandbox_dir = sandbox_dir, .report = f.report, .public_only = a.public_only, .seed = result.seed,
+    grade_env env = {.root = rp.root, .submission = a.submission ? rp.submission : NULL, .work = rp.work,
+                     .sandbox_dir = rp.sandbox, .report = rp.report, .public_only = a.public_only, .seed = result->seed,
                      .threads = a.threads, .sandbox = grade_sandbox_probe()};
     /* The deadline counts from the grader's start, the course's build and checks included. */
     if (a.deadline > 0) env.deadline = start + a.deadline;
-    grade_sandbox_keep(&env.sandbox, sandbox_dir);
+    grade_sandbox_keep(&env.sandbox, rp.sandbox);
+    result->sandbox = env.sandbox;
     /* Before any child runs: the grader's own set-up, and the answers out of the children's reach. */
     char why[512] = "";
-    bool set_up = !a.submission || setup_ok(&env, f.outdir, a.parts, why, sizeof why);
-    if (set_up) announce_protections(&env, &result);
+    bool set_up = !a.submission || setup_ok(&env, &rp, a.parts, why, sizeof why);
+    if (set_up) announce_protections(&env);
     else fprintf(stderr, "grade: the grader's set-up on this machine is wrong (the course's problem, not the "
                          "submission's): %s\n", why);
-    int code = !set_up ? 3 : a.calibrate_runs > 0 ? calibrate(&env, &spec, a.parts, a.cases, a.calibrate_runs) : -1;
-    if (code < 0) grade_parts(&env, &spec, a.parts, &result);
-    grade_tree_remove(sandbox_dir);  /* every grading tree, before the outputs are written */
-    if (code < 0) {
-        code = write_outputs(&result, f.outdir, &env);
-        free_verdicts(&result);
-    }
+    int code = !set_up ? 3
+             : a.calibrate_runs > 0 ? grade_calibrate(&env, &rp, &spec, a.parts, a.cases, a.calibrate_runs, fresh_seed)
+                                    : -1;
+    if (code < 0) grade_parts(&env, &rp, &spec, a.parts, result);
+    grade_tree_remove(rp.sandbox);  /* every grading tree, before the outputs are written */
+    if (code < 0) code = write_outputs(result, &rp, &env);
+    grade_result_free(result);
     grade_spec_free(&spec);
     return code;
 }

@@ -1,167 +1,123 @@
-/* Grader machinery: not part of any assignment. One part: its tree, its suite, its image cases. */
-#include "grade.h"
+/* Grader machinery: not part of any assignment.
+ * One part, through the pipeline (grade_part.h): the plan, then each stage in turn, each handed what
+ * the plan and the stage before it made, each returning its own facts into the part's result. This
+ * is the one module that calls every stage; the stages call none of each other's. */
+#include "grade_part.h"
 #include "grade_build.h"
-#include "grade_image.h"
 #include "grade_guard.h"
-#include "grade_inspect.h"
-#include "grade_suite.h"
+#include "grade_image.h"
+#include "grade_render.h"
+#include "grade_score.h"
+#include "grade_tests.h"
 #include "grade_tree.h"
-#include "grade_diag.h"
-#include "../framework/file.h"
-#include <dirent.h>
-#include <fcntl.h>
-#include <unistd.h>
-#include <libxml/parser.h>
-#include <libxml/tree.h>
-#include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 #include <sys/stat.h>
 
-
-/* A student's own tree (make grade): built by its own make, as they build it, with the course's
- * warnings whatever they exported and no sanitizer, so `make grade` and `make` share every object.
- * Their own code, on their own machine: nothing here is confined (a submission is built by
- * grade_build.c instead). */
-static bool build_own_tree(const grade_env *env, int n, grade_part_result *r)
+/* The part's cases, listed in r with their points before anything runs (every case is in the results
+ * whatever happens), as the plan lists them. */
+static void list_cases(const grade_plan *plan, const grade_part_spec *p, grade_part_result *r)
 {
-    char target[32];
-    snprintf(target, sizeof target, "bin/test-part%d", n);
-    grade_path(r->build_log, sizeof r->build_log, "%s/part%d/build.log", env->work, n);
-    char *argv[] = {"make", "-C", (char *)env->root, "-j2", "--no-print-directory", "WERROR=0", "SAN=0", "bin/pathtracer",
-                    target, NULL};
-    grade_run_opts o = {.wall_seconds = GRADE_COURSE_BUILD_SECONDS, .log_path = r->build_log, .log_max = GRADE_LOG_MAX};
-    grade_run_result rr = grade_run(argv, &o);
-    bool ok = rr.exited && rr.status == 0;
-    if (!ok) {
-        char folder[256] = "";
-        grade_part_folder(env->root, n, folder, sizeof folder);
-        grade_diagnostics(r->build_log, folder, GRADE_DIAG_LINES, r->build_output, sizeof r->build_output);
-        if (!rr.exited) grade_run_describe(&rr, r->suite_reason, sizeof r->suite_reason);
-    }
-    return ok;
-}
-
-/* ---- the suite: verdicts from cmocka's XML files, one per test group ------------------------- */
-
-void grade_suite_results(const char *dir, const grade_test_list *order, int expected, int status, grade_part_result *r)
-{
-    r->tests_run = r->tests_failed = r->num_tests = 0;
-    r->failures[0] = '\0';
-    char why[200] = "";
-    bool all_read = grade_suite_read(dir, order, r, why, sizeof why);  /* grade_suite.h says what it accepts */
-    /* The XML files are written group by group: a suite that stopped early (an _exit in a test, a
-     * crash the suite survived) left fewer tests than it has; one with more was not the suite. */
-    if (!all_read)
-        grade_msg(r->suite_reason, sizeof r->suite_reason, "the suite's results are not what it writes: %s", why);
-    else if (r->tests_run == 0)
-        grade_msg(r->suite_reason, sizeof r->suite_reason, "the suite wrote no readable test results");
-    else if (r->tests_run < expected)
-        grade_msg(r->suite_reason, sizeof r->suite_reason, "the suite stopped after %d of %d tests", r->tests_run,
-                 expected);
-    else if (r->tests_run > expected)
-        grade_msg(r->suite_reason, sizeof r->suite_reason, "the suite reported %d tests, but it has %d: its results "
-                 "are not the suite's own", r->tests_run, expected);
-    else if (status == 1 && r->tests_failed == 0)
-        grade_msg(r->suite_reason, sizeof r->suite_reason, "the suite exited with status 1 but reported no failure");
-    else if (status != 0 && status != 1)
-        grade_msg(r->suite_reason, sizeof r->suite_reason, "the suite exited with status %d", status);
-}
-
-static void run_suite(const grade_env *env, const char *tree, const grade_part_spec *p, grade_part_result *r)
-{
-    char dir[4096], pattern[4200], xml_env[4300], log[4096], bin[4096];
-    bool contained = env->submission != NULL;
-    grade_path(dir, sizeof dir, "%s/part%d-suite", env->sandbox_dir, p->part);
-    /* The suite's own folder: it may write its results there, and nothing else beside them. */
-    if (!grade_guard_child_dir(dir, &env->sandbox, contained)) {
-        grade_msg(r->suite_reason, sizeof r->suite_reason, "cannot create %s", dir);
-        return;
-    }
-    grade_path(pattern, sizeof pattern, "%s/%%g.xml", dir);
-    grade_path(xml_env, sizeof xml_env, "CMOCKA_XML_FILE=%s", pattern);
-    grade_path(log, sizeof log, "%s/part%d/suite.log", env->work, p->part);
-    grade_path(bin, sizeof bin, "%s/bin/test-part%d", tree, p->part);
-    char *envv[] = {"CMOCKA_MESSAGE_OUTPUT=xml", xml_env, NULL};
-    char *argv[] = {bin, NULL};
-    grade_run_opts o = {.wall_seconds = GRADE_SUITE_SECONDS, .deadline = env->deadline, .cwd = tree, .log_path = log, .log_max = GRADE_LOG_MAX,
-                        .env = envv, .untrusted = contained, .writes_files = true, .writable = dir};
-    grade_run_result rr = grade_run(argv, &o);
-
-    /* A suite that crashed or timed out scores zero, whatever files it left. */
-    if (!rr.exited) {
-        grade_run_describe(&rr, r->suite_reason, sizeof r->suite_reason);
-        return;
-    }
-    /* The suite's own list of its tests orders the failures as it ran them (nothing is judged by it). */
-    static grade_test_list order;
-    char list_log[4200];
-    grade_path(list_log, sizeof list_log, "%s/part%d/suite.list", env->work, p->part);
-    o.log_path = list_log;
-    bool listed = grade_suite_list(bin, &o, &order);
-    grade_suite_results(dir, listed ? &order : NULL, p->unit_tests, rr.status, r);
-}
-
-/* ---- one part -------------------------------------------------------------------------------- */
-
-bool grade_part_dirs(const grade_env *env, int part)
-{
-    /* The part's folder is the grader's alone (its logs and films); the children get the sandbox's. */
-    char dir[4096];
-    grade_path(dir, sizeof dir, "%s/part%d", env->work, part);
-    return grade_guard_child_dir(dir, &env->sandbox, false) && chmod(dir, 0700) == 0;
-}
-
-/* The part's cases, listed in r with their points before anything runs (every case is in the
- * results whatever happens). */
-static void list_cases(const grade_env *env, const grade_part_spec *p, grade_part_result *r)
-{
+    grade_test_fact *tests = r->suite.tests;  /* the result's own array, kept */
     memset(r, 0, sizeof *r);
+    r->suite.tests = tests;
     r->part = p->part;
     r->spec = p;
-    for (int i = 0; i < p->num_cases; i++) {
-        if (env->public_only && p->cases[i].hidden) continue;
-        grade_case_result *c = &r->cases[r->num_cases++];
-        memset(c, 0, sizeof *c);
-        c->spec = &p->cases[i];
+    for (int i = 0; plan && i < plan->num_cases; i++) r->cases[r->num_cases++].spec = plan->cases[i].spec;
+}
+
+/* A case's render and verdict at seed, into c (emptied first). */
+static void render_and_judge(const grade_plan *plan, const grade_env *env, const grade_spec *spec,
+                             const grade_plan_case *pc, unsigned long long seed, const image *ref, const image *refvar,
+                             grade_case_result *c)
+{
+    film f = {0};
+    grade_result_clear_case(c);
+    if (grade_render_case(plan, env, pc, seed, &f, c)) grade_image_judge(spec, pc, &f, ref, refvar, c);
+    film_free(&f);
+}
+
+/* One image case: its reference, its render and verdict, and a second render when the first failed
+ * on its p-value alone. Why a second render, and not a smaller alpha: the tests' p-values are exact
+ * only as far as a block's sum of samples is normal, and at the 5 to 6 sigma that Sidak's correction
+ * asks of each block, the rare bright paths of a path tracer make its tail heavier than the normal's
+ * (measured: 8 failures of the solution in 14,000 gradings where 1.4 were due). Two renders at
+ * independent seeds both fail with the square of one's chance, whatever the shape of that tail; a
+ * biased render fails both. The first failure costs nothing but time. */
+void grade_part_case(const grade_plan *plan, const grade_env *env, const grade_spec *spec, const grade_plan_case *pc,
+                     grade_case_result *c)
+{
+    image ref = {0}, refvar = {0};
+    grade_result_clear_case(c);
+    if (grade_image_reference(pc->reference, &ref, &refvar, &c->why) != PL_OK) return;
+    render_and_judge(plan, env, spec, pc, env->seed, &ref, &refvar, c);
+    if (c->chance_failure) {
+        unsigned long long first_seed = c->seed;
+        double first_p = c->v.p_value;
+        render_and_judge(plan, env, spec, pc, grade_render_confirm_seed(env->seed), &ref, &refvar, c);
+        c->rendered_twice = true;
+        c->first_seed = first_seed;
+        c->first_p = first_p;
     }
+    image_free(&ref);
+    image_free(&refvar);
 }
 
-/* Built (a submission's inspected against the allow-list before any of it is linked: grade_build.c);
- * else the reason is in r->suite_reason and every case's. */
-static bool ready(const grade_env *env, const char *tree, int part, grade_part_result *r)
+/* The part's own folder (its logs and films): the grader's alone; the children get the sandbox's. */
+static bool part_folder(const grade_plan *plan)
 {
-    char dir[4096];
-    grade_path(dir, sizeof dir, "%s/part%d", env->work, part);
-    if (!grade_part_dirs(env, part)) grade_msg(r->suite_reason, sizeof r->suite_reason, "cannot create %s", dir);
-    r->built = !r->suite_reason[0] &&
-               (env->submission ? grade_build_submission(env, part, tree, r) : build_own_tree(env, part, r));
-    if (!r->built && !r->suite_reason[0]) grade_msg(r->suite_reason, sizeof r->suite_reason, "the part does not build");
-    for (int i = 0; r->suite_reason[0] && i < r->num_cases; i++)
-        snprintf(r->cases[i].reason, sizeof r->cases[i].reason, "%s", r->suite_reason);
-    return !r->suite_reason[0];
+    return grade_guard_child_dir(plan->work, NULL, false) && chmod(plan->work, 0700) == 0;
 }
 
-void grade_part(const grade_env *env, const grade_spec *spec, const grade_part_spec *p, grade_part_result *r)
+void grade_part(const grade_env *env, const grade_run_plan *rp, const grade_spec *spec, const grade_part_spec *p,
+                double deadline, grade_part_result *r)
 {
-    list_cases(env, p, r);
-    char tree[4096], suite[4200];
-    /* A student's own tree is graded where it is; a submission's part is built into a tree of its
-     * own in the sandbox's folder, removed below. (Never the other way round: the tree removed is
-     * always that one, whatever failed.) */
-    if (env->submission) grade_path(tree, sizeof tree, "%s/part%d", env->sandbox_dir, p->part);
-    else grade_path(tree, sizeof tree, "%s", env->root);
-    if (ready(env, tree, p->part, r)) {
-        /* A submission's verdicts come from the course's judge (grade_judge.c), never from a process
-         * its code ran in; a student's own tree runs its suite whole, faster and theirs to trust. */
-        if (env->submission) grade_judge_suite(env, tree, p, r);
-        else run_suite(env, tree, p, r);
-        for (int i = 0; i < r->num_cases; i++) grade_image_case(env, spec, tree, p->part, &r->cases[i]);
+    grade_plan *plan = calloc(1, sizeof *plan);  /* every path of the part: a few megabytes */
+    grade_manifest m;
+    grade_why why = grade_why_of(GRADE_WHY_NONE);
+    /* The spec stage's submission side: the part's folder, read as data, before anything plans it. */
+    char folder[64] = "";
+    bool ok = plan != NULL;
+    if (ok && env->submission) {
+        grade_path_buf submitted;
+        ok = grade_plan_part_folder(env->root, p->part, folder, sizeof folder) &&
+             grade_plan_submitted(env, folder, submitted, sizeof submitted) && grade_manifest_read(submitted, folder, &m, &why);
+    }
+    char planned[512] = "";
+    if (ok) ok = grade_plan_part(env, rp, p, env->submission ? &m : NULL, deadline, plan, planned, sizeof planned);
+    if (!ok && why.code == GRADE_WHY_NONE) {
+        why = grade_why_of(GRADE_WHY_GRADER);
+        snprintf(why.detail, sizeof why.detail, "%s", plan ? planned : "out of memory");
+    }
+    list_cases(ok ? plan : NULL, p, r);
+    if (!folder[0]) grade_plan_part_folder(env->root, p->part, folder, sizeof folder);
+    snprintf(r->folder, sizeof r->folder, "%s", folder);
+    if (!ok) {
+        for (int i = 0; i < p->num_cases; i++)  /* every case in the results, none run */
+            if (!(env->public_only && p->cases[i].hidden)) r->cases[r->num_cases++].spec = &p->cases[i];
+    }
+    if (ok && !part_folder(plan)) why = grade_why_of(GRADE_WHY_GRADER), ok = false;
+    /* The build, then the suite (a submission's split: its verdicts from the course's judge, never from
+     * a process its code ran in; a student's own tree runs its suite whole), then each case. */
+    if (ok) {
+        if (env->submission) grade_build_submission(plan, &m, &env->sandbox, &r->build);
+        else grade_build_own_tree(plan, &r->build);
+    }
+    else r->build.why = why;
+    if (r->build.built) {
+        if (env->submission) grade_tests_split(plan, env, p, &r->suite);
+        else grade_tests_own(plan, p, &r->suite);
+        for (int i = 0; i < r->num_cases; i++) grade_part_case(plan, env, spec, &plan->cases[i], &r->cases[i]);
+    }
+    else {
+        r->suite.why = r->build.why;
+        for (int i = 0; i < r->num_cases; i++) r->cases[i].why = grade_why_of(GRADE_WHY_NOT_BUILT);
     }
     /* Nothing of this part stays in reach of the next: its tree and its suite's folder go. */
-    grade_path(suite, sizeof suite, "%s/part%d-suite", env->sandbox_dir, p->part);
-    grade_tree_remove(suite);
-    if (env->submission) grade_tree_remove(tree);
+    if (ok && plan->suite_dir[0]) grade_tree_remove(plan->suite_dir);
+    if (ok && env->submission) grade_tree_remove(plan->tree);
     grade_score_part(p, r);
+    grade_plan_free(plan);
+    free(plan);
 }

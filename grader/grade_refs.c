@@ -9,6 +9,8 @@
  * reference made for other flags, another size, another sample count or another scene file is
  * refused; one made by another code version with the same inputs is accepted. */
 #include "grade_refs.h"
+#include "grade_fmt.h"
+#include "grade_plan.h"
 #include "../framework/cli.h"
 #include "../framework/exr.h"
 #include "../framework/film.h"
@@ -19,11 +21,6 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
-
-void grade_refs_path(const char *root, const grade_case *k, int part, char *out, size_t size)
-{
-    grade_path(out, size, "%s/reference_images/%spart%d/%s.exr", root, k->hidden ? "hidden/" : "", part, k->name);
-}
 
 /* An adaptive case: the candidate's flags hold -a. */
 static bool adaptive_case(const grade_case *k)
@@ -102,7 +99,10 @@ static bool positive(json_t *obj, const char *name, bool needed, double *out)
 /* The reference's JSON beside ref_exr: strict (no duplicate key), loaded whole. */
 static json_t *load_json(const char *ref_exr, char *path, size_t size, pl_diag *diag)
 {
-    grade_path(path, size, "%.*s.json", (int)strlen(ref_exr) - 4, ref_exr);
+    if (!grade_plan_reference_json(ref_exr, path, size)) {
+        pl_fail(diag, PL_ERR_IO, "%s: the path of its JSON does not fit", ref_exr);
+        return NULL;
+    }
     json_error_t err;
     json_t *j = json_load_file(path, JSON_REJECT_DUPLICATES, &err);
     if (!j) pl_fail(diag, PL_ERR_PARSE, "%s:%d: %s", path, err.line, err.text);
@@ -160,7 +160,7 @@ pl_status grade_refs_check(const char *root, const grade_spec *spec, const char 
             if (public_only && k->hidden) continue;
             char path[4096];
             exr_info info;
-            grade_refs_path(root, k, p + 1, path, sizeof path);
+            grade_plan_reference(root, k, p + 1, path, sizeof path);
             pl_status s = check_film(path, k, &info, diag);
             if (s == PL_OK) s = check_json(path, k, p + 1, &info, diag);
             if (s != PL_OK) {

@@ -3,11 +3,8 @@
 #ifndef PL_GRADE_REFS_H
 #define PL_GRADE_REFS_H
 
-#include "grade.h"
+#include "grade_spec.h"
 #include "grade_rate.h"
-
-/* The reference of case k of part `part`: root/reference_images/[hidden/]part<N>/<case>.exr. */
-void grade_refs_path(const char *root, const grade_case *k, int part, char *out, size_t size);
 
 /* Checks the reference of every case of the parts listed in `parts` ("1,3"; public cases only when
  * public_only), with the run's working folder at root: the film reads strictly and is consistent

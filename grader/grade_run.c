@@ -1,5 +1,6 @@
 /* Grader machinery: not part of any assignment. Children: own process group, limits, a timeout. */
-#include "grade.h"
+#include "grade_run.h"
+#include "grade_limits.h"
 #include "../framework/clock.h"
 #include <errno.h>
 #include <grp.h>
@@ -21,85 +22,7 @@
 
 #define LOG_CUT_NOTE "\n[grader: output cut here]\n"
 
-static grade_sandbox sandbox;
 extern char **environ;
-
-/* RLIMIT_NPROC counts every process of the real user. As nobody that is the child's own; as the
- * grader's user it includes the grader's and the user's other processes, so the cap is what the user
- * already runs plus the child's allowance (a fork bomb still stops there). */
-static long processes_of(uid_t uid)
-{
-    DIR *d = opendir("/proc");
-    long n = 0;
-    for (struct dirent *e; d && (e = readdir(d));) {
-        char path[300];
-        struct stat st;
-        if (e->d_name[0] < '1' || e->d_name[0] > '9') continue;
-        grade_path(path, sizeof path, "/proc/%s", e->d_name);
-        n += stat(path, &st) == 0 && st.st_uid == uid;
-    }
-    if (d) closedir(d);
-    return n;
-}
-
-grade_sandbox grade_sandbox_probe(void)
-{
-    memset(&sandbox, 0, sizeof sandbox);
-    struct passwd *pw = getpwnam("nobody");
-    if (geteuid() == 0 && pw) {
-        sandbox.as_other_user = true;
-        sandbox.uid = pw->pw_uid;
-        sandbox.gid = pw->pw_gid;
-    }
-    /* A network namespace needs privilege; try it in a throwaway child. */
-    pid_t pid = fork();
-#ifdef __linux__
-    if (pid == 0) _exit(unshare(CLONE_NEWNET) == 0 ? 0 : 1);
-#else
-    if (pid == 0) _exit(1);  /* no network namespaces but Linux's */
-#endif
-    int status = 1;
-    if (pid > 0) waitpid(pid, &status, 0);
-    sandbox.no_network = pid > 0 && WIFEXITED(status) && WEXITSTATUS(status) == 0;
-    sandbox.isolated = geteuid() == 0 && sandbox_isolation_supported();
-    sandbox.process_limit = sandbox.as_other_user ? GRADE_PROCESSES : processes_of(getuid()) + GRADE_PROCESSES;
-    sandbox.filter = sandbox_filter_supported(sandbox.filter_why, sizeof sandbox.filter_why);
-    sandbox_adopt_orphans();
-    return sandbox;
-}
-
-void grade_sandbox_keep(grade_sandbox *s, const char *dir)
-{
-    s->dir = sandbox.dir = dir;
-}
-
-void grade_sandbox_describe(const grade_sandbox *s, char *out, size_t size)
-{
-    snprintf(out, size, "%s%s%s%s", s->as_other_user ? "" : "not root: student code ran as your own user, "
-                                                          "and could read what you can; ",
-             s->no_network ? "" : "no network namespace: student code had the network; ",
-             s->filter ? "" : "no system-call filter: ", s->filter ? "" : s->filter_why);
-    size_t n = strlen(out);
-    if (n >= 2 && !strcmp(out + n - 2, "; ")) out[n - 2] = '\0';
-}
-
-void grade_sandbox_in_force(const grade_sandbox *s, char *out, size_t size)
-{
-    char filter[64], view[256];
-    sandbox_filter_name(filter, sizeof filter);
-    if (s->isolated)
-        snprintf(view, sizeof view, "PID and mount namespaces: own /proc, all read-only but a stage's output, private "
-                                    "/tmp, /var/tmp and /dev/shm of %ld MiB each", GRADE_TMP_BYTES >> 20);
-    else
-        snprintf(view, sizeof view, "no PID or mount namespace: the shared /tmp, /var/tmp and /dev/shm are swept of "
-                                    "the sandbox user's files after each stage, and bounded only per file");
-    snprintf(out, size, "%s; %s; %s; %s; limits: wall, CPU, address space (%ld MiB code, %ld MiB compiler), "
-                        "%ld processes, files of %ld MiB, output cut at %d KiB; orphans killed",
-             s->as_other_user ? "student code as user nobody" : "student code as the grader's own user",
-             s->no_network ? "network namespace" : "no network namespace", view,
-             s->filter ? filter : "no system-call filter", GRADE_CODE_MEMORY >> 20, GRADE_COMPILER_MEMORY >> 20,
-             (long)GRADE_PROCESSES, GRADE_FILE_BYTES >> 20, GRADE_LOG_MAX / 1024);
-}
 
 /* Lowers a limit, never above the hard limit already in place (an unprivileged user cannot raise it). */
 static void set_limit(int resource, rlim_t value)
@@ -125,32 +48,35 @@ static void stage_limits(const grade_run_opts *o)
  * that runs or compiles student code. */
 static void confine(const grade_run_opts *o)
 {
+    /* Fails closed: an untrusted child without the grading's settings never runs unconfined. */
+    if (!o->sandbox) _exit(126);
+    const grade_sandbox *sb = o->sandbox;
     stage_limits(o);
     set_limit(RLIMIT_NOFILE, SANDBOX_EXEC_FD + 1);  /* sandbox_exec lowers it by one more */
 #ifdef __linux__
-    if (sandbox.no_network && unshare(CLONE_NEWNET | CLONE_NEWIPC) != 0) _exit(126);
+    if (sb->no_network && unshare(CLONE_NEWNET | CLONE_NEWIPC) != 0) _exit(126);
 #endif
     /* Still root: from here on the process that continues is inside new PID and mount namespaces,
      * where it sees everything read-only but its output, and /tmp, /var/tmp, /dev/shm of its own. */
-    if (sandbox.isolated) {
+    if (sb->isolated) {
         sandbox_isolate();
         /* The sandbox's folder stays in view (else the stage's own folder: a test's scratch). */
-        if (!sandbox_private_view(sandbox.dir ? sandbox.dir : o->cwd, o->writable, GRADE_TMP_BYTES) ||
+        if (!sandbox_private_view(sb->dir ? sb->dir : o->cwd, o->writable, GRADE_TMP_BYTES) ||
             (o->cwd && chdir(o->cwd) != 0))
             _exit(126);
     }
-    if (sandbox.as_other_user) {
+    if (sb->as_other_user) {
         /* Drop every privilege for good: groups, then gid, then uid (the order matters). */
-        if (setgroups(0, NULL) != 0 || setgid(sandbox.gid) != 0 || setuid(sandbox.uid) != 0) _exit(126);
+        if (setgroups(0, NULL) != 0 || setgid(sb->gid) != 0 || setuid(sb->uid) != 0) _exit(126);
     }
     /* After the drop, so it counts nobody's processes; as the grader's user, probe set its size. */
-    if (sandbox.process_limit > 0) set_limit(RLIMIT_NPROC, (rlim_t)sandbox.process_limit);
+    if (sb->process_limit > 0) set_limit(RLIMIT_NPROC, (rlim_t)sb->process_limit);
 }
 
 /* In the child, before exec: a group of its own (so the timeout kills every descendant), the pipe
  * to the grader as stdout and stderr (the grader writes the log, never the child), the capture's
  * pipe at its number, in_fd (> 0) as stdin or else none, fd3 (> 0) as its fd 3 (the split suite's
- * record pipe, grade_judge.c), and a cap on every file it writes so a flood cannot fill the disk. */
+ * record pipe, grade_tests.c), and a cap on every file it writes so a flood cannot fill the disk. */
 static void child_setup(const grade_run_opts *o, int out_fd, int capture_fd, int in_fd, int fd3)
 {
     setpgid(0, 0);
@@ -168,8 +94,13 @@ static void child_setup(const grade_run_opts *o, int out_fd, int capture_fd, int
     set_limit(RLIMIT_FSIZE, (rlim_t)GRADE_FILE_BYTES);
     set_limit(RLIMIT_CORE, 0);
     /* Student code gets none of the grader's environment (whatever its caller exported), a PATH only. */
-    static char *clean[] = {"PATH=/usr/local/bin:/usr/bin:/bin", "LC_ALL=C", NULL};
-    if (o->untrusted) environ = clean;
+    if (o->untrusted) {
+        /* A fresh array (putenv below may write into it): this child's own, never the grader's. */
+        char **clean = calloc(3, sizeof *clean);
+        if (!clean) _exit(126);
+        clean[0] = "PATH=/usr/local/bin:/usr/bin:/bin", clean[1] = "LC_ALL=C";
+        environ = clean;
+    }
     for (char *const *e = o->env; e && *e; e++) putenv(*e);
     if (o->untrusted) confine(o);
     else if (o->bounded) stage_limits(o);
@@ -333,12 +264,12 @@ typedef struct {
 static _Noreturn void run_child_work(const grade_run_opts *o, const child_work *w)
 {
     if (w->argv) {
-        if (o->untrusted && !o->compiler && sandbox.filter) sandbox_exec(w->argv, o->writes_files);
+        if (o->untrusted && !o->compiler && o->sandbox && o->sandbox->filter) sandbox_exec(w->argv, o->writes_files);
         else execvp(w->argv[0], w->argv);
         _exit(127);
     }
     /* A function never execs: the filter goes on before it reads anything hostile. */
-    if (o->untrusted && sandbox.filter && !sandbox_confine_self()) _exit(126);
+    if (o->untrusted && o->sandbox && o->sandbox->filter && !sandbox_confine_self()) _exit(126);
     w->fn(w->arg, o->capture ? o->capture->child_fd : -1);
     _exit(0);
 }
@@ -383,7 +314,8 @@ static grade_run_result run_child(const child_work *w, const grade_run_opts *giv
      * by side (the reference maker's threads, the judge beside its subject), and this would kill them. */
     if (o->untrusted) sandbox_kill_orphans();
     /* Without a mount namespace the stage shared /tmp: what its user left there goes now. */
-    if (o->untrusted && sandbox.as_other_user && !sandbox.isolated) sandbox_clean_shared_tmp(sandbox.uid);
+    if (o->untrusted && o->sandbox && o->sandbox->as_other_user && !o->sandbox->isolated)
+        sandbox_clean_shared_tmp(o->sandbox->uid);
     close(fds[0]);
     if (cap[0] >= 0) close(cap[0]);
     close(log_fd);
@@ -408,14 +340,4 @@ grade_run_result grade_run_function(void (*fn)(void *arg, int out_fd), void *arg
 {
     child_work w = {NULL, fn, arg};
     return run_child(&w, o, 0, 0);
-}
-
-void grade_run_describe(const grade_run_result *r, char *out, size_t size)
-{
-    if (r->out_of_time) snprintf(out, size, "%s", GRADE_OUT_OF_TIME);
-    else if (r->timed_out) snprintf(out, size, "ran past %.0f s", r->seconds);
-    else if (!r->exited && r->status == SIGXCPU) snprintf(out, size, "ran past its CPU time");
-    else if (!r->exited && r->status == SIGSYS) snprintf(out, size, "made a system call the sandbox forbids");
-    else if (!r->exited) snprintf(out, size, "killed by signal %d (%s)", r->status, strsignal(r->status));
-    else snprintf(out, size, "exited with status %d", r->status);
 }

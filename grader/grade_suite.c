@@ -2,7 +2,6 @@
  * (grade_suite.h). The files are written by student code: read as hostile (no links, a size cap, no
  * DTD, no network), and anything the suite would not write makes the whole suite unreadable. */
 #include "grade_suite.h"
-#include "grade_figure.h"
 #include "grade_guard.h"
 #include <dirent.h>
 #include <libxml/parser.h>
@@ -31,55 +30,53 @@ static xmlNodePtr verdict_of(xmlNodePtr t)
     return NULL;
 }
 
-/* One failed test as a Markdown line: its name and message, the message cut at a character boundary
- * and escaped for Markdown. */
-static void add_failure(grade_part_result *r, xmlNodePtr t, xmlNodePtr v)
+/* One test into the suite's facts: its name (the course's, a C identifier: anything else is named by
+ * kind) and, for a failure, the message cmocka wrote (the course's test's, with the candidate's
+ * numbers in it: the report rounds them, grade_figure_text), less cmocka's "<file>:<line>: error:
+ * Failure!" tail, cut on a character boundary; a skipped test is a failed one. */
+static void add_test(grade_suite_facts *s, xmlNodePtr t, xmlNodePtr v)
 {
     xmlChar *name = xmlGetProp(t, (const xmlChar *)"name");
-    xmlChar *msg = is_element(v, "skipped") ? NULL : xmlNodeGetContent(v);
-    char rounded[GRADE_MESSAGE_MAX + 64];
-    /* The message is the course's test's, but its numbers are the candidate's answers: rounded. */
-    grade_figure_text(msg ? (char *)msg : "", rounded, sizeof rounded);
-    char *text = msg ? rounded : (char *)"skipped: a skipped test is not a passed one";
-    /* cmocka ends every failure with "<file>:<line>: error: Failure!": keep the place. */
-    char *tail = strstr(text, ": error: Failure!");
-    if (tail) *tail = '\0';
-    size_t cut = strlen(text);
+    xmlChar *msg = v && !is_element(v, "skipped") ? xmlNodeGetContent(v) : NULL;
+    const char *text = !v ? "" : msg ? (const char *)msg : "skipped: a skipped test is not a passed one";
+    const char *tail = strstr(text, ": error: Failure!");
+    size_t cut = tail ? (size_t)(tail - text) : strlen(text);
     if (cut > GRADE_MESSAGE_MAX) {
         cut = GRADE_MESSAGE_MAX;
         while (cut > 0 && ((unsigned char)text[cut] & 0xc0) == 0x80) cut--;  /* never inside a character */
     }
-    /* Markdown: the message escaped (it holds the candidate's numbers, and whatever a suite of a
-     * student's own tree printed), the name only when it is a C identifier, as the course's are. */
-    char escaped[2 * GRADE_MESSAGE_MAX + 2];
-    grade_md_escape(text, cut, escaped, sizeof escaped);
-    const char *shown = name && strlen((char *)name) < 200 &&
-                                strspn((char *)name, "abcdefghijklmnopqrstuvwxyzABCDEFGHIJKLMNOPQRSTUVWXYZ0123456789_") ==
-                                    strlen((char *)name)
-                            ? (char *)name : "(a test whose name is not a C identifier)";
-    size_t len = strlen(r->failures);
-    if (len + 1 < sizeof r->failures) snprintf(r->failures + len, sizeof r->failures - len, "- `%s`: %s\n", shown, escaped);
+    bool identifier = name && strlen((char *)name) < 128 &&
+                      strspn((char *)name, "abcdefghijklmnopqrstuvwxyzABCDEFGHIJKLMNOPQRSTUVWXYZ0123456789_") ==
+                          strlen((char *)name);
+    grade_test_fact *f = grade_suite_note(s, identifier ? (char *)name : "(a test whose name is not a C identifier)",
+                                          v == NULL);
+    if (f) snprintf(f->message, sizeof f->message, "%.*s", (int)cut, text);
     xmlFree(name);
     xmlFree(msg);
 }
 
+grade_test_fact *grade_suite_note(grade_suite_facts *s, const char *name, bool passed)
+{
+    if (s->num_tests >= GRADE_MAX_TESTS) return NULL;
+    grade_test_fact *f = &s->tests[s->num_tests++];
+    memset(f, 0, sizeof *f);
+    snprintf(f->name, sizeof f->name, "%s", name);
+    f->passed = passed;
+    return f;
+}
+
 /* Counts the testcases below n (any depth) into *run and *failed. */
-static void count_tests(xmlNodePtr n, grade_part_result *r, int *run, int *failed)
+static void count_tests(xmlNodePtr n, grade_suite_facts *s, int *run, int *failed)
 {
     for (xmlNodePtr c = n->children; c; c = c->next) {
         if (c->type != XML_ELEMENT_NODE) continue;
         if (is_element(c, "testcase")) {
-            ++*run;
             xmlNodePtr v = verdict_of(c);
-            if (v) {
-                ++*failed;
-                add_failure(r, c, v);
-            }
-            xmlChar *name = xmlGetProp(c, (const xmlChar *)"name");
-            grade_score_note_test(r, name ? (const char *)name : "?", v == NULL);
-            xmlFree(name);
+            ++*run;
+            *failed += v != NULL;
+            add_test(s, c, v);
         }
-        count_tests(c, r, run, failed);
+        count_tests(c, s, run, failed);
     }
 }
 
@@ -95,7 +92,7 @@ static long count_attribute(xmlNodePtr n, const char *name)
 }
 
 /* The file's one <testsuite>, named `group`, with its counts agreeing with its testcases. */
-static bool read_suite(xmlDocPtr doc, const char *group, grade_part_result *r, char *why, size_t size)
+static bool read_suite(xmlDocPtr doc, const char *group, grade_suite_facts *s, char *why, size_t size)
 {
     xmlNodePtr root = xmlDocGetRootElement(doc), suite = NULL;
     /* cmocka writes no DTD: one here could only declare entities to expand (amplification). */
@@ -111,15 +108,15 @@ static bool read_suite(xmlDocPtr doc, const char *group, grade_part_result *r, c
     xmlFree(name);
     if (!named) return grade_msg(why, size, "expected one <testsuite name=\"<the file's group>\">"), false;
     int run = 0, failed = 0;
-    count_tests(suite, r, &run, &failed);
+    count_tests(suite, s, &run, &failed);
     long tests = count_attribute(suite, "tests"), f = count_attribute(suite, "failures"),
-         e = count_attribute(suite, "errors"), s = count_attribute(suite, "skipped");
-    if (tests != run || f < 0 || e < 0 || (s < 0 && xmlHasProp(suite, (const xmlChar *)"skipped")) ||
-        f + e + (s > 0 ? s : 0) != failed)
+         e = count_attribute(suite, "errors"), k = count_attribute(suite, "skipped");
+    if (tests != run || f < 0 || e < 0 || (k < 0 && xmlHasProp(suite, (const xmlChar *)"skipped")) ||
+        f + e + (k > 0 ? k : 0) != failed)
         return grade_msg(why, size, "tests=%ld failures=%ld errors=%ld skipped=%ld, but it holds %d tests of which %d did "
-                        "not pass", tests, f, e, s, run, failed), false;
-    r->tests_run += run;
-    r->tests_failed += failed;
+                        "not pass", tests, f, e, k, run, failed), false;
+    s->run += run;
+    s->failed += failed;
     return true;
 }
 
@@ -134,10 +131,10 @@ static xmlDocPtr parse_file(const char *path, char *why, size_t size)
     return doc;
 }
 
-bool grade_suite_read_file(const char *path, const char *group, grade_part_result *r, char *why, size_t size)
+bool grade_suite_read_file(const char *path, const char *group, grade_suite_facts *s, char *why, size_t size)
 {
     xmlDocPtr doc = parse_file(path, why, size);
-    bool ok = doc && read_suite(doc, group, r, why, size);
+    bool ok = doc && read_suite(doc, group, s, why, size);
     xmlFreeDoc(doc);
     return ok;
 }
@@ -171,15 +168,16 @@ static int compare_files(const void *a, const void *b)
     return x->rank != y->rank ? (x->rank < y->rank ? -1 : 1) : strcmp(x->name, y->name);
 }
 
-bool grade_suite_read(const char *dir, const grade_test_list *order, grade_part_result *r, char *why, size_t size)
+bool grade_suite_read(const char *dir, const grade_test_list *order, int part, grade_suite_facts *s, char *why,
+                      size_t size)
 {
     char prefix[16], reason[256] = "";
-    snprintf(prefix, sizeof prefix, "part%d: ", r->part);
-    static suite_file files[SUITE_FILES_MAX];
+    snprintf(prefix, sizeof prefix, "part%d: ", part);
+    suite_file *files = calloc(SUITE_FILES_MAX, sizeof *files);
     int count = 0;
-    DIR *d = opendir(dir);
+    DIR *d = files ? opendir(dir) : NULL;
     bool ok = d != NULL;
-    if (!d) grade_msg(why, size, "%s: cannot read the folder", dir);
+    if (!d) grade_msg(why, size, "the suite's results folder cannot be read");
     /* Every file is parsed before any is counted: the groups are then taken in the suite's order (the
      * folder's order is the file system's), so the failed tests are listed as the suite ran them. */
     for (struct dirent *e; ok && (e = readdir(d));) {
@@ -189,11 +187,11 @@ bool grade_suite_read(const char *dir, const grade_test_list *order, grade_part_
         /* What cmocka names a group's file: "part<N>: <group>.xml", no path, no other file. */
         if (len < strlen(prefix) + 5 || len >= sizeof files[0].name || strncmp(n, prefix, strlen(prefix)) ||
             strcmp(n + len - 4, ".xml") || strchr(n, '/'))
-            grade_msg(reason, sizeof reason, "the suite writes 'part%d: <group>.xml' files only, not this one", r->part);
+            grade_msg(reason, sizeof reason, "the suite writes 'part%d: <group>.xml' files only, not this one", part);
         else if (count == SUITE_FILES_MAX) grade_msg(reason, sizeof reason, "more than %d groups", SUITE_FILES_MAX);
         else {
-            char path[4400];
-            grade_path(path, sizeof path, "%s/%s", dir, n);
+            grade_path_buf path;
+            grade_join(dir, n, path, sizeof path);
             suite_file *f = &files[count];
             memcpy(f->name, n, len + 1);  /* len < sizeof f->name, checked above */
             if ((f->doc = parse_file(path, reason, sizeof reason))) {
@@ -211,32 +209,34 @@ bool grade_suite_read(const char *dir, const grade_test_list *order, grade_part_
     for (int i = 0; i < count; i++) {
         char group[256];
         snprintf(group, sizeof group, "%.*s", (int)(strlen(files[i].name) - 4), files[i].name);
-        if (ok && !read_suite(files[i].doc, group, r, reason, sizeof reason)) {
+        if (ok && !read_suite(files[i].doc, group, s, reason, sizeof reason)) {
             grade_msg(why, size, "%.200s: %s", files[i].name, reason);
             ok = false;
         }
         xmlFreeDoc(files[i].doc);
     }
+    free(files);
     return ok;
 }
 
-bool grade_suite_list(const char *program, const grade_run_opts *o, grade_test_list *list)
+void grade_suite_results(const char *dir, const grade_test_list *order, int expected, int status, int part,
+                         grade_suite_facts *s)
 {
-    char *envv[] = {"PL_TEST_LIST=1", NULL}, *argv[] = {(char *)program, NULL};
-    grade_run_opts listing = *o;
-    listing.env = envv;
-    grade_run_result rr = grade_run(argv, &listing);
-    FILE *f = rr.exited && rr.status == 0 && o->log_path ? fopen(o->log_path, "r") : NULL;
-    list->count = 0;
-    char line[512];
-    while (f && fgets(line, sizeof line, f)) {
-        size_t len = strcspn(line, "\n");
-        line[len] = '\0';
-        if (strncmp(line, "  ", 2) || len - 2 >= sizeof list->names[0] ||
-            strspn(line + 2, "abcdefghijklmnopqrstuvwxyzABCDEFGHIJKLMNOPQRSTUVWXYZ0123456789_") != len - 2)
-            continue;
-        if (list->count < GRADE_MAX_TESTS) memcpy(list->names[list->count++], line + 2, len - 1);  /* and its NUL */
-    }
-    if (f) fclose(f);
-    return list->count > 0;
+    s->run = s->failed = s->num_tests = 0;
+    s->judged = false;
+    char why[200] = "";
+    bool all_read = grade_suite_read(dir, order, part, s, why, sizeof why);
+    /* The XML files are written group by group: a suite that stopped early (an _exit in a test, a
+     * crash the suite survived) left fewer tests than it has; one with more was not the suite. */
+    grade_why_code code = !all_read ? GRADE_WHY_SUITE_UNREADABLE
+                        : s->run == 0 ? GRADE_WHY_SUITE_NO_RESULTS
+                        : s->run < expected ? GRADE_WHY_SUITE_STOPPED
+                        : s->run > expected ? GRADE_WHY_SUITE_TOO_MANY
+                        : (status == 1 && s->failed == 0) || (status != 0 && status != 1) ? GRADE_WHY_SUITE_STATUS
+                        : GRADE_WHY_NONE;
+    s->why = grade_why_of(code);
+    s->why.count = code == GRADE_WHY_SUITE_STATUS ? status : s->run;
+    s->why.limit = expected;
+    if (code == GRADE_WHY_SUITE_UNREADABLE) snprintf(s->why.detail, sizeof s->why.detail, "%s", why);
+    s->judged = code == GRADE_WHY_NONE;
 }

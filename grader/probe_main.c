@@ -35,7 +35,11 @@
 #include <sys/wait.h>
 #include <time.h>
 #include <unistd.h>
-#include "grade.h"
+#include "grade_fmt.h"
+#include "grade_limits.h"
+#include "grade_run.h"
+#include "grade_sandbox.h"
+#include "grade_words.h"
 #include "sandbox.h"
 
 static int failures;
@@ -193,10 +197,10 @@ static int as_stage(int argc, char **argv)
     grade_sandbox_keep(&s, argv[3]);
     char *envv[] = {needle_env, NULL};
     grade_run_opts o = {.wall_seconds = 600, .cwd = argv[3], .log_path = log, .log_max = 1 << 20, .env = envv,
-                        .untrusted = true, .compiler = build, .writable = build ? argv[3] : NULL};
+                        .untrusted = true, .compiler = build, .writable = build ? argv[3] : NULL, .sandbox = &s};
     grade_run_result r = grade_run(args, &o);
     char in_force[512], line[1024];
-    grade_sandbox_in_force(&s, in_force, sizeof in_force);
+    grade_words_protections_in_force(&s, in_force, sizeof in_force);
     printf("stage %s: %s\n", argv[2], in_force);
     FILE *f = fopen(log, "r");
     while (f && fgets(line, sizeof line, f)) fputs(line, stdout);

@@ -4,7 +4,8 @@
  * the autograder (bin/grade --submission as root) refuses to grade without it and says what to
  * install (grade_main.c). Orphans cannot be adopted here: a child's process group is killed, and as
  * root every process of the sandbox's user (grade_run.c). */
-#include "grade.h"
+#include "grade_fmt.h"
+#include "grade_run.h"
 #include "sandbox.h"
 #include <stdio.h>
 #include <sys/wait.h>

@@ -20,7 +20,10 @@
  *                                                                     Slurm array's last job)
  *   --out DIR (reference_images) and --work DIR (build/references) move the results and the ranges.
  * CASE is a case name or part<N>; none means every case. */
-#include "../../grader/grade.h"
+#include "../../grader/grade_limits.h"
+#include "../../grader/grade_plan.h"
+#include "../../grader/grade_run.h"
+#include "../../grader/grade_spec.h"
 #include "../../grader/grade_rate.h"
 #include "../../framework/film.h"
 #include "../../framework/clock.h"
@@ -241,7 +244,8 @@ static json_t *probe_case(const ref_case *rc)
     for (int run = 0; run < runs; run++) {
         char *argv[GRADE_MAX_FLAGS + 16];
         grade_case_text text;
-        grade_case_command(rc->spec, "bin/pathtracer", rc->spec->scene, out, rc->seed + (unsigned long long)run, 1, &text, argv);
+        grade_plan_case_command(rc->spec, "bin/pathtracer", rc->spec->scene, out, rc->seed + (unsigned long long)run, 1, false,
+                                &text, argv);
         film f = {0};
         exr_info info;
         pl_diag d = pl_diag_default();

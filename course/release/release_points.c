@@ -10,7 +10,7 @@
  * parts (the course's COURSE_PARTS), so that a course that stops after part 5 hands out no case of
  * parts 6-9 (the cut and the bundle copy both cases files through it). Everything else in IN is
  * kept as it is; OUT is written whole or not at all. */
-#include "../../grader/grade.h"
+#include "../../grader/grade_spec.h"
 #include <jansson.h>
 #include <stdio.h>
 #include <stdlib.h>

@@ -3,7 +3,7 @@
  * (framework/part_api.h), the grader's list (grader/grade_allow.c) and the handout's "What your part
  * may call" (handout/README.md). Run from the repository's top, as make test-grader does. */
 #include "../common/test.h"
-#include "../../grader/grade_inspect.h"
+#include "../../grader/grade_allow.h"
 #include <ctype.h>
 #include <dirent.h>
 #include <fnmatch.h>
@@ -137,7 +137,7 @@ static void test_allowlist__equals_the_part_api_marks(void **state)
     name_list marked = {0}, granted = {0};
     free(framework_headers(&marked));
     if (marked.count < 10) fail_msg("only %d PL_PART_API marks found in framework/", marked.count);
-    for (const char *const *s = grade_allowed_framework(); *s; s++) add_name(&granted, *s, strlen(*s));
+    for (const char *const *s = grade_allow_framework(); *s; s++) add_name(&granted, *s, strlen(*s));
     for (int i = 0; i < marked.count; i++)
         if (!listed(&granted, marked.name[i]))
             fail_msg("%s is marked PL_PART_API but grader/grade_allow.c does not allow it", marked.name[i]);

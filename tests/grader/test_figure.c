@@ -1,12 +1,13 @@
 /* Test machinery: not part of any assignment.
- * What reaches the student (grader/grade_figure.h, grade_report.c): every figure a render decides
+ * What reaches the student (grader/grade_figure.h, grade_words.c): every figure a render decides
  * is rounded to 3 significant digits and clamped before it is shown, and a hidden case shows only
  * its verdict and a coarse mean ratio. A render that reads a secret could otherwise spell it in the
  * low digits of a double the report prints. */
 #include "../common/test.h"
 #include "../common/scratch.h"
-#include "../../grader/grade.h"
 #include "../../grader/grade_figure.h"
+#include "../../grader/grade_report.h"
+#include "../../grader/grade_result.h"
 #include <jansson.h>
 #include <math.h>
 #include <stdio.h>
@@ -99,7 +100,7 @@ static void test_report__figures_rounded_and_a_hidden_case_a_verdict_alone(void 
     char path[256];
     pl_diag d = pl_diag_default();
     snprintf(path, sizeof path, "%s/results.json", scratch);
-    assert_int_equal(PL_OK, grade_write_results_json(&res, path, &d));
+    assert_int_equal(PL_OK, grade_report_results_json(&res, path, &d));
     char *shown = case_output(path, 1), *hidden = case_output(path, 2);
     print_message("public: %s\nhidden: %s\n", shown, hidden);
     assert_non_null(strstr(shown, "p-value 1.23e-05"));
@@ -119,7 +120,7 @@ static void test_report__figures_rounded_and_a_hidden_case_a_verdict_alone(void 
     assert_null(strstr(hidden, "1.23"));
     free(shown);
     free(hidden);
-    assert_int_equal(PL_OK, grade_write_html(&res, scratch, &d));
+    assert_int_equal(PL_OK, grade_report_html(&res, scratch, &d));
 }
 
 int figure_tests(void)

@@ -1,11 +1,12 @@
 /* Test machinery: not part of any assignment.
- * The build stage's manifest (grader/grade_build.h): a submitted part's folder is read as data
+ * The spec stage's manifest (grader/grade_manifest.h): a submitted part's folder is read as data
  * before anything reads it as code. A name is refused when it ends like code but is not a plain
  * [a-z0-9_]+.c/.h file (a name like a make function once ran a shell in the build), and passed
  * over when it is no code at all (a patch's .orig, notes): never read, never named to a tool. */
 #include "../common/test.h"
 #include "../common/scratch.h"
-#include "../../grader/grade_build.h"
+#include "../../grader/grade_manifest.h"
+#include "../../grader/grade_words.h"
 #include <stdio.h>
 #include <string.h>
 #include <sys/stat.h>
@@ -29,7 +30,10 @@ static void fresh_part(char *dir, size_t size, const char *name)
 static int read_manifest(const char *dir, grade_manifest *m, char *why, size_t size)
 {
     why[0] = '\0';
-    return grade_manifest_read(dir, "part3_direct", m, why, size) ? m->count : -1;
+    grade_why w = grade_why_of(GRADE_WHY_NONE);
+    if (grade_manifest_read(dir, "part3_direct", m, &w)) return m->count;
+    grade_words_why(&w, 3, "part3_direct", why, size);  /* the words the student reads */
+    return -1;
 }
 
 static void test_manifest__sources_taken_no_code_passed_over(void **state)

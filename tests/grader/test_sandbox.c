@@ -9,8 +9,13 @@
  * - a failed build's message is its last lines. */
 #include "../common/test.h"
 #include "../common/scratch.h"
-#include "../../grader/grade.h"
+#include "../../grader/grade_allow.h"
+#include "../../grader/grade_plan.h"
+#include "../../grader/grade_result.h"
+#include "../../grader/grade_run.h"
+#include "../../grader/grade_score.h"
 #include "../../grader/grade_suite.h"
+#include "../../grader/grade_words.h"
 #include "../../grader/grade_guard.h"
 #include "../../grader/grade_inspect.h"
 #include "../../grader/grade_diag.h"
@@ -48,13 +53,26 @@ static long file_size(const char *path)
     return lstat(path, &st) == 0 ? (long)st.st_size : -1;
 }
 
+/* This machine's sandbox, as a grading probes it (its folder: the scratch one). */
+static const grade_sandbox *the_sandbox(void)
+{
+    static grade_sandbox s;
+    static bool probed;
+    if (!probed) {
+        s = grade_sandbox_probe();
+        grade_sandbox_keep(&s, scratch);
+        probed = true;
+    }
+    return &s;
+}
+
 /* Runs sh -c script as the grader runs the compiler on student files (the sandbox's user and limits;
  * no filter, which would stop the shell's fork); its exit status (-1: did not exit). */
 static int run_untrusted(const char *script, const char *log)
 {
     char *argv[] = {"sh", "-c", (char *)script, NULL};
     grade_run_opts o = {.wall_seconds = 30, .cwd = scratch, .log_path = log, .log_max = 4096, .untrusted = true,
-                        .compiler = true};
+                        .compiler = true, .sandbox = the_sandbox()};
     grade_run_result r = grade_run(argv, &o);
     return r.exited ? r.status : -1;
 }
@@ -92,9 +110,9 @@ static void test_allowlist__framework_api_only(void **state)
                                           "render_film", "system", "fopen", "exit", "_exit", "fork", "getenv",
                                           "syscall", "systeml", "exitl", "fopenf", NULL};
     for (const char *const *s = allowed; *s; s++)
-        if (!grade_allowed_symbol(*s)) fail_msg("the allow-list refuses %s, which part code needs", *s);
+        if (!grade_allow_has(*s)) fail_msg("the allow-list refuses %s, which part code needs", *s);
     for (const char *const *s = refused; *s; s++)
-        if (grade_allowed_symbol(*s)) fail_msg("the allow-list accepts %s", *s);
+        if (grade_allow_has(*s)) fail_msg("the allow-list accepts %s", *s);
 }
 
 /* ---- the suite's results ------------------------------------------------------------------- */
@@ -122,10 +140,21 @@ static void score_results(const char *dir, int status, grade_part_result *r)
     grade_part_spec spec = {.part = 1, .unit_points = 10.0, .unit_tests = 28, .num_tasks = 2,
                             .tasks = {{.task = "1.1", .points = 6.0, .tests = 20, .match = {"a__"}, .num_match = 1},
                                       {.task = "1.2", .points = 4.0, .tests = 8, .match = {"b__"}, .num_match = 1}}};
+    static grade_test_fact room[GRADE_MAX_TESTS];
     memset(r, 0, sizeof *r);
     r->part = 1;
-    grade_suite_results(dir, NULL, 28, status, r);
+    r->build.built = true;
+    r->suite.tests = room;
+    grade_suite_results(dir, NULL, 28, status, 1, &r->suite);
     grade_score_part(&spec, r);
+}
+
+/* Why the suite earned nothing as a whole, in the report's words ("" when it was judged). */
+static const char *suite_reason(const grade_part_result *r)
+{
+    static char words[512];
+    if (!grade_words_unit_zero(r, words, sizeof words)) words[0] = '\0';
+    return words;
 }
 
 static void score_dir(const char *name, grade_part_result *r)
@@ -146,7 +175,7 @@ static void test_suite_score__only_a_suite_run_to_its_end(void **state)
     write_suite_xml(dir, "a", 20, 1);
     write_suite_xml(dir, "b", 8, 0);
     score_results(dir, 1, &r);
-    assert_string_equal(r.suite_reason, "");
+    assert_string_equal(suite_reason(&r), "");
     assert_float_equal(4.0, r.unit_score, 0.0);
 
     /* An _exit(0) in the second group: its file is missing, 20 tests of 28, all passed. */
@@ -154,7 +183,7 @@ static void test_suite_score__only_a_suite_run_to_its_end(void **state)
     assert_int_equal(mkdir(dir, 0755), 0);
     write_suite_xml(dir, "a", 21, 0);
     score_dir("early", &r);
-    assert_string_equal(r.suite_reason, "the suite stopped after 21 of 28 tests");
+    assert_string_equal(suite_reason(&r), "the suite stopped after 21 of 28 tests");
     assert_true(r.unit_score == 0.0);
 
     /* Results of its own added by the code under test: more tests than the suite has. */
@@ -163,7 +192,7 @@ static void test_suite_score__only_a_suite_run_to_its_end(void **state)
     write_suite_xml(dir, "a", 28, 0);
     write_suite_xml(dir, "fake", 5, 0);
     score_dir("extra", &r);
-    assert_non_null(strstr(r.suite_reason, "reported 33 tests, but it has 28"));
+    assert_non_null(strstr(suite_reason(&r), "reported 33 tests, but it has 28"));
     assert_true(r.unit_score == 0.0);
 
     /* Malformed, and a results file that is a symlink (never followed, even to a good file). */
@@ -174,13 +203,13 @@ static void test_suite_score__only_a_suite_run_to_its_end(void **state)
     snprintf(path, sizeof path, "%s/part1: b.xml", dir);
     scratch_write(path, "<testsuites><testsuite><testcase name=");
     score_dir("bad", &r);
-    assert_non_null(strstr(r.suite_reason, "the suite's results are not what it writes: part1: b.xml"));
+    assert_non_null(strstr(suite_reason(&r), "the suite's results are not what it writes: part1: b.xml"));
     assert_int_equal(unlink(path), 0);
     char target[300];
     snprintf(target, sizeof target, "%s/whole/part1: b.xml", scratch);
     assert_int_equal(symlink(target, path), 0);
     score_dir("bad", &r);
-    assert_non_null(strstr(r.suite_reason, "the suite's results are not what it writes: part1: b.xml"));
+    assert_non_null(strstr(suite_reason(&r), "the suite's results are not what it writes: part1: b.xml"));
     assert_true(r.unit_score == 0.0);
 }
 
@@ -232,7 +261,8 @@ static int run_probe(const char *mode, const char *log, bool *cut)
     snprintf(copy, sizeof copy, "cp bin/grade-probe '%s'", probe);
     assert_int_equal(system(copy), 0);
     char *argv[] = {probe, (char *)mode, NULL};
-    grade_run_opts o = {.wall_seconds = 30, .cwd = scratch, .log_path = log, .log_max = 1 << 16, .untrusted = true};
+    grade_run_opts o = {.wall_seconds = 30, .cwd = scratch, .log_path = log, .log_max = 1 << 16, .untrusted = true,
+                        .sandbox = the_sandbox()};
     grade_run_result r = grade_run(argv, &o);
     if (cut) *cut = r.output_cut;
     return r.exited ? r.status : -1;
@@ -304,6 +334,29 @@ static void test_run__a_stage_is_a_namespace_of_its_own(void **state)
     if (processes_with("sleep 97.25")) fail_msg("a setsid daemon outlived the stage that started it");
 }
 
+/* Attack on the grader's own code: a stage that marks its child untrusted but forgets the grading's
+ * sandbox settings. The child must not run unconfined: it exits before it runs anything (126), and
+ * the file it would have written is never made. */
+static void test_run__an_untrusted_child_needs_the_sandbox(void **state)
+{
+    (void)state;
+    char log[256], text[64] = "";
+    snprintf(log, sizeof log, "%s/unset.log", scratch);
+    char *argv[] = {"sh", "-c", "echo ran", NULL};
+    grade_run_opts o = {.wall_seconds = 30, .cwd = scratch, .log_path = log, .log_max = 4096, .untrusted = true,
+                        .compiler = true};
+    grade_run_result r = grade_run(argv, &o);
+    assert_true(r.exited);
+    assert_int_equal(r.status, 126);
+    assert_true(file_size(log) == 0);  /* it printed nothing: it never ran the shell */
+    /* With the settings, the same child runs (the test can fail). */
+    o.sandbox = the_sandbox();
+    r = grade_run(argv, &o);
+    assert_true(r.exited && r.status == 0);
+    first_line(log, text, sizeof text);
+    assert_true(!strncmp(text, "ran", 3));
+}
+
 /* ---- limits and what the report says ------------------------------------------------------- */
 
 static void test_run__untrusted_children_have_a_process_limit(void **state)
@@ -323,12 +376,12 @@ static void test_sandbox__report_names_what_is_missing(void **state)
     (void)state;
     char text[256];
     grade_sandbox s = {.process_limit = 300, .filter_why = "built without libseccomp"};
-    grade_sandbox_describe(&s, text, sizeof text);
+    grade_words_protections_missing(&s, text, sizeof text);
     assert_non_null(strstr(text, "not root: student code ran as your own user"));
     assert_non_null(strstr(text, "had the network"));
     assert_non_null(strstr(text, "no system-call filter: built without libseccomp"));
     s.as_other_user = s.no_network = s.filter = true;
-    grade_sandbox_describe(&s, text, sizeof text);
+    grade_words_protections_missing(&s, text, sizeof text);
     assert_string_equal(text, "");
 }
 
@@ -360,10 +413,15 @@ static void test_guard__nobody_cannot_open_a_reference(void **state)
     snprintf(script, sizeof script, "cat '%s/course/reference_images/part1/case.exr'", scratch);
     assert_int_equal(run_untrusted(script, log), 0);
 
-    char course[300], out[300], why[256] = "";
-    snprintf(course, sizeof course, "%s/course", scratch);
-    snprintf(out, sizeof out, "%s/out", scratch);
-    if (!grade_guard_secrets(course, out, &s, why, sizeof why)) fail_msg("%s", why);
+    /* The secrets as the plan lists them for a grading of this course into out/. */
+    static grade_run_plan rp;
+    grade_secrets secrets;
+    char why[256] = "";
+    snprintf(rp.root, sizeof rp.root, "%s/course", scratch);
+    snprintf(rp.report, sizeof rp.report, "%s/out/report", scratch);
+    snprintf(rp.results, sizeof rp.results, "%s/out/results.json", scratch);
+    grade_plan_secrets(&rp, &secrets);
+    if (!grade_guard_secrets(&secrets, &s, why, sizeof why)) fail_msg("%s", why);
     for (const char *const *f = files; *f; f++) {
         snprintf(script, sizeof script, "id -u >&2; cat '%s/%s'", scratch, *f);
         int status = run_untrusted(script, log);
@@ -472,6 +530,7 @@ int sandbox_tests(void)
         cmocka_unit_test(test_run__log_is_a_fresh_file_never_a_planted_link),
         cmocka_unit_test(test_run__a_flood_is_cut_while_the_child_runs),
         cmocka_unit_test(test_run__untrusted_children_have_a_process_limit),
+        cmocka_unit_test(test_run__an_untrusted_child_needs_the_sandbox),
         cmocka_unit_test(test_run__a_stage_is_a_namespace_of_its_own),
         cmocka_unit_test(test_run__student_code_is_filtered_from_its_first_instruction),
         cmocka_unit_test(test_sandbox__report_names_what_is_missing),

@@ -1,7 +1,7 @@
 /* Test machinery: not part of any assignment. The grader's pipes for the split suites
- * (grader/grade_judge.c): grade_run_piped gives a child its stdin and its fd 3. */
+ * (grader/grade_tests.c): grade_run_piped gives a child its stdin and its fd 3. */
 #include "../common/test.h"
-#include "../../grader/grade.h"
+#include "../../grader/grade_run.h"
 #include <fcntl.h>
 #include <string.h>
 #include <unistd.h>

@@ -6,7 +6,7 @@
  * the file, the part or the case, and what was expected (grading/README.md is the file's manual).
  * The hidden cases' file (grading/hidden/cases.json) has the same form and adds its cases to the
  * public file's parts. */
-#include "grade.h"
+#include "grade_spec.h"
 #include "../framework/exr.h"
 #include <jansson.h>
 #include <math.h>
@@ -257,25 +257,6 @@ pl_status grade_spec_load(const char *path, const char *hidden_path, grade_spec 
     return st;
 }
 
-void grade_case_command(const grade_case *k, const char *bin, const char *scene, const char *out,
-                        unsigned long long seed, int threads, grade_case_text *text, char **argv)
-{
-    snprintf(text->width, sizeof text->width, "%d", k->width);
-    snprintf(text->height, sizeof text->height, "%d", k->height);
-    snprintf(text->samples, sizeof text->samples, "%d", k->samples);
-    snprintf(text->seed, sizeof text->seed, "%llu", seed);
-    snprintf(text->threads, sizeof text->threads, "%d", threads);
-    int n = 0;
-    argv[n++] = (char *)bin;
-    for (int f = 0; f < k->num_flags; f++) argv[n++] = k->flags[f];
-    /* No output file: the film goes to the grader's pipe (GRADE_FILM_FD), never through a file. */
-    char *fixed[] = {"-r", text->width, text->height, "-s", text->samples, "--seed", text->seed, "-t",
-                     text->threads, "-q", out ? "-f" : "--film-fd", out ? (char *)out : GRADE_FILM_FD_TEXT,
-                     (char *)scene, NULL};
-    for (char **f = fixed; *f; f++) argv[n++] = *f;
-    argv[n] = NULL;
-}
-
 void grade_spec_free(grade_spec *s)
 {
     if (!s) return;
@@ -286,4 +267,21 @@ void grade_spec_free(grade_spec *s)
                 free(s->parts[k].cases[i].reference_flags[f]);
             }
     memset(s, 0, sizeof *s);
+}
+
+int grade_spec_task_of(const grade_part_spec *p, const char *name)
+{
+    /* Test functions are named test_<function>__<behaviour>: the prefix is matched after "test_". */
+    if (!strncmp(name, "test_", 5)) name += 5;
+    for (int t = 0; t < p->num_tasks; t++)
+        for (int m = 0; m < p->tasks[t].num_match; m++)
+            if (!strncmp(name, p->tasks[t].match[m], strlen(p->tasks[t].match[m]))) return t;
+    return -1;
+}
+
+bool grade_spec_adaptive(const grade_case *k)
+{
+    for (int f = 0; f < k->num_flags; f++)
+        if (!strcmp(k->flags[f], "-a")) return true;
+    return false;
 }
