@@ -6,7 +6,7 @@
 #   2. the stubs, one part at a time: the split verdicts equal test-partN's (every test fails), and
 #      a test that says "not implemented" there says it split too;
 #   3. the attacks of course/judge/attacks/ (each file says what it tries and what must happen, and
-#      which part file it replaces): exactly the tests its answers earn pass (its "Passes:" line; 0
+#      which part file it replaces): exactly the tests its answers earn pass (its "expect: passes=N"; 0
 #      for a stub with a cheat), and
 #      the judge always ends by its own verdict (status 1, or 3 for a record stream that broke on a
 #      render's worker), never by a crash.
@@ -37,7 +37,7 @@ problem() {
 
 # split N [PATTERN]: part N's tests, each as subject | judge; "<name> pass|fail|todo" lines in
 # $work/split-N.txt ("todo": failed saying "not implemented"). A judge that ends otherwise than by
-# a verdict is a problem. With $judge_kb set (an attack's "Judge memory:" line), each judge runs
+# a verdict is a problem. With $judge_kb set (an attack's "judge memory:" line), each judge runs
 # under `ulimit -v` of that many KiB, and one that says it has no memory is a problem: it sized a
 # payload by what the record claims instead of what the call can return.
 judge_kb=""
@@ -118,22 +118,25 @@ done
 # ---- 3. the attacks -----------------------------------------------------------------------------
 for attack in $(case $stages in *" attacks "*) ls "$root"/course/judge/attacks/*.c ;; esac); do
     name=$(basename "$attack" .c)
-    n=$(sed -n 's/^#include "part\([1-9]\)\.h"$/\1/p' "$attack")
-    folder=$(basename "$(dirname "$(ls "$root"/parts/part${n}_*/part$n.h)")")
-    # The tests an attack is graded on, when its header names them ("Graded on <pattern>"): part 2's
-    # whole suite takes half a minute.
-    pattern=$(sed -n 's/^ \* Graded on \(test_[A-Za-z0-9_*]*\).*/\1/p' "$attack")
-    file=$(sed -n 's/^ \* Replaces: \([a-z_0-9]*\.c\)$/\1/p' "$attack")
-    # The judge's address space, when the header caps it ("Judge memory: <MiB> MiB").
-    judge_kb=$(sed -n 's/^ \* Judge memory: \([0-9]*\) MiB$/\1/p' "$attack")
+    # Its header, in the catalogue's one format (course/README.md, "Attacks"): part, replaces,
+    # tests (the tests it is graded on: part 2's whole suite takes half a minute), judge memory (the
+    # judge's address space), expect: passes=N.
+    key() { sed -n "s/^ \* $1: \(.*\)$/\1/p" "$attack" | head -n 1; }
+    n=$(key part)
+    replaces=$(key replaces)
+    folder=$(basename "$(dirname "$replaces")")
+    file=$(basename "$replaces")
+    pattern=$(key tests)
+    judge_kb=$(key "judge memory" | sed -n 's/^\([0-9]*\) MiB$/\1/p')
     judge_kb=${judge_kb:+$((judge_kb * 1024))}
-    [ -f "$root/parts/$folder/$file" ] || { problem "attack $name: its Replaces: line names no file of parts/$folder"; continue; }
+    earned=$(key expect | sed -n 's/^passes=\([0-9]*\)$/\1/p')
+    [ -f "$root/$replaces" ] && [ "$folder" = "$(basename "$(dirname "$(ls "$root"/parts/part${n}_*/part$n.h)")")" ] ||
+        { problem "attack $name: its replaces: line names no file of part ${n:-?}'s folder"; continue; }
     cp "$root/parts/$folder/$file" "$tree/parts/$folder/$file.inc"  # for an attack that wraps the course's code
     cp "$attack" "$tree/parts/$folder/$file"
     build "bin/subject-part$n" "bin/judge-part$n"
     split "$n" "${pattern:-*}"
     passed=$(grep -c ' pass$' "$work/split-$n.txt")
-    earned=$(sed -n 's/^ \* Passes: \([0-9]*\).*/\1/p' "$attack")
     if [ "$passed" = "$earned" ]; then echo "ok    attack $name (part $n): $(wc -l < "$work/split-$n.txt") tests, $passed pass, as its answers earn"
     else problem "attack $name (part $n): $passed tests pass, its answers earn ${earned:-?}"; fi
     cp "$root/parts/$folder"/*.c "$tree/parts/$folder/"

@@ -10,6 +10,7 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <unistd.h>
 
 #define GRADER "grader"
 #define MAX_MODULES 64
@@ -569,6 +570,58 @@ static void test_layout__each_check_refuses_a_planted_break(void **state)
         if (found[rule] == 0) fail_msg("rule %d's check passed a source planted with what it refuses", rule + 1);
 }
 
+/* ---- the repository's layout (README.md) -------------------------------------------------------- */
+
+/* The root README's Layout section comes right after its two commands, and its block lists exactly the
+ * top-level folders of this tree (a release's too: course/ is the instructor's paragraph's, which a
+ * release drops with the folder; what make builds is nobody's to list). */
+static void test_layout__the_readme_lists_every_top_level_folder(void **state)
+{
+    (void)state;
+    char *text = NULL;
+    size_t len = 0;
+    pl_diag d = pl_diag_default();
+    assert_int_equal(PL_OK, file_read_all("README.md", "the README", 1 << 20, &text, &len, &d));
+    const char *first = strstr(text, "\n## ");
+    if (!first || strncmp(first, "\n## Layout\n", 11))
+        fail_msg("README.md: its first section after the two commands must be '## Layout'");
+    const char *block = strstr(first, "\n```\n");
+    const char *end = block ? strstr(block + 5, "\n```") : NULL;
+    if (!block || !end) fail_msg("README.md: the Layout section has no ``` block");
+    char listed[32][48];
+    int n = 0;
+    for (const char *line = block + 5; line < end && n < 32; line = strchr(line, '\n') + 1) {
+        /* "name/  ...", or "bench/ fuzz/  ...": the names before the description, each ending in '/'. */
+        for (const char *w = line; *w != ' ' && *w != '\n' && n < 32;) {
+            size_t k = strcspn(w, " \n");
+            if (k > 1 && w[k - 1] == '/') snprintf(listed[n++], sizeof listed[0], "%.*s", (int)(k - 1), w);
+            w += k;
+            if (*w == ' ' && w[1] != ' ') w++;
+        }
+    }
+    static const char *const made[] = {"bin", "build", "out", "release", "course"};
+    DIR *dir = opendir(".");
+    assert_non_null(dir);
+    int missing = 0;
+    for (struct dirent *e; (e = readdir(dir));) {
+        char path[300];
+        snprintf(path, sizeof path, "%s/.", e->d_name);
+        if (e->d_name[0] == '.' || access(path, F_OK) != 0) continue;
+        bool skip = false, found = false;
+        for (size_t k = 0; k < sizeof made / sizeof made[0]; k++) skip = skip || !strcmp(e->d_name, made[k]);
+        for (int k = 0; k < n; k++) found = found || !strcmp(e->d_name, listed[k]);
+        if (!skip && !found) print_error("README.md's Layout does not list %s/\n", e->d_name), missing++;
+    }
+    closedir(dir);
+    for (int k = 0; k < n; k++) {
+        char path[300];
+        snprintf(path, sizeof path, "%s/.", listed[k]);
+        if (access(path, F_OK) != 0) print_error("README.md's Layout lists %s/, which this tree lacks\n", listed[k]), missing++;
+    }
+    free(text);
+    if (missing) fail_msg("%d folders differ between README.md's Layout and the tree", missing);
+}
+
 int layout_tests(void)
 {
     const struct CMUnitTest tests[] = {
@@ -581,6 +634,7 @@ int layout_tests(void)
         cmocka_unit_test(test_layout__one_header_per_module),
         cmocka_unit_test(test_layout__no_mutable_state_outside_a_frame),
         cmocka_unit_test(test_layout__each_check_refuses_a_planted_break),
+        cmocka_unit_test(test_layout__the_readme_lists_every_top_level_folder),
     };
     return cmocka_run_group_tests_name("grader layout (grader/README.md's rules)", tests, load_sources, free_sources);
 }

@@ -8,9 +8,11 @@
  * neither crashes nor repeats the claimed size.
  * The judge runs under an address space of 200 MiB here, so one that allocates what the record
  * claims says it has no memory, and split_check.sh counts that as a problem.
- * Replaces: adaptive.c
- * Judge memory: 200 MiB
- * Passes: 0 */
+ * part: 5
+ * replaces: parts/part5_adaptive/adaptive.c
+ * judge memory: 200 MiB
+ * expect: passes=0
+ */
 #include "part5.h"
 #include "../../framework/todo.h"
 #include "../../grader/seam/seam.h"

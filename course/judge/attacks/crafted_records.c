@@ -3,8 +3,10 @@
  * output of 1 GiB + 1, a trace of 2^31 entries, four billion stub reports naming no function, the
  * answer to another function, a short record; then the process exits. Expected: every test fails with the judge's
  * message, and the judge neither crashes nor allocates what the record claims.
- * Replaces: adaptive.c
- * Passes: 0 */
+ * part: 5
+ * replaces: parts/part5_adaptive/adaptive.c
+ * expect: passes=0
+ */
 #include "part5.h"
 #include "../../framework/todo.h"
 #include "../../grader/seam/seam.h"

@@ -2,8 +2,11 @@
  * claims a tree of 2^30 nodes (and sends 8 bytes of it), then exits; the other tasks are the stubs.
  * Expected: the judge refuses the size before allocating anything, and the tests fail.
  * Graded on test_bvh_build* (the tests of the build alone).
- * Replaces: bvh.c
- * Passes: 0 */
+ * part: 2
+ * replaces: parts/part2_bvh/bvh.c
+ * tests: test_bvh_build*
+ * expect: passes=0
+ */
 #include "part2.h"
 #include "../../framework/todo.h"
 #include "../../grader/seam/seam.h"

@@ -5,8 +5,10 @@
  * tests with at most 16 pixel samples pass, as the right answers earn (the camera, triangle and
  * sphere tests, the two exact pixel_sample_ray tests, the one-sample pixel loop); the three
  * statistical pixel loop tests and the render test fail.
- * Replaces: pixel.c
- * Passes: 24 */
+ * part: 1
+ * replaces: parts/part1_raygen/pixel.c
+ * expect: passes=24
+ */
 #include "part1.h"
 #include "../../framework/todo.h"
 #include <stdatomic.h>

@@ -2,8 +2,10 @@
  * passing run looks like: cmocka's console summary and a whole passing XML results file, to stdout,
  * stderr, the record pipe (fd 3) and every other descriptor it might hold. Expected: every test
  * fails as it does for the stub; the garbage on fd 3 fails the test with the judge's own message.
- * Replaces: adaptive.c
- * Passes: 0 */
+ * part: 5
+ * replaces: parts/part5_adaptive/adaptive.c
+ * expect: passes=0
+ */
 #include "part5.h"
 #include "../../framework/todo.h"
 #include <string.h>

@@ -3,8 +3,11 @@
  * subject may call anyway), a visit to node 2^30 and a test of primitive -5. The work check of the
  * judge indexes its arrays with the trace's entries: the judge must refuse them, not write there.
  * Graded on test_bvh_occluded__counts_its_work_through_the_framework, which fails.
- * Replaces: bvh.c
- * Passes: 0 */
+ * part: 2
+ * replaces: parts/part2_bvh/bvh.c
+ * tests: test_bvh_occluded__counts_its_work_through_the_framework
+ * expect: passes=0
+ */
 #include "part2.h"
 #include "../../framework/counters.h"
 

@@ -3,8 +3,10 @@
  * every test that is still to come. Expected: nothing changes in the judge's process. With no stub
  * report left, the tests judge its answer, a constant false, as they would judge `return false;`:
  * right in the three tests where the pixel must go on sampling, wrong in the others.
- * Replaces: adaptive.c
- * Passes: 3 */
+ * part: 5
+ * replaces: parts/part5_adaptive/adaptive.c
+ * expect: passes=3
+ */
 #include "part5.h"
 #include "../../framework/todo.h"
 
