@@ -29,7 +29,7 @@ $(BIN)/strip_solutions: $(BUILD)/course/release/strip_solutions.o $(STRIP_OBJ) $
 $(BIN)/test-course: $(STRIP_OBJ)
 
 # bin/release_points: each part's points, read by the grader's own case loader (classroom.yml's steps).
-$(BIN)/release_points: $(BUILD)/course/release/release_points.o $(BUILD)/grader/grade_cases.o $(BUILD)/framework/status.o
+$(BIN)/release_points: $(BUILD)/course/release/release_points.o $(BUILD)/grader/grade_spec.o $(BUILD)/framework/status.o
 	$(say) LD $@
 	@mkdir -p $(dir $@)
 	$(Q)$(CC) $(LDFLAGS) -o $@ $^ $(LDLIBS)
@@ -60,7 +60,7 @@ test-grade-local: release $(BIN)/grade  ## make grade without the sandbox: the a
 	$(Q)sh course/platform/grade_local.sh
 
 # ---- references: the solution's renders of every grading case, locally or as a Slurm job array ---
-REF_OBJ := $(BUILD)/course/references/references.o $(BUILD)/grader/grade_cases.o $(BUILD)/grader/grade_run.o \
+REF_OBJ := $(BUILD)/course/references/references.o $(BUILD)/grader/grade_spec.o $(BUILD)/grader/grade_plan.o $(BUILD)/grader/grade_run.o \
            $(BUILD)/grader/grade_rate.o \
            $(BUILD)/grader/grade_fmt.o \
            $(BUILD)/grader/sandbox_$(SANDBOX_IMPL).o $(LIB_OBJ)
