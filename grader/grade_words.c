@@ -413,20 +413,26 @@ static double mean_ratio(const verdict *v)
     return grade_result_mean_ratio(v);
 }
 
-/* The region a failed verdict differs in: its blocks' extent as pixels, and their brightness. */
+/* The region a failed verdict differs in: its blocks' extent as pixels, and their brightness. Most of
+ * the image (three blocks in four or more, as when a constant is missing on every surface but the
+ * lights) is said as the whole image first: that is where to look. */
 static int region_text(const grade_case *k, const verdict *v, char *out, size_t size)
 {
     /* Blocks to pixels from the bottom-left, as the renderer and --trace-pixel count them. */
     int x0 = v->region_x0 * k->width / v->blocks_x, x1 = (v->region_x1 + 1) * k->width / v->blocks_x - 1;
     int y1 = k->height - 1 - v->region_y0 * k->height / v->blocks_y;
     int y0 = k->height - (v->region_y1 + 1) * k->height / v->blocks_y;
-    bool whole = v->region_blocks == v->blocks_x * v->blocks_y;
-    return snprintf(out, size, " The image differs %s: %d of its %d blocks, within x = %d..%d and y = %d..%d (from the "
-                    "bottom-left), are %.3g times the reference's brightness together%s.",
-                    whole ? "everywhere, but not by one factor" : "in a region", v->region_blocks, v->blocks_x * v->blocks_y,
+    int blocks = v->blocks_x * v->blocks_y;
+    bool most = 4 * v->region_blocks >= 3 * blocks;
+    char how[96];
+    if (most) snprintf(how, sizeof how, "The whole image is %s, but not by one factor", v->region_ratio > 1.0 ? "too bright" : "too dark");
+    else snprintf(how, sizeof how, "The image differs in a region");
+    return snprintf(out, size, " %s: %d of its %d blocks, within x = %d..%d and y = %d..%d (from the bottom-left), are "
+                    "%.3g times the reference's brightness together%s.", how, v->region_blocks, blocks,
                     grade_figure_pixel(x0, k->width), grade_figure_pixel(x1, k->width), grade_figure_pixel(y0, k->height),
                     grade_figure_pixel(y1, k->height), public_figure(v->region_ratio, 0.0, GRADE_RATIO_MAX),
-                    whole ? "" : "; the rest matches: look at what that region shows (one object, one light, one material?)");
+                    most ? "; look for a factor that applies to most surfaces before a place"
+                         : "; the rest matches: look at what that region shows (one object, one light, one material?)");
 }
 
 /* Where a statistical verdict failed: the first bad pixel, or the block (or the whole image) that

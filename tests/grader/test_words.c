@@ -98,6 +98,30 @@ static void test_words__a_block_that_differs_is_named_with_its_t(void **state)
     assert_null(strstr(text, "Hint"));
 }
 
+/* A failed verdict whose differing blocks do not agree on one factor: most of the image (a constant
+ * missing on every surface but the lights) is said as the whole image, a few blocks as a region. */
+static void test_words__most_of_the_image_is_the_whole_image_a_few_blocks_a_region(void **state)
+{
+    (void)state;
+    static grade_case k = {.name = "regions", .width = 160, .height = 120, .samples = 16};
+    static grade_case_result c;
+    memset(&c, 0, sizeof c);
+    c.spec = &k, c.ran = true;
+    c.v.p_value = 0.0, c.v.alpha = 1e-4;
+    c.v.ratio[0] = c.v.ratio[1] = c.v.ratio[2] = 1.8;
+    c.v.blocks_x = 10, c.v.blocks_y = 7, c.v.worst_block_x = 1, c.v.worst_block_y = 1;
+    c.v.region_blocks = 63, c.v.region_ratio = 2.2;
+    c.v.region_x0 = 0, c.v.region_x1 = 9, c.v.region_y0 = 0, c.v.region_y1 = 6;
+    char text[4096];
+    grade_words_case_cause(&c, 3, "part3_direct", text, sizeof text);
+    assert_non_null(strstr(text, "The whole image is too bright, but not by one factor: 63 of its 70 blocks"));
+    c.v.region_blocks = 6, c.v.region_ratio = 0.5;
+    c.v.region_x0 = 2, c.v.region_x1 = 4, c.v.region_y0 = 3, c.v.region_y1 = 4;
+    grade_words_case_cause(&c, 3, "part3_direct", text, sizeof text);
+    assert_non_null(strstr(text, "The image differs in a region: 6 of its 70 blocks, within x = 32..79 and y = 35..68"));
+    assert_non_null(strstr(text, "0.5 times the reference's brightness"));
+}
+
 /* ---- facts.json ------------------------------------------------------------------------------ */
 
 /* facts.json names each failure's cause by its stable code, for the class report: a stub, a known
@@ -285,6 +309,7 @@ int words_tests(void)
         cmocka_unit_test(test_words__a_stopped_render_names_the_framework_reason_without_its_bytes),
         cmocka_unit_test(test_words__every_why_has_words),
         cmocka_unit_test(test_words__a_block_that_differs_is_named_with_its_t),
+        cmocka_unit_test(test_words__most_of_the_image_is_the_whole_image_a_few_blocks_a_region),
         cmocka_unit_test(test_facts__each_failure_has_its_cause),
         cmocka_unit_test(test_report__every_entry_present_for_hostile_messages),
         cmocka_unit_test(test_report__no_markup_a_submission_plants_survives),
