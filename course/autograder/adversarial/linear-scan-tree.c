@@ -3,7 +3,8 @@
  * primitive in turn. Its images are right; before, it reported (forged) node-visit counts of its own
  * and took both image cases, the hidden one included. Now the grader measures the render's CPU time
  * itself (the kernel's count) against the course's own part on the same case: a linear scan is tens
- * of times slower, and loses both cases whatever it says about its work.
+ * of times slower, and loses both cases whatever it says about its work. Its tree, split in index
+ * order, also fails task 2.2's SAH cost check, which the judge makes on the returned tree itself.
  * part: 2
  * base: stub
  * replaces: parts/part2_bvh/bvh.c
