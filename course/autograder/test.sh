@@ -36,6 +36,8 @@ ISOLATION_PART=3  # the other part each mutant and adversary is graded on (the q
 start=$(date +%s)
 
 say() { echo "test-autograder: $*"; }
+. tests/common/need.sh
+need jq jq test-autograder  # reads results.json as a student reads it (expect_text)
 [ -s release/autograder.zip ] || { say "FAILED: release/autograder.zip missing (run make release)"; exit 1; }
 if [ "$(id -u)" != 0 ]; then
     say "note: not root: run_autograder cannot run student code as another user; results may differ from Gradescope's"
@@ -151,24 +153,27 @@ finish() {
     if [ -z "$problems" ]; then verdict "$1" PASS "${summary# }"; else verdict "$1" FAIL "${problems# }${summary:+ (${summary# })}"; fi
 }
 
-# expect_text ADVERSARY RESULTS: the adversary's "present: TEXT" lines must be in results.json, its
-# "absent: TEXT" lines and every hidden scene's distinctive lines must not, and none of its
+# expect_text ADVERSARY RESULTS: the adversary's "present: TEXT" lines must be in results.json as a
+# student reads it (its outputs with Markdown's backslash escapes undone), its "absent: TEXT" lines
+# and every hidden scene's distinctive lines in neither that nor the raw file, and none of its
 # "absent-files: PATH..." may exist.
 expect_text() {
     tp=$(dirname "$(dirname "$2")")/text-problems
+    read=$(dirname "$(dirname "$2")")/results-read.txt
+    { jq -r '.output // empty, (.tests[]? | .name, .output)' "$2" 2>/dev/null | sed 's/\\\([[:punct:]]\)/\1/g'; cat "$2"; } >"$read"
     sed -n 's/^ \* present: *//p' "$1" | while IFS= read -r t; do
-        grep -qF -- "$t" "$2" || echo "results.json lacks \"$t\";"; done >"$tp"
+        grep -qF -- "$t" "$read" || echo "results.json lacks \"$t\";"; done >"$tp"
     sed -n 's/^ \* absent: *//p' "$1" | while IFS= read -r t; do
-        grep -qF -- "$t" "$2" && echo "results.json holds \"$t\";"; done >>"$tp"
+        grep -qF -- "$t" "$read" && echo "results.json holds \"$t\";"; done >>"$tp"
     for scene in "$repo"/grading/hidden/*.dae; do
         grep -E '^ *<(source|float_array|p|triangles|light|node)[ >]' "$scene" | head -n 20 | while IFS= read -r t; do
-            grep -qF -- "$t" "$2" && echo "results.json holds a line of $(basename "$scene");"; done
+            grep -qF -- "$t" "$read" && echo "results.json holds a line of $(basename "$scene");"; done
     done | sort -u >>"$tp"
     for p in $(sed -n 's/^ \* absent-files: *//p' "$1"); do
         [ ! -e "$p" ] || { echo "$p exists: student code wrote outside its sandbox;"; rm -rf "$p"; }
     done >>"$tp"
     problems="$problems$(tr '\n' ' ' <"$tp")"
-    rm -f "$tp"
+    rm -f "$tp" "$read"
 }
 
 # ---- the cases -------------------------------------------------------------------------------
@@ -345,11 +350,13 @@ echo
 printf '%-5s %-48s %5s  %s\n' "" "case" "s" "points (or what went wrong)"
 failed=0 passed=0
 for v in "$tmp"/cases/*/verdict; do
+    [ -f "$v" ] || continue  # no case matched AUTOGRADER_TEST_ONLY
     IFS=$'\t' read -r ok name secs detail <"$v"
     printf '%-5s %-48s %5s  %s\n' "$ok" "$name" "$secs" "$detail"
     if [ "$ok" = PASS ]; then passed=$((passed + 1)); else failed=$((failed + 1)); fi
 done
 for d in "$tmp"/cases/*/; do
+    [ -d "$d" ] || continue
     [ -f "$d/verdict" ] || { echo "FAIL  $(basename "$d"): the case did not finish"; failed=$((failed + 1)); }
 done
 # Nothing outside the sandbox touched: the system() adversary's target, had it run, and nothing the
@@ -358,6 +365,7 @@ done
 left=$(find /tmp /var/tmp /dev/shm -xdev -user nobody 2>/dev/null | head -n 5)
 [ -z "$left" ] || { echo "FAIL  files of the sandbox's user outlived the gradings: $left"; failed=$((failed + 1)); }
 echo
+[ $((passed + failed)) -gt 0 ] || { say "FAILED: no case matched AUTOGRADER_TEST_ONLY='$ONLY'"; exit 1; }
 say "$passed passed, $failed failed, $(( $(date +%s) - start )) s (seed $SEED, $JOBS at once)"
 if [ "$failed" != 0 ]; then
     say "logs: each case's run.log and results/ under $tmp/cases (kept)"
