@@ -72,10 +72,12 @@ static double sin2_refracted(vec3 wo, double ior)
     return eta * eta * (1.0 - (double)wo.z * wo.z);
 }
 
-/* The refracted direction in double (Snell), for sin2_refracted < 1. */
+/* The refracted direction in double (Snell), for sin2_refracted < 1; at the critical angle and past
+ * it, the grazing direction it tends to (never NaN: a direction the tests accept within
+ * CRITICAL_SLACK of the critical angle is compared with that limit). */
 static void refracted(vec3 wo, double ior, double out[3])
 {
-    double eta = eta_of(wo, ior), c = sqrt(1.0 - sin2_refracted(wo, ior));
+    double eta = eta_of(wo, ior), c = sqrt(fmax(0.0, 1.0 - sin2_refracted(wo, ior)));
     out[0] = -eta * wo.x;
     out[1] = -eta * wo.y;
     out[2] = wo.z > 0.0f ? -c : c;
@@ -222,6 +224,16 @@ static int scale_convention(rgb w, rgb t, double eta)
  * *convention's once one was seen. */
 static void check_refracted(const char *fn, vec3 wo, double ior, vec3 wi, rgb w, rgb t, int *convention)
 {
+    /* Under total internal reflection there is no refracted direction to compare with: the only
+     * right sample is the mirror's (the callers match it first). */
+    double s2 = sin2_refracted(wo, ior);
+    if (s2 >= 1.0)
+        PL_FAIL("wrong: %s gave wi = (%.6f, %.6f, %.6f) (weight (%g, %g, %g)) for wo = (%.6f, %.6f, %.6f) from inside "
+                "(ior %g), past the critical angle: eta sin(theta_o) = %.4f > 1, total internal reflection. No light "
+                "refracts there; all of it reflects: return the mirror's sample, wi = reflect(wo) = (%.6f, %.6f, "
+                "%.6f) (task 6.5, handout/part6.md)", fn, (double)wi.x, (double)wi.y, (double)wi.z, (double)w.r,
+                (double)w.g, (double)w.b, (double)wo.x, (double)wo.y, (double)wo.z, ior, sqrt(s2), -(double)wo.x,
+                -(double)wo.y, (double)wo.z);
     double want[3];
     refracted(wo, ior, want);
     if (!close_refracted(wi, want))
