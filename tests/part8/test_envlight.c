@@ -465,17 +465,21 @@ static void fail_black_texel(const env_distribution *d, vec2 u, int x, int y)
             x, y, ux, uy);
 }
 
-/* Why the directions do not follow the tables, where the counts say: the texel choice (the counts
- * per texel) or the point within it (the 2 x 2 cells of each texel, given its count). */
+/* Why the directions do not follow the tables, where the counts say so beyond doubt: the texel
+ * choice (the counts per texel) or the point within it (each texel's 2 x 2 cells against a quarter
+ * of its own count each). Each at a level far below any check's, counted in no budget: a hint, not a
+ * verdict, and none for a failure that is only chance (a correct solution's 1 in 1000). */
 static const char *texel_hint(const double *observed, const double *expected, int texels, const texel_tally *t, long n)
 {
-    static double per_texel[2][512];
+    static double per_texel[2][512], within[2][2048];
     for (int k = 0; k < texels; k++) {
         per_texel[0][k] = observed[4 * k] + observed[4 * k + 1] + observed[4 * k + 2] + observed[4 * k + 3];
         per_texel[1][k] = expected[4 * k] + expected[4 * k + 1] + expected[4 * k + 2] + expected[4 * k + 3];
+        for (int c = 0; c < 4; c++) within[0][4 * k + c] = observed[4 * k + c], within[1][4 * k + c] = per_texel[0][k] / 4;
     }
-    /* A hint, not a verdict: a level far below any check's, counted in no budget. */
-    bool texels_right = !stats_chi2_test(per_texel[0], per_texel[1], texels, 5.0, 1e-6).reject;
+    const double sure = 1e-6;
+    bool texels_wrong = stats_chi2_test(per_texel[0], per_texel[1], texels, 5.0, sure).reject;
+    bool within_wrong = stats_chi2_test(within[0], within[1], 4 * texels, 5.0, sure).reject;
     if (t->corner > 0.9 * n)
         return ": every direction sits on a corner of its texel (theta = y pi / height, phi = x 2 pi / width: "
                "CS184's way), so each texel's samples take one direction. Place the point within the texel at the "
@@ -484,14 +488,15 @@ static const char *texel_hint(const double *observed, const double *expected, in
     if (t->mirrored > 0.5 * n)
         return ": most directions lie in the row of the texel u draws counted from the bottom, not from the top: the "
                "rows are in reverse order (theta = (y + fy) pi / height, from 0 at row 0, straight up)";
-    if (texels_right)
-        return ": each texel gets its share, but the points within a texel are not uniform in (theta, phi): place "
-               "each at the fraction of its step that u fell at";
-    if (t->drawn < 0.5 * n)
+    if (texels_wrong && t->drawn < 0.5 * n)
         return ": the texels are not drawn in proportion to their probabilities, and most directions are not in the "
                "texel u draws (the row y with marginal_cdf[y] <= u.y < marginal_cdf[y + 1], then the column the same "
                "way in row y's conditional_cdf)";
-    return ": the texels are not drawn in proportion to their probabilities";
+    if (texels_wrong) return ": the texels are not drawn in proportion to their probabilities";
+    if (within_wrong)
+        return ": each texel gets its share, but the points within a texel are not uniform in (theta, phi): place "
+               "each at the fraction of its step that u fell at";
+    return "";
 }
 
 static void test_env_sample_importance__directions_follow_the_texels(void **state)
