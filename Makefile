@@ -182,7 +182,7 @@ $(BUILD)/framework/sidecar.o $(BUILD)/framework/range.o: $(BUILD)/gen/version.h
 # ---- tests: one binary per suite, so a crash in one part costs no other -----------------------
 $(BUILD)/tests/%.o $(BUILD)/course/%.o: CPPFLAGS += $(shell pkg-config --cflags $(TPKGS))
 
-## test-<suite>: run one suite: test-part1 .. test-part5, test-part6 .. test-part9 (where the course has them), test-framework, test-grader
+## test-<suite>: run one suite: $(HELP_SUITES)
 ## test-part3 FILTER='*hemisphere*': run only the tests whose names match (LIST=1: list them)
 define suite_rules
 $(BIN)/test-$(1): $(call suite_obj,$(1)) $(COMMON_OBJ) $(LIB_OBJ)
@@ -235,12 +235,18 @@ clean:  ## remove build/, bin/ and release/
 	rm -rf build bin release
 
 # `make help`: every `target: ... ## text` line and every `## target: text` line of the makefiles
-# read, in the order read, so a new target documents itself where it is defined.
+# read, in the order read, so a new target documents itself where it is defined. $(HELP_SUITES) in a
+# line's text becomes the suites this tree has: a release of five parts lists no part 6.
+comma := ,
+HELP_SUITES := $(if $(PART_SUITES),test-$(firstword $(PART_SUITES)) .. test-$(lastword $(PART_SUITES))$(comma) )test-framework$(comma) \
+               test-grader$(if $(filter course,$(SUITES)),$(comma) test-course)
 help:  ## this list
 	@echo "pathlab targets (settings: V=1 full commands, WERROR=1, SAN=1, OPT=-O0, STB=vendored):"
-	@awk -F'## ' '/^[$$()A-Za-z0-9_.%<>\/-]+:[^=]*## / { split($$1, t, ":"); sub(/^\$$\(BIN\)/, "$(BIN)", t[1]); \
-	                                                     printf "  make %-22s %s\n", t[1], $$2; next } \
-	              /^## [^:]+: / { s = $$2; i = index(s, ": "); printf "  make %-22s %s\n", substr(s, 1, i - 1), substr(s, i + 2) }' \
+	@awk -F'## ' -v suites='$(HELP_SUITES)' \
+	     '/^[$$()A-Za-z0-9_.%<>\/-]+:[^=]*## / { split($$1, t, ":"); sub(/^\$$\(BIN\)/, "$(BIN)", t[1]); \
+	                                            printf "  make %-22s %s\n", t[1], $$2; next } \
+	      /^## [^:]+: / { s = $$2; gsub(/\$$\(HELP_SUITES\)/, suites, s); i = index(s, ": "); \
+	                      printf "  make %-22s %s\n", substr(s, 1, i - 1), substr(s, i + 2) }' \
 	     $(MAKEFILE_LIST)
 
 # ---- the folders' own targets -----------------------------------------------------------------

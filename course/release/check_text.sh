@@ -199,7 +199,8 @@ check_voice() {
 }
 
 # Paths into the tree that the tree's text mentions (dir/file.ext under a top-level folder of the
-# repository, as in `framework/dae.h`) and `make <target>`s, each checked to exist in the tree.
+# repository, as in `framework/dae.h`) and `make <target>`s, each checked to exist in the tree, and
+# ranges of part suites, each checked to end at the tree's last part (suite_ranges).
 # Outputs (build/, bin/, out/, release/) are not looked for (they are not under those folders), nor
 # wildcard or placeholder paths (part<N>, part1..part5, *).
 check_paths() {
@@ -228,12 +229,33 @@ check_paths() {
         t=${hit##*make }
         echo "$targets" | grep -qx -- "$t" || echo "${hit#$OUT/}\` (no such make target in the release)"
     done >>"$LOGS/paths.txt"
+    suite_ranges >>"$LOGS/paths.txt"
     if [ -s "$LOGS/paths.txt" ]; then
         fail "(g) every path and make target the student tree mentions exists in it"
         head -n 20 "$LOGS/paths.txt" | sed 's/^/      /'
     else
         pass "(g) every path and make target the student tree mentions exists in it"
     fi
+}
+
+# Ranges of part suites ("test-part1 .. test-partN") that the student tree's files and its `make help`
+# name: each must run from a suite the tree has to the tree's last part, so that a release of five
+# parts is not sent to test-part9, nor one of nine told that its suites stop at test-part5. Prints
+# each range that does not.
+suite_ranges() {
+    local last
+    last=$(cd "$OUT" && find tests -maxdepth 1 -name 'part[0-9]*' -type d | sed 's|^tests/||' | sort -V | tail -n 1)
+    [ -n "$last" ] || { echo "tests/: no part suite in the release"; return; }
+    {
+        grep -rnoIE 'test-part[0-9]+`? *\.\. *`?(make )?test-part[0-9]+' "$OUT" | sed "s|^$OUT/||"
+        (cd "$OUT" && unset MAKEFLAGS MFLAGS MAKELEVEL && make --no-print-directory help 2>&1) |
+            grep -oE 'test-part[0-9]+ *\.\. *test-part[0-9]+' | sed 's/^/make help: /'
+    } | while IFS= read -r hit; do
+        lo=$(echo "$hit" | grep -oE 'test-part[0-9]+' | head -n 1)
+        hi=$(echo "$hit" | grep -oE 'test-part[0-9]+' | tail -n 1)
+        [ -d "$OUT/tests/${lo#test-}" ] && [ "$hi" = "test-$last" ] ||
+            echo "$hit (the release's part suites end at test-$last)"
+    done
 }
 
 # The tool's own file handling, on a scratch repository whose names git quotes in its default output

@@ -3,6 +3,7 @@
 #include "../../framework/sampler.h"
 #include "../../framework/todo.h"
 #include <math.h>
+#include <stdlib.h>  /* malloc and free: task 8.2 may want a table of its own (the row weights, say) */
 
 /* === PART 8 | TASK 8.1 | env_sample_uniform ===========================================
  * The environment light sampled uniformly over the sphere (handout/part8.md, section 8.1).

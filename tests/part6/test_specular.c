@@ -13,6 +13,10 @@
  *   because a delta BSDF's sample carries its whole weight), and the reflected fraction is
  *   Schlick's R, by an exact binomial test (the chi-square test of a sampler against its pdf, for a
  *   pdf of two atoms).
+ * Tasks 6.2, 6.4 and 6.5 call earlier ones in the same file (reflect, refract, mirror_sample_f,
+ * refraction_sample_f), so no test can give them the course's: a sample that is not the closed form's
+ * passes when it is what the solution's own earlier task gives for the same wo (own_tasks), and a
+ * mistake of 6.1 or 6.3 costs that task alone.
  * Only weights f |cos| / pdf are checked, never f or pdf alone: a mirror sample with pdf 1 or any
  * other pdf and the matching f is the same sample. The radiance scale of a refraction may be eta^2
  * (the physics, our convention), 1 / eta^2 (CS184's) or 1 (none): all three render a closed glass
@@ -72,10 +76,12 @@ static double sin2_refracted(vec3 wo, double ior)
     return eta * eta * (1.0 - (double)wo.z * wo.z);
 }
 
-/* The refracted direction in double (Snell), for sin2_refracted < 1. */
+/* The refracted direction in double (Snell), for sin2_refracted < 1; at the critical angle and past
+ * it, the grazing direction it tends to (never NaN: a direction the tests accept within
+ * CRITICAL_SLACK of the critical angle is compared with that limit). */
 static void refracted(vec3 wo, double ior, double out[3])
 {
-    double eta = eta_of(wo, ior), c = sqrt(1.0 - sin2_refracted(wo, ior));
+    double eta = eta_of(wo, ior), c = sqrt(fmax(0.0, 1.0 - sin2_refracted(wo, ior)));
     out[0] = -eta * wo.x;
     out[1] = -eta * wo.y;
     out[2] = wo.z > 0.0f ? -c : c;
@@ -100,6 +106,55 @@ static bool close_rgb(rgb got, rgb want)
     return fabsf(got.r - want.r) <= WEIGHT_TOL * fmaxf(1.0f, want.r) && fabsf(got.g - want.g) <= WEIGHT_TOL * fmaxf(1.0f, want.g) &&
            fabsf(got.b - want.b) <= WEIGHT_TOL * fmaxf(1.0f, want.b);
 }
+
+static bool close_vec(vec3 a, vec3 b)
+{
+    const double c[3] = {b.x, b.y, b.z};
+    return close_dir(a, c);
+}
+
+/* ---- the solution's own earlier tasks, to judge a later one with --------------------------------- */
+/* Tasks 6.2, 6.4 and 6.5 call 6.1, 6.3, 6.2 and 6.4 in the same file, so no test can hand them the
+ * course's versions. A sample that is not the closed form's passes when it is what this solution's
+ * own earlier task gives for the same wo: a mistake of 6.1 or 6.3 costs that task alone, and the
+ * later task is judged on how it uses it. Asked once per wo, and only where the closed form fails. */
+typedef struct {
+    const material *m;
+    vec3 wo;
+    bool asked;
+    bool refracts;      /* refract (6.3) found a direction, */
+    vec3 refracted;     /* this one */
+    vec3 mirror;        /* glass only: mirror_sample_f's (6.2) direction and weight */
+    rgb mirror_w;
+    rgb refraction_w;   /* glass only: refraction_sample_f's (6.4) weight */
+} own_tasks;
+
+static own_tasks own_tasks_of(const material *m, vec3 wo)
+{
+    own_tasks o;
+    memset(&o, 0, sizeof o);
+    o.m = m, o.wo = wo;
+    return o;
+}
+
+static const own_tasks *ask_own(own_tasks *o)
+{
+    if (o->asked) return o;
+    o->asked = true;
+    o->refracts = refract(o->wo, o->m->ior, &o->refracted);
+    if (o->m->kind != MATERIAL_GLASS) return o;
+    vec3 wi = vec3_make(0, 0, 0);
+    float pdf = 0.0f;
+    rgb f = mirror_sample_f(o->m, o->wo, &wi, &pdf);
+    o->mirror = wi, o->mirror_w = weight_of(f, wi, pdf);
+    wi = vec3_make(0, 0, 0), pdf = 0.0f;
+    f = refraction_sample_f(o->m, o->wo, &wi, &pdf);
+    o->refraction_w = weight_of(f, wi, pdf);
+    return o;
+}
+
+/* Whether wi is the refraction this solution's own refract (6.3) gives for o's wo. */
+static bool own_refraction(own_tasks *o, vec3 wi) { return ask_own(o)->refracts && close_vec(wi, o->refracted); }
 
 /* ---- 6.1, 6.2: the mirror ------------------------------------------------------------------- */
 
@@ -139,7 +194,7 @@ static void test_mirror_sample_f__direction_and_weight(void **state)
         assert_implemented();
         double want[3];
         reflected(wo, want);
-        if (!close_dir(wi, want))
+        if (!close_dir(wi, want) && !close_vec(wi, reflect(wo)))  /* reflect's own answer is 6.1's to judge */
             PL_FAIL("wrong: mirror_sample_f sent wi = (%.6f, %.6f, %.6f) for wo = (%.6f, %.6f, %.6f); a mirror's only "
                     "direction is reflect(wo) = (%.6f, %.6f, %.6f) (handout/part6.md, 6.2)", (double)wi.x, (double)wi.y,
                     (double)wi.z, (double)wo.x, (double)wo.y, (double)wo.z, want[0], want[1], want[2]);
@@ -218,28 +273,46 @@ static int scale_convention(rgb w, rgb t, double eta)
     return -1;
 }
 
-/* Checks one refracted sample: the direction and its weight, whose scale convention must be
- * *convention's once one was seen. */
-static void check_refracted(const char *fn, vec3 wo, double ior, vec3 wi, rgb w, rgb t, int *convention)
+/* The weight of a refraction: the transmittance times one scale convention, the same in every call
+ * (*convention, once one was seen); for a glass also what its own refraction_sample_f (6.4) weighs. */
+static void check_refraction_weight(const char *fn, own_tasks *o, rgb w, rgb t, int *convention)
 {
-    double want[3];
-    refracted(wo, ior, want);
-    if (!close_refracted(wi, want))
-        PL_FAIL("wrong: %s refracted wo = (%.6f, %.6f, %.6f) (ior %g) into (%.6f, %.6f, %.6f), expected (%.6f, %.6f, %.6f) "
-                "(refract, handout/part6.md, 6.3)", fn, (double)wo.x, (double)wo.y, (double)wo.z, ior, (double)wi.x,
-                (double)wi.y, (double)wi.z, want[0], want[1], want[2]);
-    double eta = eta_of(wo, ior);
+    double eta = eta_of(o->wo, o->m->ior);
     int c = scale_convention(w, t, eta);
+    if (c < 0 && o->m->kind == MATERIAL_GLASS && close_rgb(w, ask_own(o)->refraction_w)) return;
     if (c < 0)
         PL_FAIL("wrong: %s's weight f |cos| / pdf of a refraction is (%g, %g, %g) for wo.z = %g (eta %g); expected the "
                 "transmittance (%g, %g, %g) times eta^2 = %g (or CS184's 1 / eta^2 = %g, or 1): never times 1 - R or a "
-                "cosine (handout/part6.md, 6.4)", fn, (double)w.r, (double)w.g, (double)w.b, (double)wo.z, eta,
+                "cosine (handout/part6.md, 6.4)", fn, (double)w.r, (double)w.g, (double)w.b, (double)o->wo.z, eta,
                 (double)t.r, (double)t.g, (double)t.b, eta * eta, 1.0 / (eta * eta));
     if (*convention >= 0 && c != *convention && fabs(eta - 1.0) > 1e-3)
         PL_FAIL("wrong: %s scales refracted radiance by %s here (wo.z = %g) but by %s before: any one convention is "
-                "accepted, but the same in every call (handout/part6.md, 6.4)", fn, scale_name(c), (double)wo.z,
+                "accepted, but the same in every call (handout/part6.md, 6.4)", fn, scale_name(c), (double)o->wo.z,
                 scale_name(*convention));
     if (fabs(eta - 1.0) > 1e-3) *convention = c;
+}
+
+/* Checks one refracted sample: the direction (Snell's, or the solution's own refract's) and its
+ * weight. */
+static void check_refracted(const char *fn, own_tasks *o, vec3 wi, rgb w, rgb t, int *convention)
+{
+    vec3 wo = o->wo;
+    double ior = o->m->ior, s2 = sin2_refracted(wo, ior), want[3];
+    /* Under total internal reflection there is no refracted direction to compare with: the only
+     * right sample is the mirror's (the callers match it first), or its own refract's. */
+    if (s2 >= 1.0 && !own_refraction(o, wi))
+        PL_FAIL("wrong: %s gave wi = (%.6f, %.6f, %.6f) (weight (%g, %g, %g)) for wo = (%.6f, %.6f, %.6f) from inside "
+                "(ior %g), past the critical angle: eta sin(theta_o) = %.4f > 1, total internal reflection. No light "
+                "refracts there; all of it reflects: return the mirror's sample, wi = reflect(wo) = (%.6f, %.6f, "
+                "%.6f) (task 6.5, handout/part6.md)", fn, (double)wi.x, (double)wi.y, (double)wi.z, (double)w.r,
+                (double)w.g, (double)w.b, (double)wo.x, (double)wo.y, (double)wo.z, ior, sqrt(s2), -(double)wo.x,
+                -(double)wo.y, (double)wo.z);
+    refracted(wo, ior, want);
+    if (s2 < 1.0 && !close_refracted(wi, want) && !own_refraction(o, wi))
+        PL_FAIL("wrong: %s refracted wo = (%.6f, %.6f, %.6f) (ior %g) into (%.6f, %.6f, %.6f), expected (%.6f, %.6f, %.6f) "
+                "(refract, handout/part6.md, 6.3)", fn, (double)wo.x, (double)wo.y, (double)wo.z, ior, (double)wi.x,
+                (double)wi.y, (double)wi.z, want[0], want[1], want[2]);
+    check_refraction_weight(fn, o, w, t, convention);
 }
 
 static void test_refraction_sample_f__direction_weight_and_tir(void **state)
@@ -258,16 +331,19 @@ static void test_refraction_sample_f__direction_weight_and_tir(void **state)
         assert_implemented();
         double s2 = sin2_refracted(wo, m.ior);
         rgb w = weight_of(f, wi, pdf);
+        own_tasks own = own_tasks_of(&m, wo);
         if (s2 > 1.0 + CRITICAL_SLACK) {
-            if (!rgb_is_black(w))
+            if (rgb_is_black(w)) continue;
+            if (!own_refraction(&own, wi))  /* else it followed its own refract (6.3): judged below */
                 PL_FAIL("wrong: refraction_sample_f returned weight (%g, %g, %g) for wo = (%.6f, %.6f, %.6f) from inside, "
                         "past the critical angle (eta sin = %.4f > 1): under total internal reflection it returns black "
                         "(handout/part6.md, 6.4)", (double)w.r, (double)w.g, (double)w.b, (double)wo.x, (double)wo.y,
                         (double)wo.z, sqrt(s2));
-            continue;
         }
-        if (s2 > 1.0 - CRITICAL_SLACK || fabs(wo.z) < 1e-3) continue;  /* at the critical angle, or grazing */
-        check_refracted("refraction_sample_f", wo, m.ior, wi, w, m.transmittance, &convention);
+        else if (s2 > 1.0 - CRITICAL_SLACK || fabs(wo.z) < 1e-3) continue;  /* at the critical angle, or grazing */
+        /* Black where its own refract (6.3) finds no direction: 6.4's part done right. */
+        if (rgb_is_black(w) && !ask_own(&own)->refracts) continue;
+        check_refracted("refraction_sample_f", &own, wi, w, m.transmittance, &convention);
     }
 }
 
@@ -280,6 +356,35 @@ static double schlick(double cos_theta, double ior)
     return r0 + (1.0 - r0) * pow(1.0 - fabs(cos_theta), 5.0);
 }
 
+/* One sample of a glass for o's wo, weight w: a reflection (the mirror's direction, or the
+ * solution's own mirror_sample_f's) with the reflectance's weight (or its own mirror_sample_f's),
+ * else a refraction (check_refracted: none under total internal reflection). Returns whether it
+ * reflected. */
+static bool check_glass_sample(const char *fn, own_tasks *o, vec3 wi, rgb f, float pdf, int *convention)
+{
+    const material *m = o->m;
+    vec3 wo = o->wo;
+    rgb w = weight_of(f, wi, pdf);
+    double mirror[3], snell[3], s2 = sin2_refracted(wo, m->ior);
+    reflected(wo, mirror);
+    refracted(wo, m->ior, snell);
+    bool snells = s2 < 1.0 && close_refracted(wi, snell);
+    bool at_mirror = close_dir(wi, mirror) || (!snells && close_vec(wi, ask_own(o)->mirror));
+    if (at_mirror && (close_rgb(w, m->reflectance) || close_rgb(w, ask_own(o)->mirror_w))) return true;
+    /* A refraction, or at the mirror's direction its own refract's (6.3) refraction (a refract that
+     * leaves wi on wo's side gives it head-on) with a refraction's weight. */
+    if (!at_mirror || own_refraction(o, wi)) {
+        check_refracted(fn, o, wi, w, m->transmittance, convention);
+        return false;
+    }
+    PL_FAIL("wrong: %s reflected wo = (%.6f, %.6f, %.6f) with weight f |cos| / pdf = (%g, %g, %g) (f (%g, %g, %g), pdf "
+            "%g), expected the reflectance (%g, %g, %g): scale f and pdf both by R, so that R cancels (task 6.5, "
+            "handout/part6.md)", fn, (double)wo.x, (double)wo.y, (double)wo.z, (double)w.r, (double)w.g, (double)w.b,
+            (double)f.r, (double)f.g, (double)f.b, (double)pdf, (double)m->reflectance.r, (double)m->reflectance.g,
+            (double)m->reflectance.b);
+    return true;
+}
+
 /* GLASS_SAMPLES samples of glass_sample_f for one wo (angle from the normal, degrees; above 90 from
  * inside): each the mirror's or the refraction's with its weight; the reflected fraction Schlick's. */
 static void check_glass_direction(const material *m, double degrees, int *convention, uint64_t seed)
@@ -287,7 +392,7 @@ static void check_glass_direction(const material *m, double degrees, int *conven
     double th = degrees * M_PI / 180.0;
     vec3 wo = vec3_make((float)(sin(th) * 0.6), (float)(sin(th) * 0.8), (float)cos(th));
     double s2 = sin2_refracted(wo, m->ior);
-    bool tir = s2 > 1.0;
+    own_tasks own = own_tasks_of(m, wo);
     long reflected_n = 0;
     rng g = rng_seeded(seed, (uint64_t)(degrees * 10));
     for (int i = 0; i < GLASS_SAMPLES; i++) {
@@ -295,27 +400,9 @@ static void check_glass_direction(const material *m, double degrees, int *conven
         float pdf = 0.0f;
         rgb f = glass_sample_f(m, wo, rng_uniform2(&g), &wi, &pdf);
         assert_implemented();
-        rgb w = weight_of(f, wi, pdf);
-        double mirror[3];
-        reflected(wo, mirror);
-        if (close_dir(wi, mirror)) {
-            reflected_n++;
-            if (!close_rgb(w, m->reflectance))
-                PL_FAIL("wrong: glass_sample_f reflected wo at %g degrees with weight f |cos| / pdf = (%g, %g, %g) (f (%g, "
-                        "%g, %g), pdf %g), expected the reflectance (%g, %g, %g): scale f and pdf both by R, so that R "
-                        "cancels (handout/part6.md, 6.5)", degrees, (double)w.r, (double)w.g, (double)w.b, (double)f.r,
-                        (double)f.g, (double)f.b, (double)pdf, (double)m->reflectance.r, (double)m->reflectance.g,
-                        (double)m->reflectance.b);
-            continue;
-        }
-        if (tir)
-            PL_FAIL("wrong: glass_sample_f at %g degrees from inside (past the critical angle, %.2f degrees) gave wi = "
-                    "(%.6f, %.6f, %.6f), not the mirror direction: under total internal reflection all light reflects "
-                    "(handout/part6.md, 6.5)", 180.0 - degrees, asin(1.0 / m->ior) * 180.0 / M_PI,
-                    (double)wi.x, (double)wi.y, (double)wi.z);
-        check_refracted("glass_sample_f", wo, m->ior, wi, w, m->transmittance, convention);
+        reflected_n += check_glass_sample("glass_sample_f", &own, wi, f, pdf, convention);
     }
-    if (tir) return;
+    if (s2 > 1.0) return;  /* total internal reflection: every sample was a reflection, checked above */
     /* The reflected fraction: Schlick's R with |cos_theta(wo)|, or leaving glass the refracted cosine
      * (one check each). */
     double R = schlick(wo.z, m->ior), alpha = PART6_CHECK_ALPHA;
@@ -324,7 +411,8 @@ static void check_glass_direction(const material *m, double degrees, int *conven
         double alpha_t = PART6_CHECK_ALPHA, R_t = schlick(sqrt(1.0 - s2), m->ior);
         if (stats_binomial_p2(reflected_n, GLASS_SAMPLES, R_t) >= alpha_t) return;
     }
-    if (p >= alpha) return;
+    /* Where its own refract (6.3) finds no direction, reflecting every sample is right by it. */
+    if (p >= alpha || !ask_own(&own)->refracts) return;
     double r0 = pow((1.0 - m->ior) / (1.0 + m->ior), 2.0);
     PL_FAIL("wrong: glass_sample_f reflected %ld of %d samples at %g degrees %s: a fraction of %.4f, but Schlick's R = "
             "R0 + (1 - R0)(1 - |cos_theta(wo)|)^5 = %.4f with R0 = ((1 - ior) / (1 + ior))^2 = %.4f (exact binomial "
@@ -368,17 +456,8 @@ static void test_glass_sample_f__white_furnace(void **state)
         float pdf = 0.0f;
         rgb f = glass_sample_f(&m, wo, rng_uniform2(&g), &wi, &pdf);
         assert_implemented();
-        rgb w = weight_of(f, wi, pdf);
-        double mirror[3];
-        reflected(wo, mirror);
-        if (close_dir(wi, mirror)) {
-            if (!close_rgb(w, rgb_gray(1.0f)))
-                PL_FAIL("wrong: a white glass (reflectance 1) reflected with weight (%g, %g, %g) at wo.z = %g: a glass "
-                        "that absorbs nothing must return each sample with weight 1 (handout/part6.md, 6.5)", (double)w.r,
-                        (double)w.g, (double)w.b, (double)wo.z);
-        }
-        else
-            check_refracted("glass_sample_f (white)", wo, m.ior, wi, w, m.transmittance, &convention);
+        own_tasks own = own_tasks_of(&m, wo);
+        check_glass_sample("glass_sample_f (a white glass, absorbing nothing)", &own, wi, f, pdf, &convention);
     }
 }
 

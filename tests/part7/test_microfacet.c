@@ -6,14 +6,20 @@
  * - fresnel_conductor (7.2): the value per channel for three metals over the cosines, 1 at grazing.
  * - microfacet_g (7.3): Smith's term with the Beckmann Lambda.
  * - microfacet_f (7.4): the value (with F at the half vector's angle), 0 unless both directions are
- *   above the surface, and reciprocity f(wo, wi) = f(wi, wo).
- * - microfacet_pdf (7.5): the value, the Jacobian 1 / (4 dot(wo, h)) included.
+ *   above the surface (on pairs whose half vector is near the normal, where D(h) is far from 0),
+ *   and reciprocity f(wo, wi) = f(wi, wo).
+ * - microfacet_pdf (7.5): the value, the Jacobian 1 / (4 dot(wo, h)) and cos(theta_h) included;
+ *   0 below the surface.
  * - microfacet_sample_f (7.6): every sample's f and pdf are microfacet_f's and microfacet_pdf's; the
  *   directions follow the pdf (Pearson's chi-square over 20 bands of equal cos(theta) by 32
  *   sectors, the expected counts from the pdf integrated over each cell, and one cell for the
  *   samples lost below the surface: the method of Nori and pbrt); and the mean weight
- *   f cos / pdf is the BSDF's albedo, the integral of f cos over the hemisphere (a furnace test: a
- *   sampler whose weights do not average to the albedo adds or loses energy), by t test.
+ *   f cos / pdf, by the closed forms at its directions, is the BSDF's albedo, the integral of f cos
+ *   over the hemisphere (a furnace test: a sampler whose directions do not average to the albedo
+ *   adds or loses energy), by t test.
+ * Tasks 7.4 and 7.5 put earlier tasks together; the same file holds them, so no test can hand them
+ * the course's D, F and G. A value that matches what the solution's own 7.1-7.3 return, put
+ * together right, passes as well as the closed form: a mistake in 7.1-7.3 costs only its own task.
  * Nothing depends on the order of a sampler's draws or on which of u.x and u.y picks the angle: the
  * samples are judged as a distribution.
  * alpha: six statistical checks (two per sampled case), each at PART7_CHECK_ALPHA (family alpha
@@ -202,6 +208,62 @@ static void test_microfacet_g__matches_smith(void **state)
 
 /* ---- 7.4, 7.5 ------------------------------------------------------------------------------ */
 
+/* Pairs with one direction below the surface whose half vector is near the normal, where D(h) is far
+ * from 0, so a formula that ignores the side of the surface gives a colour there, never the 0 that
+ * D's underflow would hand it (a half vector 73 degrees off the normal, at alpha 0.3): wo at 80
+ * degrees against wi at 95 on the other side (theta_h 7.5 degrees, D(h) 0.85 of its peak), the same
+ * swapped, and wo at 60 against wi at 100 (theta_h 20 degrees, D(h) 0.29 of its peak). */
+static void below_surface_pair(int i, vec3 *wo, vec3 *wi)
+{
+    const double deg = M_PI / 180.0, pairs[][4] = {{80, 0.0, 95, M_PI}, {95, M_PI, 80, 0.0}, {60, 1.0, 100, 1.0 + M_PI}};
+    *wo = dir_at(pairs[i][0] * deg, pairs[i][1]);
+    *wi = dir_at(pairs[i][2] * deg, pairs[i][3]);
+}
+#define BELOW_SURFACE_PAIRS 3
+
+/* The half vector's angle to the normal, in degrees, for the messages. */
+static double half_angle(vec3 wo, vec3 wi)
+{
+    double h[3];
+    half_vector(wo, wi, h);
+    return acos(h[2]) * 180.0 / M_PI;
+}
+
+/* microfacet_f as this solution's own tasks 7.1-7.3 make it, channel c: a mistake of theirs is theirs
+ * alone, and 7.4 is judged on how it puts them together. Called only where the closed form fails. */
+static double own_f(const material *m, vec3 wo, vec3 wi, int c)
+{
+    double h[3];
+    half_vector(wo, wi, h);
+    double cos_h = wi.x * h[0] + wi.y * h[1] + wi.z * h[2];
+    rgb F = fresnel_conductor((float)fmin(1.0, cos_h), m->eta, m->k);
+    float D = beckmann_d(m->alpha, vec3_make((float)h[0], (float)h[1], (float)h[2])), G = microfacet_g(m->alpha, wo, wi);
+    return (double)(&F.r)[c] * G * D / (4.0 * wo.z * wi.z);
+}
+
+/* One pair: f against the closed form (or its own tasks' composition), then reciprocity. */
+static void check_f_pair(const material *m, vec3 wo, vec3 wi)
+{
+    rgb got = microfacet_f(m, wo, wi), back = microfacet_f(m, wi, wo);
+    assert_implemented();
+    const float *gv = &got.r, *bv = &back.r;
+    for (int c = 0; c < 3; c++) {
+        vec3 mirror = vec3_make(-wo.x, -wo.y, wo.z);
+        double want = ref_f(m, wo, wi, c, false), peak = ref_f(m, wo, mirror, c, false);
+        if (!near(gv[c], want, 2e-4, 1e-6 * peak) && !near(gv[c], own_f(m, wo, wi, c), 2e-4, 1e-6 * peak))
+            PL_FAIL("wrong: microfacet_f (alpha %g) for wo.z %.4f, wi.z %.4f, channel %d is %g, expected "
+                    "F(dot(wi, h)) G D / (4 cos_o cos_i) = %g, %.2g%% off (task 7.4, handout/part7.md)%s", (double)m->alpha,
+                    (double)wo.z, (double)wi.z, c, (double)gv[c], want, 100.0 * fabs(gv[c] / want - 1.0),
+                    near(gv[c], ref_f(m, wo, wi, c, true), 2e-4, 1e-6 * peak)
+                        ? " (F is taken at the surface's angle, wi.z: the microfacet that reflects is tilted, "
+                          "take F at dot(wi, h))" : "");
+        /* Unless its own 7.2 or 7.3 is what makes the two orders differ (their tests say so). */
+        if (!near(bv[c], gv[c], 2e-4, 1e-6 * peak) && !near(bv[c], own_f(m, wi, wo, c), 2e-4, 1e-6 * peak))
+            PL_FAIL("wrong: microfacet_f is not reciprocal: f(wo, wi) = %g but f(wi, wo) = %g (wo.z %.4f, wi.z %.4f; "
+                    "task 7.4, handout/part7.md)", (double)gv[c], (double)bv[c], (double)wo.z, (double)wi.z);
+    }
+}
+
 static void test_microfacet_f__matches_the_closed_form_and_is_reciprocal(void **state)
 {
     (void)state;
@@ -210,28 +272,32 @@ static void test_microfacet_f__matches_the_closed_form_and_is_reciprocal(void **
     for (int j = 0; j < 2; j++)
         for (int i = 0; i < DIRECTIONS; i++) {
             vec3 wo = upper_dir(&g), wi = upper_dir(&g);
-            rgb got = microfacet_f(&ms[j], wo, wi), back = microfacet_f(&ms[j], wi, wo);
-            assert_implemented();
-            const float *gv = &got.r, *bv = &back.r;
-            for (int c = 0; c < 3; c++) {
-                vec3 mirror = vec3_make(-wo.x, -wo.y, wo.z);
-                double want = ref_f(&ms[j], wo, wi, c, false), peak = ref_f(&ms[j], wo, mirror, c, false);
-                if (!near(gv[c], want, 2e-4, 1e-6 * peak))
-                    PL_FAIL("wrong: microfacet_f (alpha %g) for wo.z %.4f, wi.z %.4f, channel %d is %g, expected "
-                            "F(dot(wi, h)) G D / (4 cos_o cos_i) = %g (handout/part7.md, 7.4)%s", (double)ms[j].alpha,
-                            (double)wo.z, (double)wi.z, c, (double)gv[c], want,
-                            near(gv[c], ref_f(&ms[j], wo, wi, c, true), 2e-4, 1e-6 * peak)
-                                ? " (F is taken at the surface's angle, wi.z: the microfacet that reflects is tilted, "
-                                  "take F at dot(wi, h))" : "");
-                if (!near(bv[c], gv[c], 2e-4, 1e-6 * peak))
-                    PL_FAIL("wrong: microfacet_f is not reciprocal: f(wo, wi) = %g but f(wi, wo) = %g (wo.z %.4f, wi.z %.4f; "
-                            "handout/part7.md, 7.4)", (double)gv[c], (double)bv[c], (double)wo.z, (double)wi.z);
-            }
+            check_f_pair(&ms[j], wo, wi);
         }
-    vec3 up = vec3_make(0, 0, 1), down = vec3_normalize(vec3_make(0.3f, 0.1f, -0.9f));
-    if (!rgb_is_black(microfacet_f(&ms[0], up, down)) || !rgb_is_black(microfacet_f(&ms[0], down, up)))
-        PL_FAIL("wrong: microfacet_f is not black with one direction below the surface: a conductor only reflects "
-                "(handout/part7.md, 7.4)");
+    for (int i = 0; i < BELOW_SURFACE_PAIRS; i++) {
+        vec3 wo, wi;
+        below_surface_pair(i, &wo, &wi);
+        rgb f = microfacet_f(&ms[0], wo, wi);
+        if (!rgb_is_black(f))
+            PL_FAIL("wrong: microfacet_f(wo.z %.3f, wi.z %.3f) is (%g, %g, %g), expected black: %s below the surface, "
+                    "and a conductor only reflects (task 7.4, handout/part7.md). The half vector is %.0f degrees from "
+                    "the normal, where D(h) = %.3g is far from 0, so the formula alone does not give 0 there: check "
+                    "wo.z > 0 and wi.z > 0 first", (double)wo.z, (double)wi.z, (double)f.r, (double)f.g, (double)f.b,
+                    wo.z > 0.0f ? "wi is" : "wo is", half_angle(wo, wi), ref_d(ms[0].alpha, cos(half_angle(wo, wi) * M_PI / 180.0)));
+    }
+}
+
+/* How a wrong pdf compares with the closed form, when it does in a telling way. */
+static const char *pdf_hint(double got, double want, double alpha, vec3 wo, vec3 wi, double peak)
+{
+    double h[3];
+    half_vector(wo, wi, h);
+    if (near(got, ref_d(alpha, h[2]) * h[2], 2e-4, 1e-6 * peak))
+        return " (the density of h, without the Jacobian 1 / (4 dot(wo, h)) that turns it into a density of wi)";
+    if (near(got, want / h[2], 2e-4, 1e-6 * peak))
+        return " (it is the closed form over cos(theta_h): the density of h is D(h) cos(theta_h), and the cos(theta_h) "
+               "is missing; the two are near where h is near the normal, far apart where it is not)";
+    return "";
 }
 
 static void test_microfacet_pdf__matches_the_closed_form(void **state)
@@ -246,18 +312,28 @@ static void test_microfacet_pdf__matches_the_closed_form(void **state)
             float got = microfacet_pdf(&m, wo, wi);
             assert_implemented();
             double want = ref_pdf(alphas[a], wo, wi), peak = ref_pdf(alphas[a], wo, vec3_make(-wo.x, -wo.y, wo.z));
+            if (near(got, want, 2e-4, 1e-6 * peak)) continue;
+            /* This solution's own D (task 7.1) put together right is 7.5's part done. */
             double h[3];
             half_vector(wo, wi, h);
-            double without_jacobian = ref_d(alphas[a], h[2]) * h[2];
-            if (!near(got, want, 2e-4, 1e-6 * peak))
-                PL_FAIL("wrong: microfacet_pdf (alpha %g) for wo.z %.4f, wi.z %.4f is %g, expected D(h) cos(theta_h) / "
-                        "(4 dot(wo, h)) = %g (handout/part7.md, 7.5)%s", alphas[a], (double)wo.z, (double)wi.z,
-                        (double)got, want, near(got, without_jacobian, 2e-4, 1e-6 * peak)
-                                               ? " (the density of h, without the Jacobian 1 / (4 dot(wo, h)) that turns it "
-                                                 "into a density of wi)" : "");
+            float D = beckmann_d(m.alpha, vec3_make((float)h[0], (float)h[1], (float)h[2]));
+            double cos_o = wo.x * h[0] + wo.y * h[1] + wo.z * h[2];
+            if (near(got, D * h[2] / (4.0 * cos_o), 2e-4, 1e-6 * peak)) continue;
+            PL_FAIL("wrong: microfacet_pdf (alpha %g) for wo.z %.4f, wi.z %.4f (theta_h %.1f degrees) is %g, expected "
+                    "D(h) cos(theta_h) / (4 dot(wo, h)) = %g: a ratio of %.5g, far beyond float rounding (task 7.5, "
+                    "handout/part7.md)%s", alphas[a], (double)wo.z, (double)wi.z, half_angle(wo, wi), (double)got, want,
+                    got / want, pdf_hint(got, want, alphas[a], wo, wi, peak));
         }
-        if (microfacet_pdf(&m, vec3_make(0, 0, 1), vec3_normalize(vec3_make(0.3f, 0.1f, -0.9f))) != 0.0f)
-            PL_FAIL("wrong: microfacet_pdf of a wi below the surface is not 0 (handout/part7.md, 7.5)");
+        for (int i = 0; i < BELOW_SURFACE_PAIRS; i++) {
+            vec3 wo, wi;
+            below_surface_pair(i, &wo, &wi);
+            float pdf = microfacet_pdf(&m, wo, wi);
+            if (pdf != 0.0f)
+                PL_FAIL("wrong: microfacet_pdf(wo.z %.3f, wi.z %.3f) is %g, expected 0: %s below the surface, where "
+                        "task 7.6 never sends a sample (task 7.5, handout/part7.md; the half vector is %.0f degrees from "
+                        "the normal, where D(h) is far from 0: check the sides first)", (double)wo.z, (double)wi.z,
+                        (double)pdf, wo.z > 0.0f ? "wi is" : "wo is", half_angle(wo, wi));
+        }
     }
 }
 
@@ -363,7 +439,11 @@ static void check_sampler(double alpha, double theta_o_deg, uint64_t seed)
             PL_FAIL("wrong: microfacet_sample_f's pdf %g and f %g for its wi (wi.z %.4f) are not microfacet_pdf's %g and "
                     "microfacet_f's %g there (handout/part7.md, 7.6)", (double)pdf, (double)f.g, (double)wi.z,
                     (double)own_pdf, (double)own_f.g);
-        stats_acc_add(&weight, f.g * wi.z / pdf);
+        /* The weight by the closed forms, not by this solution's f and pdf (checked above against its
+         * own tasks 7.4 and 7.5): the furnace judges the directions 7.6 draws, and a mistake in 7.1-7.5
+         * costs their own points, not 7.6's. */
+        double ref = ref_pdf(alpha, wo, wi);
+        stats_acc_add(&weight, ref > 0.0 ? ref_f(&m, wo, wi, 1, false) * wi.z / ref : 0.0);
     }
     stats_result r = stats_chi2_test(observed, expected, CELLS, 5.0, PART7_CHECK_ALPHA);
     if (r.reject)
@@ -372,8 +452,9 @@ static void check_sampler(double alpha, double theta_o_deg, uint64_t seed)
                 "the surface %.0f, expected %.0f (handout/part7.md, 7.6: theta_h = atan(sqrt(-alpha^2 log(1 - u))))",
                 alpha, theta_o_deg, r.stat, r.dof, r.p, PART7_CHECK_ALPHA, observed[CELLS - 1], expected[CELLS - 1]);
     char what[256];
-    snprintf(what, sizeof what, "the mean weight f cos / pdf of microfacet_sample_f (alpha %g, wo at %g degrees, green) "
-             "against the albedo, the integral of f cos (handout/part7.md, 7.6)", alpha, theta_o_deg);
+    snprintf(what, sizeof what, "the mean weight f cos / pdf (the closed forms' f and pdf) at microfacet_sample_f's "
+             "directions (alpha %g, wo at %g degrees, green) against the albedo, the integral of f cos (task 7.6, "
+             "handout/part7.md)", alpha, theta_o_deg);
     assert_mean_matches(&weight, albedo(&m, wo, 1), PART7_CHECK_ALPHA, what);
 }
 
