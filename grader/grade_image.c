@@ -5,6 +5,7 @@
  * beside the image (samples per pixel and where they go, noise, CPU time), the pixels to trace, and
  * the two images, which the report turns into pictures. Nothing here is in words. */
 #include "grade_image.h"
+#include "grade_fmt.h"
 #include "grade_rate.h"
 #include "grade_refs.h"
 #include "../framework/exr.h"
@@ -54,7 +55,7 @@ pl_status grade_image_reference(const char *path, image *out, image *var, grade_
     /* A broken reference is the course's fault, never the student's. */
     *why = grade_why_of(GRADE_WHY_COURSE);
     if (bad) snprintf(why->detail, sizeof why->detail, "the reference %s has %ld bad pixels (run make references)", path, bad);
-    else snprintf(why->detail, sizeof why->detail, "the course's reference: %s", diag.error);
+    else grade_msg(why->detail, sizeof why->detail, "the course's reference: %s", diag.error);
     image_free(out);
     image_free(var);
     return st ? st : PL_ERR_INVALID;
@@ -190,7 +191,7 @@ void grade_image_judge(const grade_spec *spec, const grade_plan_case *pc, const 
     pl_diag diag = pl_diag_default();
     if (film_inputs(f, &cand, &candvar, &bad, &cand_n, &diag) != PL_OK) {
         c->why = grade_why_of(GRADE_WHY_GRADER);
-        snprintf(c->why.detail, sizeof c->why.detail, "%s", diag.error);
+        grade_msg(c->why.detail, sizeof c->why.detail, "%s", diag.error);
         image_free(&cand), image_free(&candvar);
         return;
     }
@@ -211,7 +212,7 @@ void grade_image_judge(const grade_spec *spec, const grade_plan_case *pc, const 
     vp.family_alpha = spec->family_alpha;
     if (verdict_compute(&vc, &vr, &vp, &c->v, &diag) != PL_OK) {
         c->why = grade_why_of(GRADE_WHY_GRADER);
-        snprintf(c->why.detail, sizeof c->why.detail, "%s", diag.error);
+        grade_msg(c->why.detail, sizeof c->why.detail, "%s", diag.error);
     }
     else {
         c->ran = true;

@@ -64,7 +64,9 @@ static bool manifest_entry(const char *dir, const char *name, grade_manifest *m,
     if (!source_name(name)) return refused(why, GRADE_WHY_BAD_NAME, NULL);
     if (st.st_size > GRADE_SOURCE_BYTES) return refused(why, GRADE_WHY_FILE_TOO_BIG, name);
     if (m->count == GRADE_SOURCE_FILES) return refused(why, GRADE_WHY_TOO_MANY_FILES, NULL);
-    snprintf(m->names[m->count++], sizeof m->names[0], "%s", name);  /* fits: source_name bounds it */
+    size_t n = strlen(name);  /* fits: source_name bounds it; a longer name is refused all the same */
+    if (n >= sizeof m->names[0]) return refused(why, GRADE_WHY_BAD_NAME, NULL);
+    memcpy(m->names[m->count++], name, n + 1);
     return true;
 }
 

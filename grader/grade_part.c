@@ -3,6 +3,7 @@
  * the plan and the stage before it made, each returning its own facts into the part's result. This
  * is the one module that calls every stage; the stages call none of each other's. */
 #include "grade_part.h"
+#include "grade_fmt.h"
 #include "grade_build.h"
 #include "grade_guard.h"
 #include "grade_image.h"
@@ -88,7 +89,7 @@ void grade_part(const grade_env *env, const grade_run_plan *rp, const grade_spec
     if (ok) ok = grade_plan_part(env, rp, p, env->submission ? &m : NULL, deadline, plan, planned, sizeof planned);
     if (!ok && why.code == GRADE_WHY_NONE) {
         why = grade_why_of(GRADE_WHY_GRADER);
-        snprintf(why.detail, sizeof why.detail, "%s", plan ? planned : "out of memory");
+        grade_msg(why.detail, sizeof why.detail, "%s", plan ? planned : "out of memory");
     }
     list_cases(ok ? plan : NULL, p, r);
     if (!folder[0]) grade_plan_part_folder(env->root, p->part, folder, sizeof folder);

@@ -5,6 +5,7 @@
  * runs, as the kernel counted them. What the render's process says of itself (its counters, its
  * log's numbers) is never kept: a failure is described by the kind of its ending. */
 #include "grade_render.h"
+#include "grade_fmt.h"
 #include "../framework/exr.h"
 #include "../framework/file.h"
 #include "../framework/output.h"
@@ -29,7 +30,7 @@ static bool scene_copy(const grade_plan_case *pc, grade_why *why)
     free(data);
     if (st) {
         *why = grade_why_of(GRADE_WHY_COURSE);
-        snprintf(why->detail, sizeof why->detail, "the course's scene: %s", diag.error);
+        grade_msg(why->detail, sizeof why->detail, "the course's scene: %s", diag.error);
     }
     return st == PL_OK;
 }
@@ -136,7 +137,7 @@ static bool film_received(const grade_capture *pipe, const grade_case *k, film *
     if (pipe->overflow) return *why = grade_why_of(GRADE_WHY_FILM_TOO_BIG), false;
     if (output_film_receive(pipe->data, (size_t)pipe->len, k->width, k->height, out, &counts, &diag) != PL_OK) {
         *why = grade_why_of(GRADE_WHY_FILM_UNUSABLE);
-        snprintf(why->detail, sizeof why->detail, "%s", diag.error);  /* the framework's words (no number of the film's) */
+        grade_msg(why->detail, sizeof why->detail, "%s", diag.error);  /* the framework's words (no number of the film's) */
         return false;
     }
     if (film_shape_ok(out, k, why)) return true;

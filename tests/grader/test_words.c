@@ -7,6 +7,7 @@
 #include "../common/test.h"
 #include "../common/scratch.h"
 #include "../../grader/grade_facts.h"
+#include "../../grader/grade_fmt.h"
 #include "../../grader/grade_render.h"
 #include "../../grader/grade_report.h"
 #include "../../grader/grade_result.h"
@@ -269,16 +270,16 @@ static void test_report__no_markup_a_submission_plants_survives(void **state)
     snprintf(cases[0].name, sizeof cases[0].name, "case_a");
     built->cases[0].spec = &cases[0];
     built->cases[0].why = grade_why_of(GRADE_WHY_FILM_UNUSABLE);
-    snprintf(built->cases[0].why.detail, sizeof built->cases[0].why.detail, "%s", joined);
+    grade_msg(built->cases[0].why.detail, sizeof built->cases[0].why.detail, "%s", joined);
     refused->part = 2, refused->num_cases = 1;
     refused->build.why = grade_why_of(GRADE_WHY_COURSE);
-    snprintf(refused->build.why.detail, sizeof refused->build.why.detail, "%s", joined);
-    snprintf(refused->build.diagnostics, sizeof refused->build.diagnostics, "x.c:1: error: %s\n```\n%s", joined, joined);
+    grade_msg(refused->build.why.detail, sizeof refused->build.why.detail, "%s", joined);
+    grade_msg(refused->build.diagnostics, sizeof refused->build.diagnostics, "x.c:1: error: %s\n```\n%s", joined, joined);
     snprintf(cases[1].name, sizeof cases[1].name, "case_b");
     cases[1].hidden = true;
     refused->cases[0].spec = &cases[1];
     refused->cases[0].why = grade_why_of(GRADE_WHY_COURSE);
-    snprintf(refused->cases[0].why.detail, sizeof refused->cases[0].why.detail, "%s", joined);
+    grade_msg(refused->cases[0].why.detail, sizeof refused->cases[0].why.detail, "%s", joined);
     char path[256];
     pl_diag d = pl_diag_default();
     snprintf(path, sizeof path, "%s/markup.json", scratch);
