@@ -8,7 +8,7 @@
 #include "material.h"
 #include "spawn.h"
 #include "todo.h"
-#include "trace.h"
+#include "trace_hook.h"
 #include "../parts/part1_raygen/part1.h"  /* call sites of the parts (framework/README.md) */
 #include "../parts/part3_direct/part3.h"
 #include "../parts/part4_global/part4.h"
