@@ -28,7 +28,7 @@ static void begin(trace_log *t, const render_ctx *ctx, const trace_request *req,
                 req->x, req->y, ctx->scene->path, ctx->width, ctx->height, (unsigned long long)ctx->opts->seed);
 }
 
-/* Traces one pixel: renders it once through render_pixel (the render's own per-pixel loop) with the hooks on, so
+/* Traces one pixel: renders it once through the render's per-pixel loop with the hooks on, so
  * every sample uses the generator stream it uses in a render: the trace shows the same value the
  * image has at that pixel. */
 pl_status trace_pixel(const render_ctx *ctx, const trace_request *req, FILE *out, trace_result *result, pl_diag *diag)
@@ -40,7 +40,7 @@ pl_status trace_pixel(const render_ctx *ctx, const trace_request *req, FILE *out
     begin(&t, ctx, req, out);
     film_pixel px = {0};
     pl_trace = &t;
-    render_pixel(ctx, req->x, req->y, &px);
+    render_pixel_traced(ctx, req->x, req->y, &px);
     pl_trace = NULL;
     trace_summary(&t, &px);
     pl_status st = PL_OK;

@@ -1,6 +1,6 @@
 /* --trace-pixel X Y: every path of one pixel, exactly as the render computed it.
  *
- * How: the trace runs the render's own pixel loop (render_pixel, render.h) for the one
+ * How: the trace runs the render's own pixel loop (render_pixel_traced, render.h) for the one
  * pixel on the calling thread with this thread's trace pointer (pl_trace, trace_hook.h) set, so
  * every sample comes from the same per-(pixel, sample) stream and the same code as in the render,
  * and the traced value is the rendered value bit for bit. Nothing in the parts changes: the trace

@@ -1,7 +1,7 @@
 /* The trace's hooks: all that the render code knows of --trace-pixel (trace.h).
  *
  * The seam's framework functions (render_intersect, render_occluded, light_sample_L, rng_uniform,
- * one_bounce_radiance: framework/seam.h) and the pixel loop (render_pixel, while a trace runs it) report
+ * one_bounce_radiance: framework/seam.h) and the traced pixel loop (render_pixel_traced) report
  * here when this thread's pl_trace is set; the trace's modules (trace_events.c and its neighbours)
  * turn the reports into the printed tree and its checks. This header names the structs it passes
  * without their headers, so the random generator, the lights and the render loop include only it,

@@ -95,8 +95,8 @@ void referee_bounce_added(trace_log *t, rgb L)
 {
     trace_path *p = &t->path;
     rgb added = rgb_mul(p->beta, L);
-    const options *o = t->stack[t->depth - 1].ctx->opts;
-    bool kept = o->accumulate || p->bounce == o->max_depth;
+    const render_settings *s = &t->stack[t->depth - 1].ctx->settings;
+    bool kept = s->accumulate || p->bounce == s->max_depth;
     if (kept) p->expected = rgb_add(p->expected, added);
     trace_emit(t, "added", json_pack("{s:i, s:o, s:b}", "bounce", p->bounce, "added", trace_jrgb(added), "kept", kept),
                "bounce %d adds throughput x direct = " V3 "%s", p->bounce, RGB(added), kept ? "" : " (not kept: -o 0)");
