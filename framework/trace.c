@@ -6,7 +6,8 @@
  * random generator) report to trace_intersect, trace_occluded, trace_light and trace_rng
  * (trace_events.c). From those reports the trace prints one line per event, nested by the calls
  * (trace_print.c), and recomputes what a correct part would have returned from the same numbers
- * (trace_referee.c): a line marked !! is a place where the two disagree. The trace runs the very render code on one
+ * (trace_referee.c) and whether each sampler's pdf is the density of its samples (trace_density.c):
+ * a line marked !! is a place where the two disagree. The trace runs the very render code on one
  * pixel, so it shows what the render computed, not a model. */
 #include "trace_internal.h"
 

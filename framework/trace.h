@@ -16,6 +16,12 @@
  * the trace says so (a "!!" line): such marks, and those for values that break an invariant, are
  * counted in trace_result.marks.
  *
+ * What it measures besides: where a part samples (a BSDF at a vertex, the environment map, the
+ * lens), the sampler's pdf against the distribution of its own samples drawn there, by a chi-square
+ * test at level TRACE_DENSITY_ALPHA (trace_density.c), a few times a trace. Bugs that keep an
+ * estimator consistent with itself and its samples (a wrong f that stays plausible) it cannot see:
+ * the grader's images can (handout/README.md, "What a trace cannot see").
+ *
  * The trace's modules and what they share: trace_internal.h. */
 #ifndef PL_TRACE_H
 #define PL_TRACE_H
@@ -23,6 +29,12 @@
 #include <stdbool.h>
 #include <stdio.h>
 #include "render.h"
+
+/* One density check's level: a correct sampler is marked with at most this probability. A trace
+ * makes at most TRACE_DENSITY_CHECKS of them, so a correct trace is marked by one at most once in
+ * 1 / (TRACE_DENSITY_ALPHA x TRACE_DENSITY_CHECKS) = 100,000 traces. */
+#define TRACE_DENSITY_ALPHA 1e-6
+#define TRACE_DENSITY_CHECKS 10
 
 typedef struct {
     int x, y;                   /* the pixel, (0, 0) at the bottom-left like render.h's */

@@ -1,6 +1,6 @@
 /* --trace-pixel's events: the hooks trace_hook.h declares, implemented. Each report from the seam
  * becomes one or more lines of the tree (trace_print.c) and hands its numbers to the referee
- * (trace_referee.c). framework/trace.h explains the approach.
+ * (trace_referee.c) and the density checks (trace_density.c). framework/trace.h explains the approach.
  * Test machinery: not part of any assignment. */
 #include "trace_internal.h"
 #include "accel.h"
@@ -69,7 +69,7 @@ ray trace_camera_ray(ray r)
     return r;
 }
 
-/* Part 9's lens ray: its facts (the referee). */
+/* Part 9's lens ray: its facts (the referee), and once a trace its points' spread (the density). */
 ray trace_lens_ray(const camera *c, ray pinhole, vec2 u, ray r)
 {
     trace_log *t = pl_trace;
@@ -81,6 +81,7 @@ ray trace_lens_ray(const camera *c, ray pinhole, vec2 u, ray r)
         return r;
     }
     referee_lens_ray(t, c, pinhole, u, r);
+    if (t->recording && !t->density.lens) density_check_lens(t, c, pinhole);
     return r;
 }
 
@@ -229,10 +230,11 @@ bool trace_occluded(const render_ctx *ctx, const ray *r)
 }
 
 /* One light sample, with what it adds by the framework's own visibility test (the referee), and
- * for the environment map its facts. */
+ * for the environment map its facts and, once a trace, its sampler's density. */
 void trace_light(const light *l, vec3 p, vec2 u, bool ok, const light_sample *ls)
 {
     trace_log *t = pl_trace;
+    if (trace_replaying) return;  /* the density check's own samples */
     const scene *s = t->ctx->scene;
     long index = l - s->lights;
     if (!ok) {
@@ -255,7 +257,10 @@ void trace_light(const light *l, vec3 p, vec2 u, bool ok, const light_sample *ls
                cosine <= 0.0f ? "light behind the surface (cos <= 0)" : visible ? "visible" : "occluded",
                RGB(visible ? c : rgb_gray(0)));
     referee_diffuse_bound(t, bright);
-    if (l->kind == LIGHT_ENVIRONMENT && l->env) referee_environment(t, l, ls);
+    if (l->kind == LIGHT_ENVIRONMENT && l->env) {
+        referee_environment(t, l, ls);
+        if (t->recording && !t->density.environment) density_check_environment(t, l);
+    }
 }
 
 /* A draw from the generator during part 4's path: the first four of each vertex are kept, so the

@@ -4,8 +4,9 @@
  *   trace_events.c    the hooks trace_hook.h declares: each report of the seam becomes events and checks
  *   trace_print.c     the printer: one line of the tree as text, or one event of the JSON document
  *   trace_referee.c   the per-part rules: what a correct part returns from the numbers the hooks saw
+ *   trace_density.c   the samplers' densities against their own samples, drawn at the vertex
  *
- * The referee judges the parts by the parts' own functions, reached through
+ * The referee and the density checks judge the parts by the parts' own functions, reached through
  * the framework (material.h, light.h, the seam), never by a copy of a part's formula: a copy would
  * be a second solution to keep equal to the first, and would mark an alternative a handout allows.
  * Test machinery: not part of any assignment. */
@@ -56,6 +57,15 @@ typedef struct {
     rgb hidden;             /* sum of those that hit something nearer than the light */
 } trace_direct;
 
+/* The density checks run so far (trace_density.c): a few per trace, so a trace's chance of a
+ * false mark stays bounded whatever its length. */
+typedef struct {
+    int bsdf;               /* BSDF samplers checked */
+    int bsdf_of[8];         /* ... of which at each of the first 8 materials (by index) */
+    bool environment;       /* the environment map's sampler checked (once: it is the same everywhere) */
+    bool lens;              /* the lens's points checked (once: the same for every pixel) */
+} trace_density_done;
+
 /* Everything one trace keeps: the request, the output (text, or the JSON document being built), the
  * stack of part calls under way, and the replays of the path and the direct light in progress. */
 typedef struct trace_log {
@@ -69,6 +79,7 @@ typedef struct trace_log {
     int depth;
     trace_path path;
     trace_direct direct;
+    trace_density_done density;
     int marks;
     int stubs_marked;       /* pl_todo_count() when the last stub was marked */
     const char *camera_ray_by;  /* who made the sample's camera ray, for its mark: part 1, or part 9's lens */
@@ -137,5 +148,14 @@ void referee_converged(trace_log *t, int n, double s1, double s2, float tol, boo
 void referee_lens_ray(trace_log *t, const camera *c, ray pinhole, vec2 u, ray r);
 /* Part 8: an environment sample's radiance and pdf against the map and the part's env_pdf. */
 void referee_environment(trace_log *t, const light *l, const light_sample *ls);
+
+/* ---- the densities (trace_density.c): samplers against their own samples ---------------------- */
+
+/* The BSDF sampler of material m at direction wo (local): its pdf against its samples, drawn here. */
+void density_check_bsdf(trace_log *t, const material *m, vec3 wo);
+/* The environment light's sampler: its pdf (env_pdf, or uniform) against its samples. */
+void density_check_environment(trace_log *t, const light *l);
+/* The lens: thin_lens_ray's starting points against the uniform disc of radius -b. */
+void density_check_lens(trace_log *t, const camera *c, ray pinhole);
 
 #endif

@@ -157,7 +157,8 @@ static rgb delta_replay(trace_log *t, const material *m, vec3 wo, vec3 wi, float
     return fr;
 }
 
-/* The BSDF sample that sent wi (local) from the current vertex; returns the new throughput. */
+/* The BSDF sample that sent wi (local) from the current vertex; returns the new throughput. A
+ * rough BSDF's sampler is measured against its pdf here too, a few times a trace (trace_density.c). */
 static rgb bsdf_step(trace_log *t, vec3 wo, vec3 wi, const char *how)
 {
     trace_path *p = &t->path;
@@ -188,6 +189,7 @@ static rgb bsdf_step(trace_log *t, vec3 wo, vec3 wi, const char *how)
     if (m && trace_shades_diffuse(m) && ((cosine_pdf && rgb_max(factor) > 1.0001f) || rgb_max(fr) > 1.0001f * PL_INV_PI))
         trace_mark(t, "throughput above 1 after a diffuse bounce: f cos / pdf = " V3 ", f = " V3 " (a diffuse f is at "
                    "most 1/pi)", RGB(factor), RGB(fr));
+    if (m && !delta && t->recording) density_check_bsdf(t, m, wo);
     return beta;
 }
 
@@ -333,7 +335,8 @@ static double within(double c, int k, int k2, int after)
  * in its direction, and its pdf is the density part 8 gives that direction (env_pdf over the
  * tables, task 8.3; 1 / (4 pi) for uniform sampling, task 8.1). A direction within 1e-4 of a
  * texel's edge may belong to either texel (its angles were rounded to floats): either one's
- * radiance and density are right there. */
+ * radiance and density are right there. Whether the pdf is the density the sampler draws with is
+ * the density check's to say (trace_density.c). */
 void referee_environment(trace_log *t, const light *l, const light_sample *ls)
 {
     const envmap *e = l->env;
@@ -372,10 +375,12 @@ void referee_environment(trace_log *t, const light *l, const light_sample *ls)
 
 /* ---- part 9: the thin lens (task 9.2) --------------------------------------------------------- */
 
-/* Part 9's lens ray beside the two facts that make it right, each recomputed here: it starts on the
- * lens (the disc of radius R around the camera's position, in the camera's own X and Y) and passes
- * through the pinhole ray's point on the plane of focus (D ahead along the view axis). The
- * tolerances are float rounding's, scaled to the camera's distance from the scene's origin. */
+/* Part 9's lens ray beside the facts that make it right, each recomputed here: it starts on the
+ * lens (the disc of radius R around the camera's position, in the camera's own X and Y), its
+ * direction is a unit vector, and it passes through the pinhole ray's point on the plane of focus
+ * (D ahead along the view axis), measured along its direction made unit (a direction of another
+ * length is its own mark, not a miss). The tolerances are float rounding's, scaled to the camera's
+ * distance from the scene's origin. */
 void referee_lens_ray(trace_log *t, const camera *c, ray pinhole, vec2 u, ray r)
 {
     vec3 forward = mat4_dir(c->camera_to_world, vec3_make(0.0f, 0.0f, -1.0f));
@@ -383,7 +388,9 @@ void referee_lens_ray(trace_log *t, const camera *c, ray pinhole, vec2 u, ray r)
     vec3 offset = vec3_sub(r.o, c->position), to_focus = vec3_sub(focus, r.o);
     float off_plane = vec3_dot(offset, forward);
     float from_centre = vec3_length(vec3_sub(offset, vec3_scale(forward, off_plane)));
-    float miss = vec3_length(vec3_sub(to_focus, vec3_scale(r.d, vec3_dot(to_focus, r.d))));
+    float length = vec3_length(r.d);
+    vec3 d = length > 0.0f ? vec3_scale(r.d, 1.0f / length) : r.d;
+    float miss = vec3_length(vec3_sub(to_focus, vec3_scale(d, vec3_dot(to_focus, d))));
     float scale = 1.0f + vec3_length(c->position);
     bool through = miss <= 1e-4f * (vec3_length(to_focus) + scale);  /* within rounding: the text says so */
     char passes[64] = "passes through that point";
@@ -400,6 +407,9 @@ void referee_lens_ray(trace_log *t, const camera *c, ray pinhole, vec2 u, ray r)
         trace_mark(t, "the lens ray starts off the lens: %.5g along the view axis and %.5g from the lens's centre "
                    "(radius %.5g); the lens is the disc of radius -b in the camera's own X and Y", (double)off_plane,
                    (double)from_centre, (double)c->lens_radius);
+    if (!(fabsf(length - 1.0f) <= 1e-4f))
+        trace_mark(t, "the lens ray's direction has length %.6g, not 1: a camera ray's direction is a unit vector "
+                   "(ray.h, part9.h), and every distance and cosine along it assumes so", (double)length);
     if (!through)
         trace_mark(t, "the lens ray misses the pinhole ray's point on the plane of focus by %.3g: that point would not "
                    "be sharp", (double)miss);
