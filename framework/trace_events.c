@@ -113,6 +113,7 @@ void trace_enter(pl_seam_id fn, const render_ctx *ctx, const ray *r, const hit *
                    "one_bounce_radiance (the framework's: at a mirror or glass it follows material_sample_f's direction "
                    "and adds the light that ray meets):");
     if (t->depth >= MAX_NEST) return;
+    /* The frame keeps copies: a part may reuse its ray and hit once the call returns. */
     trace_frame *f = &t->stack[t->depth++];
     *f = (trace_frame){fn, ctx, *r, *h, pl_todo_count()};
     if (fn == PL_SEAM_at_least_one_bounce_radiance)
@@ -138,6 +139,7 @@ rgb trace_leave(pl_seam_id fn, rgb L)
     if (t->depth == 0) return L;
     trace_frame *f = trace_top(t);
     stub_mark(t, f);
+    /* The referee's checks come before the return's line, so a mark sits inside the call it judges. */
     if (fn == PL_SEAM_at_least_one_bounce_radiance) referee_path_end(t, L);
     if ((fn == PL_SEAM_direct_importance || fn == PL_SEAM_direct_hemisphere) && pl_todo_count() == f->todo_before)
         referee_direct(t, fn, L);
@@ -172,9 +174,11 @@ bool trace_intersect(const render_ctx *ctx, ray *r, hit *h)
     }
     else if (t->depth)
         role = "ray";
+    /* The same query render_intersect makes without a trace: the traced hit is the rendered one. */
     bool found = accel_intersect(ctx->accel, r, h);
     trace_describe_hit(t, role, r, found, h);
     if (found && trace_in(t, PL_SEAM_direct_hemisphere)) referee_hemisphere_hit(t, r, h);
+    /* A bounce ray's hit is the path's next vertex: where its next BSDF sample is replayed. */
     if (role[0] == 'b') {
         t->path.cur = *r;
         if (found) t->path.at = *h;
@@ -207,6 +211,7 @@ static void describe_blocker(const render_ctx *ctx, const ray *r, char *what, si
 bool trace_occluded(const render_ctx *ctx, const ray *r)
 {
     trace_log *t = pl_trace;
+    /* The verdict is the render's own query; the blocker is looked up only to name it. */
     bool blocked = accel_occluded(ctx->accel, r);
     char what[200] = "clear: it reaches the light";
     int prim = -1;

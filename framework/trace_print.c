@@ -27,6 +27,8 @@ json_t *trace_jpoint(const trace_log *t, vec3 v)
 
 /* ---- lines and marks -------------------------------------------------------------------------- */
 
+/* A sample outside --trace-sample's range still runs every hook (its checks must see the same
+ * path), but prints nothing: its fields are dropped here, in one place. */
 void trace_emit(trace_log *t, const char *kind, json_t *fields, const char *fmt, ...)
 {
     if (!t->recording) {
@@ -38,6 +40,7 @@ void trace_emit(trace_log *t, const char *kind, json_t *fields, const char *fmt,
     va_start(ap, fmt);
     vsnprintf(line, sizeof line, fmt, ap);
     va_end(ap);
+    /* Text indents two spaces a level; JSON keeps the level as a number and the text beside it. */
     int level = t->depth + 1;
     if (!t->doc) {
         fprintf(t->out, "%*s%s\n", 2 * level, "", line);
@@ -48,9 +51,11 @@ void trace_emit(trace_log *t, const char *kind, json_t *fields, const char *fmt,
     json_object_set_new(e, "kind", json_string(kind));
     json_object_set_new(e, "level", json_integer(level));
     json_object_set_new(e, "text", json_string(line));
+    /* Between samples (a batch check of -a) there is no sample's list: the document's own takes it. */
     json_array_append_new(t->events ? t->events : t->checks, e);
 }
 
+/* Only marks of printed samples count: --trace-sample narrows what the summary's count covers too. */
 void trace_mark(trace_log *t, const char *fmt, ...)
 {
     char line[400];
@@ -72,15 +77,19 @@ void trace_check_radiance(trace_log *t, const char *what, rgb c)
 
 /* ---- what every module asks ------------------------------------------------------------------- */
 
+/* Calls nested deeper than MAX_NEST are not framed: the innermost framed one answers for them. */
 trace_frame *trace_top(trace_log *t) { return t->depth ? &t->stack[t->depth - 1] : NULL; }
 bool trace_in(trace_log *t, pl_seam_id fn) { return t->depth && trace_top(t)->fn == fn; }
 
+/* Absolute 1e-5 for values near black, relative 1e-3 above: float sums of a few terms in another
+ * order stay within both. */
 bool trace_rgb_close(rgb a, rgb b)
 {
     float d = fmaxf(fabsf(a.r - b.r), fmaxf(fabsf(a.g - b.g), fabsf(a.b - b.b)));
     return d <= 1e-5f + 1e-3f * fmaxf(rgb_max(a), rgb_max(b));
 }
 
+/* A hit a broken part filled may name any material: checked before the trace reads one. */
 const material *trace_material_at(const trace_log *t, const hit *h)
 {
     const scene *s = t->ctx->scene;

@@ -21,6 +21,7 @@ mkdir -p "$scratch"
 failed=0
 # patch | flags of the trace (scene relative to the root) | text the mark must contain. The row
 # "stub:FILE" strips FILE's solutions as the student release does (a half-written tree) instead.
+# The rows are one single-quoted string: no row may hold a quote (an apostrophe ends the list).
 rows='stub:parts/part3_direct/direct.c|-r 64 48 -m 1 --trace-pixel 32 30 scenes/cornell_spheres.dae|stub: Part 3, task 3.3: zero_bounce_radiance() is not implemented yet
 part3-emission-signed-cosine|-r 64 48 -m 0 --trace-pixel 32 41 scenes/cornell_spheres.dae|radiance must be finite and not negative
 part3-pdf-zero-with-f|-r 64 48 -m 2 --trace-pixel 20 10 scenes/cornell_spheres.dae|pdf is 0 but f is
@@ -51,8 +52,8 @@ part7-sampled-theta-alpha-not-squared|-r 64 48 -s 4 -m 5 --trace-pixel 20 10 sce
 part7-half-azimuths-of-h|-r 64 48 -s 4 -m 5 --trace-pixel 20 10 scenes/cornell_microfacet.dae|the samples of microfacet_sample_f do not follow microfacet_pdf
 part7-beckmann-cos-squared|-r 64 48 -s 4 -m 5 --trace-pixel 20 10 scenes/cornell_microfacet.dae|the samples of microfacet_sample_f do not follow microfacet_pdf
 part3-sampler-disagrees-with-pdf|-r 64 48 -m 2 --trace-pixel 20 10 scenes/cornell_spheres.dae|the samples of bsdf_sample_f do not follow bsdf_pdf
-part9-disc-radius-not-square-rooted|-r 64 48 -s 2 -m 0 -b 0.1 -d 2.8 --trace-pixel 5 5 scenes/cornell_spheres.dae|the samples of thin_lens_ray's lens points do not follow
-part9-lens-direction-not-unit|-r 64 48 -s 2 -m 0 -b 0.1 -d 2.8 --trace-pixel 5 5 scenes/cornell_spheres.dae|the lens ray's direction has length'
+part9-disc-radius-not-square-rooted|-r 64 48 -s 2 -m 0 -b 0.1 -d 2.8 --trace-pixel 5 5 scenes/cornell_spheres.dae|lens points do not follow the uniform density over the lens
+part9-lens-direction-not-unit|-r 64 48 -s 2 -m 0 -b 0.1 -d 2.8 --trace-pixel 5 5 scenes/cornell_spheres.dae|direction has length'
 # A scratch copy of the tree in $1 (the release objects reused: make rebuilds what changes).
 fresh_copy() {
     rm -rf "$1" && mkdir -p "$1"
