@@ -183,6 +183,11 @@ float light_environment_pdf(const light *l, vec3 wi)
 #endif
 }
 
+bool light_sample_environment(const light *l, vec2 u, light_sample *out)
+{
+    return l->kind == LIGHT_ENVIRONMENT && sample_environment(l, u, out);
+}
+
 /* A seam function (framework/seam.h): a trace of this thread sees every light sample. */
 bool light_sample_L(const light *l, vec3 p, vec2 u, light_sample *out)
 {

@@ -41,6 +41,10 @@ pl_status light_add_environment(scene *s, bool uniform, pl_diag *diag);
  * other kinds and in a course without part 8. The trace judges part 8's samples by it (the part's
  * own formula, through the framework: trace_internal.h). */
 float light_environment_pdf(const light *l, vec3 wi);
+/* One sample of environment light l as light_sample_L draws it, with no report to a trace: the
+ * trace's own samples of part 8's sampler (trace_density.c). A path of its own, so light_sample_L
+ * keeps its one caller and the inlining the render's speed depends on. false for other kinds. */
+bool light_sample_environment(const light *l, vec2 u, light_sample *out);
 
 /* True for lights with a single direction (one sample per shading point suffices). */
 PL_PART_API bool light_is_delta(const light *l);

@@ -31,8 +31,6 @@ typedef struct {
 struct render_ctx;
 /* One camera ray's radiance (render_ctx.estimate): which one is decided once per render. */
 typedef rgb (*render_estimator)(const struct render_ctx *ctx, ray *r, rng *g);
-/* The direct light at a non-delta hit (render_ctx.direct): part 3's hemisphere or light sampling. */
-typedef rgb (*render_direct)(const struct render_ctx *ctx, const ray *r, const hit *h, rng *g);
 
 typedef struct render_ctx {
     const scene *scene;    /* not owned */
@@ -40,7 +38,6 @@ typedef struct render_ctx {
     const options *opts;   /* not owned: the loop's own choices (threads, samples, adaptive); no estimator reads it */
     render_settings settings;  /* what the estimators read (above) */
     render_estimator estimate; /* chosen by render_ctx_init from the settings: radiance_estimate calls it */
-    render_direct direct;      /* likewise for one_bounce_radiance at a non-delta hit */
     camera camera;         /* the scene's camera with aspect, framing and lens flags applied */
     int width, height;     /* pixels */
     /* The camera samples to take of every pixel: sample_begin .. sample_end - 1 (--samples A:B;
@@ -58,8 +55,8 @@ typedef struct render_ctx {
 
 /* Fills ctx from its parts; the camera is camera_for_render's (camera.h): the scene's (or the
  * default framing), aspect from width/height or CS184's framing, and the -b / -d lens when given.
- * The settings are o's, and the estimator and direct-light sampler are chosen here, once: no
- * sample of the render asks the options again. */
+ * The settings are o's, and the estimator is chosen here, once: no sample of the render asks the
+ * options again. */
 void render_ctx_init(render_ctx *ctx, const scene *s, const accel *a, const options *o);
 
 /* The RNG stream of one camera sample: seeded from (opts->seed, pixel index, sample index). */

@@ -324,7 +324,7 @@ void density_check_environment(trace_log *t, const light *l)
             rng r = density_stream(t, 1, k);
             light_sample ls;
             memset(&ls, 0, sizeof ls);
-            bool got = light_sample_L(l, vec3_make(0.0f, 0.0f, 0.0f), rng_uniform2(&r), &ls);
+            bool got = light_sample_environment(l, rng_uniform2(&r), &ls);
             grid_count(&g, got ? environment_cell(e, ls.wi) : -1);
         }
     }

@@ -239,7 +239,6 @@ bool trace_occluded(const render_ctx *ctx, const ray *r)
 void trace_light(const light *l, vec3 p, vec2 u, bool ok, const light_sample *ls)
 {
     trace_log *t = pl_trace;
-    if (trace_replaying) return;  /* the density check's own samples */
     const scene *s = t->ctx->scene;
     long index = l - s->lights;
     if (!ok) {

@@ -153,7 +153,6 @@ static void test_render_ctx_init__settings_from_the_options(void **state)
     assert_true(ctx.settings.hemisphere);
     assert_int_equal(1, ctx.settings.light_samples);
     assert_non_null(ctx.estimate);
-    assert_non_null(ctx.direct);
     render_estimator paths_last = ctx.estimate;
     o.accumulate = true;
     assert_true(ctx.estimate == paths_last);
