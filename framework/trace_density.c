@@ -15,8 +15,9 @@
  * pdf from its prediction, against a statistical error of 12% a bin.
  *
  * The cost bounds how often: each check draws 4096 samples and evaluates the pdf some 40,000
- * times (a few milliseconds); a trace makes at most TRACE_DENSITY_CHECKS of them: eight BSDF
- * checks (two a material), the environment map's once, the lens's once.
+ * times for a BSDF (4 ms), four times a texel for the map (30 ms for a 512 x 256 sky); a trace makes
+ * at most TRACE_DENSITY_CHECKS of them: eight BSDF checks (two a material), the environment map's
+ * once, the lens's once.
  * Test machinery: not part of any assignment. */
 #include "trace_internal.h"
 #include "envmap.h"
