@@ -20,7 +20,7 @@
 struct render_ctx;
 
 /* TASK 4.1: radiance reflected at h towards r's origin, bounces 1 .. max_depth (-m >= 2), as
- * ctx->settings says (framework/render.h: render_settings; read no other field of the options):
+ * ctx->settings says (framework/render.h: render_settings, never the options ctx->opts points to):
  * all of them with settings.accumulate (-o 1), only bounce max_depth without (-o 0). Russian
  * roulette (when settings.roulette, that is without --no-rr) ends paths early without changing
  * the mean. */
