@@ -254,6 +254,11 @@ help:  ## this list
 # student release has no course/, a part's grading tree holds only what the part's
 # build and tests need.
 -include grader/grader.mk
+# Framework objects that need others of the framework, for the links that list their objects one
+# by one (grader/grader.mk's, through GRADER_FRAMEWORK_OBJ): output.o encodes its files on
+# parallel_for_threads (parallel.o, which carries the helpers' work counts: counters.o), and exr.o
+# writes through exr_io.o. A prerequisite here joins each link's $^.
+$(BIN)/grade $(BIN)/inspect-part $(BIN)/grade-probe: $(addprefix $(BUILD)/framework/,parallel.o counters.o exr_io.o)
 -include grader/seam/seam.mk
 -include tools/tools.mk
 -include handout/handout.mk

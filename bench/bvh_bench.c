@@ -10,7 +10,6 @@
  * Built with -DPL_HAVE_EMBREE (bench/bench.mk does it when Embree's headers are installed), the same
  * triangles and rays also go through Embree's rtcIntersect1 / rtcOccluded1, side by side with the
  * ratio. The renderer never links Embree. Output: Markdown tables on stdout. */
-#include <pthread.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -33,7 +32,7 @@
 #define WIDTH 800
 #define HEIGHT 600
 #define MAX_THREADS 2
-#define BLOCK 256      /* rays per work item: threads take blocks in turn, so both get sky and mesh */
+#define BLOCK 256      /* rays per work item: threads take blocks as they finish, so both get sky and mesh */
 #define MAX_RUNS 15
 
 static int compare_doubles(const void *a, const void *b)
@@ -132,38 +131,38 @@ typedef struct {
     trace_fn trace;
     const void *engine;
     const ray *rays;
-    int num_rays, first_block, step;
+    int num_rays;
     query q;
-    long hits;
+    long *hits;             /* per block, so no two threads write one count */
 } trace_job;
 
-static void *trace_worker(void *arg)
+/* Block i of BLOCK rays, on whichever thread parallel_for hands it to. */
+static void trace_block(void *arg, int i)
 {
     trace_job *job = arg;
+    int end = (i + 1) * BLOCK < job->num_rays ? (i + 1) * BLOCK : job->num_rays;
     long hits = 0;
-    for (int b = job->first_block * BLOCK; b < job->num_rays; b += job->step * BLOCK) {
-        int end = b + BLOCK < job->num_rays ? b + BLOCK : job->num_rays;
-        for (int i = b; i < end; i++) hits += job->trace(job->engine, &job->rays[i], job->q);
-    }
-    job->hits = hits;
-    return NULL;
+    for (int k = i * BLOCK; k < end; k++) hits += job->trace(job->engine, &job->rays[k], job->q);
+    job->hits[i] = hits;
 }
 
-/* Seconds to trace every ray on `threads` threads; *hits counts the rays that hit. */
+/* Seconds to trace every ray on `threads` threads (parallel_for_threads); *hits counts the rays
+ * that hit. */
 static double trace_all(trace_fn trace, const void *engine, const ray *rays, int n, query q, int threads, long *hits)
 {
-    trace_job jobs[MAX_THREADS];
-    pthread_t tid[MAX_THREADS];
-    double t0 = clock_seconds();
-    for (int k = 0; k < threads; k++) {
-        jobs[k] = (trace_job){trace, engine, rays, n, k, threads, q, 0};
-        if (k > 0) pthread_create(&tid[k], NULL, trace_worker, &jobs[k]);
+    int blocks = (n + BLOCK - 1) / BLOCK;
+    long *per_block = calloc((size_t)(blocks > 0 ? blocks : 1), sizeof *per_block);
+    if (!per_block) {
+        fprintf(stderr, "bvh_bench: out of memory\n");
+        exit(1);
     }
-    trace_worker(&jobs[0]);
-    for (int k = 1; k < threads; k++) pthread_join(tid[k], NULL);
+    trace_job job = {trace, engine, rays, n, q, per_block};
+    double t0 = clock_seconds();
+    parallel_for_threads(threads, blocks, trace_block, &job);
     double seconds = clock_seconds() - t0;
     *hits = 0;
-    for (int k = 0; k < threads; k++) *hits += jobs[k].hits;
+    for (int i = 0; i < blocks; i++) *hits += per_block[i];
+    free(per_block);
     return seconds;
 }
 

@@ -23,7 +23,7 @@
 #define CAMERA_DEFAULT_FOCAL_DISTANCE 4.7f
 
 /* A pinhole camera. It looks down its local -Z with local +Y up (COLLADA's convention). */
-typedef struct {
+typedef struct camera {
     mat4 camera_to_world;  /* rigid transform: rotation + translation, no scale */
     vec3 position;         /* camera_to_world applied to the origin */
     float hfov, vfov;      /* full horizontal and vertical field of view, degrees */

@@ -202,11 +202,19 @@ pl_status image_write_hdr(const image *img, const char *path, pl_diag *diag)
     return write_one(path, image_encode_hdr, img, diag);
 }
 
-/* The format follows the name, as CS184's -f does: .png tone-mapped for people, .hdr linear. */
+image_format image_format_of(const char *path)
+{
+    return file_has_extension(path, ".png")   ? IMAGE_FORMAT_PNG
+           : file_has_extension(path, ".hdr") ? IMAGE_FORMAT_HDR
+           : file_has_extension(path, ".exr") ? IMAGE_FORMAT_EXR
+                                              : IMAGE_FORMAT_NONE;
+}
+
 pl_status image_write(const image *img, const char *path, pl_diag *diag)
 {
-    if (file_has_extension(path, ".png")) return image_write_png(img, path, diag);
-    if (file_has_extension(path, ".hdr")) return image_write_hdr(img, path, diag);
+    image_format format = image_format_of(path);
+    if (format == IMAGE_FORMAT_PNG) return image_write_png(img, path, diag);
+    if (format == IMAGE_FORMAT_HDR) return image_write_hdr(img, path, diag);
     return pl_fail(diag, PL_ERR_INVALID, "%s: expected an output name ending in .png or .hdr", path);
 }
 
@@ -216,7 +224,7 @@ pl_status image_read(const char *path, image *out, pl_diag *diag)
 {
     int w, h, channels;
     memset(out, 0, sizeof *out);
-    if (file_has_extension(path, ".hdr")) {
+    if (image_format_of(path) == IMAGE_FORMAT_HDR) {
         float *data = stbi_loadf(path, &w, &h, &channels, 3);
         if (!data) return pl_fail(diag, PL_ERR_IO, "%s: cannot read image: %s", path, stbi_failure_reason());
         pl_status s = image_alloc(out, w, h);

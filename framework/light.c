@@ -5,7 +5,7 @@
 #include "frame.h"
 #include "sampler.h"
 #include "spawn.h"
-#include "trace.h"
+#include "trace_hook.h"
 #include "envmap.h"
 #ifdef PL_HAS_PART8
 #include "../parts/part8_envlight/part8.h"  /* call sites of the parts (framework/README.md) */
@@ -170,6 +170,22 @@ vec3 light_area_corner(const light *l, int k)
 {
     vec3 hu = vec3_scale(l->edge_u, 0.5f), hv = vec3_scale(l->edge_v, 0.5f);
     return vec3_add(l->position, vec3_add(k & 1 ? hu : vec3_neg(hu), k & 2 ? hv : vec3_neg(hv)));
+}
+
+float light_environment_pdf(const light *l, vec3 wi)
+{
+#ifdef PL_HAS_PART8
+    if (l->kind != LIGHT_ENVIRONMENT || !l->env) return 0.0f;
+    return l->env_dist ? env_pdf(l->env, l->env_dist, wi) : sample_uniform_sphere_pdf(wi);
+#else
+    (void)l, (void)wi;
+    return 0.0f;
+#endif
+}
+
+bool light_sample_environment(const light *l, vec2 u, light_sample *out)
+{
+    return l->kind == LIGHT_ENVIRONMENT && sample_environment(l, u, out);
 }
 
 /* A seam function (framework/seam.h): a trace of this thread sees every light sample. */

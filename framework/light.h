@@ -9,7 +9,7 @@
 #include "scene.h"
 #include "status.h"
 
-typedef struct {
+typedef struct light_sample {
     rgb L;        /* incident radiance arriving at p along -wi (already attenuated for point/spot) */
     vec3 wi;      /* unit direction from p towards the light, world space */
     float dist;   /* distance from p to the sampled point (INFINITY for directional/ambient) */
@@ -35,6 +35,16 @@ vec3 light_area_corner(const light *l, int k);
  * task 8.1; otherwise by task 8.4 from the tables task 8.2 builds here, which are checked first
  * (tables that are not CDFs get a warning naming the entry, and the light shines magenta). */
 pl_status light_add_environment(scene *s, bool uniform, pl_diag *diag);
+
+/* The density per steradian with which l's sampler draws direction wi (world, unit), where it is
+ * the environment map: part 8's env_pdf over the tables, or 1 / (4 pi) under --env-uniform; 0 for
+ * other kinds and in a course without part 8. The trace judges part 8's samples by it (the part's
+ * own formula, through the framework: trace_internal.h). */
+float light_environment_pdf(const light *l, vec3 wi);
+/* One sample of environment light l as light_sample_L draws it, with no report to a trace: the
+ * trace's own samples of part 8's sampler (trace_density.c). A path of its own, so light_sample_L
+ * keeps its one caller and the inlining the render's speed depends on. false for other kinds. */
+bool light_sample_environment(const light *l, vec2 u, light_sample *out);
 
 /* True for lights with a single direction (one sample per shading point suffices). */
 PL_PART_API bool light_is_delta(const light *l);

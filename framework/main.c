@@ -169,9 +169,7 @@ static pl_status write_outputs(output_set *out, const options *o, const sidecar_
                                const exr_image *exr_out, const image *img, const heatmap *heat, pl_diag *diag)
 {
     if (o->output) {
-        bool exr = file_has_extension(o->output, ".exr"), hdr = file_has_extension(o->output, ".hdr");
-        output_bind(out, OUTPUT_IMAGE, exr ? exr_encode : hdr ? image_encode_hdr : image_encode_png,
-                    exr ? (const void *)exr_out : (const void *)img);
+        output_bind_image(out, img, exr_out);
         output_bind(out, OUTPUT_RATE_MAP, rate_map_encode, rates);
         output_bind(out, OUTPUT_SIDECAR, sidecar_encode, info);
     }
@@ -197,11 +195,13 @@ static void frame_free(frame *fr)
 }
 
 /* Renders every pixel of the window into fr (freed by the caller, whatever happens); 0 or the exit
- * code. The film is kept only for an EXR, which stores it: other renders resolve each pixel into
- * the image as it finishes (render_image): the same pixels, 144 bytes a pixel less. */
-static int render_frame(render_ctx *ctx, const options *o, const char *prog, frame *fr, pl_diag *diag)
+ * code. The film is kept only for an EXR (the format the output plan decided), which stores it:
+ * other renders resolve each pixel into the image as it finishes (render_image): the same pixels,
+ * 144 bytes a pixel less. */
+static int render_frame(render_ctx *ctx, const options *o, const output_set *out, const char *prog, frame *fr,
+                        pl_diag *diag)
 {
-    fr->exr = (o->output && file_has_extension(o->output, ".exr")) || o->film_fd >= 0;
+    fr->exr = (o->output && out->format == IMAGE_FORMAT_EXR) || o->film_fd >= 0;
     fr->w = ctx->x1 - ctx->x0;
     fr->h = ctx->y1 - ctx->y0;
     fr->samples = calloc((size_t)fr->w * (size_t)fr->h, sizeof *fr->samples);
@@ -262,7 +262,7 @@ static int run(const options *o, const char *prog)
     /* The heat map is drawn now (it reads the BVH's visit counter) but written with the other files. */
     if (o->heatmap && heatmap_render(&ctx, out.path[OUTPUT_HEATMAP], &heat, &diag) != PL_OK) { code = fail(prog, &diag, 1); goto done; }
 
-    if ((code = render_frame(&ctx, o, prog, &fr, &diag)) != 0) goto done;
+    if ((code = render_frame(&ctx, o, &out, prog, &fr, &diag)) != 0) goto done;
     double t1 = clock_seconds();
     rate_map rates = {fr.samples, fr.w, fr.h, o->spp};
     sidecar_info info = {&ctx, load_seconds, a.build_seconds, &fr.stats, o->adaptive ? fr.samples : NULL};

@@ -7,10 +7,11 @@
  * interrupted or failed write never leaves a half image beside a sidecar that describes it.
  * The last section is the film stream, the grader's pipe format (output.h says why it exists). */
 #include "output.h"
+#include "exr.h"
 #include "file.h"
+#include "parallel.h"
 #include <errno.h>
 #include <limits.h>
-#include <pthread.h>
 #include <stdlib.h>
 #include <string.h>
 #include <strings.h>
@@ -95,12 +96,6 @@ static pl_status check_paths(const output_set *set, const char *input, const cha
     return PL_OK;
 }
 
-/* The image formats -f writes: tone-mapped PNG, linear Radiance HDR, and EXR with the film. */
-static bool image_extension_ok(const char *path)
-{
-    return file_has_extension(path, ".png") || file_has_extension(path, ".hdr") || file_has_extension(path, ".exr");
-}
-
 pl_status output_plan(output_set *set, const options *o, pl_diag *diag)
 {
     memset(set, 0, sizeof *set);
@@ -111,18 +106,19 @@ pl_status output_plan(output_set *set, const options *o, pl_diag *diag)
         return pl_fail(diag, PL_ERR_INVALID, "-r %d %d: %lld pixels need about %lld MB, more than half of this "
                        "machine's memory", o->width, o->height, pixels, pixels * BYTES_PER_PIXEL >> 20);
     if (o->output) {
-        if (!image_extension_ok(o->output))
+        /* The format -f writes, decided here once: tone-mapped PNG, linear Radiance HDR, or EXR with the film. */
+        if ((set->format = image_format_of(o->output)) == IMAGE_FORMAT_NONE)
             return pl_fail(diag, PL_ERR_INVALID, "-f %s: expected a file name ending in .png, .hdr or .exr", o->output);
         set->path[OUTPUT_IMAGE] = strdup(o->output);
         set->path[OUTPUT_RATE_MAP] = with_suffix(o->output, "_rate", ".png");
         set->path[OUTPUT_SIDECAR] = with_suffix(o->output, "", ".json");
     }
     if (o->heatmap) {
-        if (!file_has_extension(o->heatmap, ".png"))
+        if (image_format_of(o->heatmap) != IMAGE_FORMAT_PNG)
             return pl_fail(diag, PL_ERR_INVALID, "--heatmap %s: expected a file name ending in .png", o->heatmap);
         set->path[OUTPUT_HEATMAP] = strdup(o->heatmap);
     }
-    bool png = o->output && file_has_extension(o->output, ".png");
+    bool png = set->format == IMAGE_FORMAT_PNG;
     if ((o->output || o->heatmap) && !png_size_ok(o->width, o->height + 64))
         return pl_fail(diag, PL_ERR_INVALID, "-r %d %d: too large for a PNG file (the encoder's limit is about "
                        "715 million pixels)%s", o->width, o->height, png ? "" : "; the rate map is a PNG");
@@ -145,7 +141,7 @@ pl_status output_plan(output_set *set, const options *o, pl_diag *diag)
 pl_status output_plan_merge(output_set *set, const char *output, const char *const *inputs, int count, pl_diag *diag)
 {
     memset(set, 0, sizeof *set);
-    if (!image_extension_ok(output))
+    if ((set->format = image_format_of(output)) == IMAGE_FORMAT_NONE)
         return pl_fail(diag, PL_ERR_INVALID, "-f %s: expected a file name ending in .png, .hdr or .exr", output);
     if (!(set->path[OUTPUT_IMAGE] = strdup(output))) return pl_fail(diag, PL_ERR_NOMEM, "out of memory");
     pl_status st = check_paths(set, NULL, NULL, diag);
@@ -153,7 +149,7 @@ pl_status output_plan_merge(output_set *set, const char *output, const char *con
     return st;
 }
 
-/* ---- writing: each file encoded on its own thread, then all committed together ------------- */
+/* ---- writing: the files encoded side by side, then all committed together ------------------- */
 
 /* Binds an encoder and its data to a planned output (an unbound output is not written). */
 void output_bind(output_set *set, output_kind k, output_encode_fn encode, const void *user)
@@ -162,7 +158,13 @@ void output_bind(output_set *set, output_kind k, output_encode_fn encode, const 
     set->user[k] = user;
 }
 
-/* Encoding is the slow part (PNG deflate): each file is encoded on a thread of its own. */
+void output_bind_image(output_set *set, const image *img, const void *film_exr)
+{
+    if (set->format == IMAGE_FORMAT_EXR) output_bind(set, OUTPUT_IMAGE, exr_encode, film_exr);
+    else output_bind(set, OUTPUT_IMAGE, set->format == IMAGE_FORMAT_HDR ? image_encode_hdr : image_encode_png, img);
+}
+
+/* Encoding is the slow part (PNG deflate): the files are encoded side by side, one thread each. */
 typedef struct {
     output_set *set;
     output_kind kind;
@@ -171,9 +173,9 @@ typedef struct {
     pl_status status;
 } encode_job;
 
-static void *encode_one(void *arg)
+static void encode_one(void *arg, int i)
 {
-    encode_job *j = arg;
+    encode_job *j = (encode_job *)arg + i;
     j->status = file_temp_create(j->set->path[j->kind], &j->temp, &j->diag);
     if (!j->status && (j->status = j->set->encode[j->kind](j->temp.f, j->set->user[j->kind], &j->diag))) {
         /* Encoders know bytes, not names ("could not encode or write a 800x600 PNG"): add the file's. */
@@ -185,37 +187,30 @@ static void *encode_one(void *arg)
         }
     }
     if (!j->status) j->status = file_temp_close(&j->temp, &j->diag);
-    return NULL;
 }
 
-/* Writes the bound outputs from first to last: encoded in parallel, each into its temporary; the
- * first failure (in the kinds' order, so the message does not depend on thread timing) wins. */
+/* Writes the bound outputs from first to last: encoded in parallel (parallel_for_threads, a thread a
+ * file), each into its temporary; the first failure (in the kinds' order, so the message does not
+ * depend on thread timing) wins. */
 pl_status output_write(output_set *set, output_kind first, output_kind last, pl_diag *diag)
 {
     encode_job jobs[OUTPUT_KINDS];
-    pthread_t threads[OUTPUT_KINDS];
-    bool threaded[OUTPUT_KINDS] = {false};
-    for (int k = first; k <= (int)last; k++) {
-        jobs[k] = (encode_job){set, (output_kind)k, {NULL, NULL, NULL, -1}, pl_diag_default(), PL_OK};
-        if (!set->path[k] || !set->encode[k]) continue;
-        threaded[k] = pthread_create(&threads[k], NULL, encode_one, &jobs[k]) == 0;
-        if (!threaded[k]) encode_one(&jobs[k]);  /* no thread to be had: encode it here, same result */
-    }
+    int count = 0;
+    for (int k = first; k <= (int)last; k++)
+        if (set->path[k] && set->encode[k])
+            jobs[count++] = (encode_job){set, (output_kind)k, {NULL, NULL, NULL, -1}, pl_diag_default(), PL_OK};
+    parallel_for_threads(count, count, encode_one, jobs);
     pl_status st = PL_OK;
-    for (int k = first; k <= (int)last; k++) {
-        if (threaded[k]) pthread_join(threads[k], NULL);
-        if (set->path[k] && set->encode[k] && jobs[k].status && !st) {
-            st = jobs[k].status;
-            pl_fail(diag, st, "%s", jobs[k].diag.error);
+    for (int i = 0; i < count && !st; i++)
+        if (jobs[i].status) {
+            st = jobs[i].status;
+            pl_fail(diag, st, "%s", jobs[i].diag.error);
         }
-    }
     /* All or nothing: rename only when every file is complete, in the kinds' order: the sidecar last. */
-    for (int k = first; k <= (int)last; k++) {
-        if (!set->path[k] || !set->encode[k]) continue;
-        if (st) file_temp_discard(&jobs[k].temp);
-        else if ((st = file_temp_commit(&jobs[k].temp, diag)))
-            for (int j = k + 1; j <= (int)last; j++)
-                if (set->path[j] && set->encode[j]) file_temp_discard(&jobs[j].temp);
+    for (int i = 0; i < count; i++) {
+        if (st) file_temp_discard(&jobs[i].temp);
+        else if ((st = file_temp_commit(&jobs[i].temp, diag)))
+            for (int j = i + 1; j < count; j++) file_temp_discard(&jobs[j].temp);
     }
     return st;
 }

@@ -16,6 +16,7 @@
 #include <stdint.h>
 #include <stdio.h>
 #include "film.h"
+#include "image.h"
 #include "options.h"
 #include "status.h"
 
@@ -29,6 +30,7 @@ typedef struct {
     char *path[OUTPUT_KINDS];              /* NULL: not written by this render (owned) */
     output_encode_fn encode[OUTPUT_KINDS];
     const void *user[OUTPUT_KINDS];
+    image_format format;                   /* the image's, decided once by output_plan (image.h) */
 } output_set;
 
 /* Derives and checks every output path of o (see above). Exit-2 errors name the flag and path. */
@@ -38,6 +40,9 @@ pl_status output_plan(output_set *set, const options *o, pl_diag *diag);
 pl_status output_plan_merge(output_set *set, const char *output, const char *const *inputs, int count, pl_diag *diag);
 /* Says how output kind k is encoded (before output_write). */
 void output_bind(output_set *set, output_kind k, output_encode_fn encode, const void *user);
+/* Binds the image by the format the plan decided: the film (an exr_image, exr.h) for an EXR, the
+ * image of the means (tone-mapped PNG or linear HDR) otherwise. */
+void output_bind_image(output_set *set, const image *img, const void *film_exr);
 /* Writes the kinds in [first, last] as one unit: all renamed into place, sidecar last, or none. */
 pl_status output_write(output_set *set, output_kind first, output_kind last, pl_diag *diag);
 void output_free(output_set *set);

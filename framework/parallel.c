@@ -4,6 +4,7 @@
 #include "counters.h"
 #include <pthread.h>
 #include <stdatomic.h>
+#include <stdlib.h>
 #include <unistd.h>
 
 typedef struct {
@@ -44,11 +45,26 @@ int parallel_threads(void)
 
 void parallel_for(int count, void (*job)(void *arg, int i), void *arg)
 {
+    parallel_for_threads(parallel_threads(), count, job, arg);
+}
+
+void parallel_for_threads(int threads, int count, void (*job)(void *arg, int i), void *arg)
+{
     if (count <= 0) return;
     parallel_run run = {job, arg, count, 0};
-    int threads = parallel_threads(), wanted = threads < count ? threads : count;
-    pthread_t tid[PARALLEL_MAX_THREADS];
-    helper_slot slots[PARALLEL_MAX_THREADS];
+    threads = threads < 1 ? 1 : threads > PARALLEL_MAX_THREADS_ASKED ? PARALLEL_MAX_THREADS_ASKED : threads;
+    int wanted = threads < count ? threads : count;
+    /* The helpers' handles on the stack up to the cores' count; a -t beyond it takes them from the
+     * heap, and without memory the calling thread does all the work. */
+    pthread_t tid_small[PARALLEL_MAX_THREADS];
+    helper_slot slot_small[PARALLEL_MAX_THREADS];
+    pthread_t *tid = tid_small;
+    helper_slot *slots = slot_small;
+    if (wanted > PARALLEL_MAX_THREADS) {
+        tid = malloc((size_t)wanted * sizeof *tid);
+        slots = malloc((size_t)wanted * sizeof *slots);
+        if (!tid || !slots) wanted = 1;
+    }
     int started = 0;
     for (; started < wanted - 1; started++) {
         slots[started] = (helper_slot){&run, {0, 0, 0}};
@@ -59,4 +75,6 @@ void parallel_for(int count, void (*job)(void *arg, int i), void *arg)
         pthread_join(tid[i], NULL);
         counters_add(slots[i].work);
     }
+    if (tid != tid_small) free(tid);
+    if (slots != slot_small) free(slots);
 }

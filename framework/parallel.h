@@ -1,8 +1,9 @@
 /* Independent pieces of work on every core, for part code that wants them: part 2's build may make
  * its subtrees side by side (handout/part2.md, "Making it fast"). Part code may not start threads
  * itself (the grader's allow-list refuses pthread_create); this is its one way to, with a bound on
- * how many and the work they count carried back to the caller. The render loop (render.c) keeps
- * its own threads: its calling thread reports progress while they work. */
+ * how many and the work they count carried back to the caller. The framework's own pools (the
+ * render's tiles, the output files' encoders) and the course's tools run on it too, with the thread
+ * count they were asked for (parallel_for_threads). */
 #ifndef PL_PARALLEL_H
 #define PL_PARALLEL_H
 
@@ -21,5 +22,11 @@ PL_PART_API void parallel_for(int count, void (*job)(void *arg, int i), void *ar
  * (The BVH benchmark gives Embree the same number.) */
 #define PARALLEL_MAX_THREADS 16
 int parallel_threads(void);
+
+/* parallel_for on exactly `threads` threads (the calling thread among them; at least 1, at most
+ * PARALLEL_MAX_THREADS_ASKED), whatever the machine has: -t N for the render, --jobs N for the
+ * references. Not for part code (its threads are the framework's to bound). */
+#define PARALLEL_MAX_THREADS_ASKED 1024
+void parallel_for_threads(int threads, int count, void (*job)(void *arg, int i), void *arg);
 
 #endif

@@ -192,19 +192,18 @@ static pl_status merge_films(const range_input *in, int count, film *total, pl_d
  * encoder a single render uses. */
 static pl_status write_merged(output_set *out, const film *total, const exr_info *first, pl_diag *diag)
 {
-    const char *path = out->path[OUTPUT_IMAGE];
-    if (file_has_extension(path, ".exr")) {
+    if (out->format == IMAGE_FORMAT_EXR) {
         exr_info info = *first;
         info.sample_begin = 0;
         info.sample_end = info.sample_total;
-        exr_image img = {total, &info};
-        output_bind(out, OUTPUT_IMAGE, exr_encode, &img);
+        exr_image film_exr = {total, &info};
+        output_bind_image(out, NULL, &film_exr);
         return output_write(out, OUTPUT_IMAGE, OUTPUT_IMAGE, diag);
     }
     image img;
     if (image_alloc(&img, total->width, total->height) != PL_OK) return pl_fail(diag, PL_ERR_NOMEM, "out of memory");
     pl_status s = film_to_image(total, &img, NULL, diag);
-    output_bind(out, OUTPUT_IMAGE, file_has_extension(path, ".hdr") ? image_encode_hdr : image_encode_png, &img);
+    output_bind_image(out, &img, NULL);
     if (s == PL_OK) s = output_write(out, OUTPUT_IMAGE, OUTPUT_IMAGE, diag);
     image_free(&img);
     return s;
@@ -228,7 +227,7 @@ static pl_status merge_args(int argc, char **argv, const char **out, const char 
         else inputs[(*count)++] = a;
     }
     if (*help) return PL_OK;
-    if (!*out || !(file_has_extension(*out, ".exr") || file_has_extension(*out, ".png") || file_has_extension(*out, ".hdr")))
+    if (!*out || image_format_of(*out) == IMAGE_FORMAT_NONE)
         return pl_fail(diag, PL_ERR_INVALID, "expected -f OUT.exr, OUT.png or OUT.hdr");
     return *count >= 1 ? PL_OK : pl_fail(diag, PL_ERR_INVALID, "expected at least one range file (IN.exr)");
 }

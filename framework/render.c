@@ -1,4 +1,4 @@
-/* The render: estimator dispatch and the tiled, multi-threaded pixel loop. */
+/* The render: the estimators chosen once per render, and the tiled, multi-threaded pixel loop. */
 #include "render.h"
 #include "check.h"
 #include "clock.h"
@@ -6,9 +6,10 @@
 #include "envmap.h"
 #include "frame.h"
 #include "material.h"
+#include "parallel.h"
 #include "spawn.h"
 #include "todo.h"
-#include "trace.h"
+#include "trace_hook.h"
 #include "../parts/part1_raygen/part1.h"  /* call sites of the parts (framework/README.md) */
 #include "../parts/part3_direct/part3.h"
 #include "../parts/part4_global/part4.h"
@@ -16,30 +17,10 @@
 #ifdef PL_HAS_PART9  /* the thin lens, in a course that teaches it (the Makefile defines it: parts/part9_*) */
 #include "../parts/part9_lens/part9.h"
 #endif
-#include <pthread.h>
 #include <stdatomic.h>
-#include <stdlib.h>
 #include <string.h>
-#include <time.h>
 
 #define TILE 16
-
-void render_ctx_init(render_ctx *ctx, const scene *s, const accel *a, const options *o)
-{
-    memset(ctx, 0, sizeof *ctx);
-    ctx->scene = s;
-    ctx->accel = a;
-    ctx->opts = o;
-    ctx->width = o->width;
-    ctx->height = o->height;
-    ctx->camera = camera_for_render(s, o);
-    ctx->sample_begin = o->sample_end ? o->sample_begin : 0;  /* --samples A:B, else all of -s */
-    ctx->sample_end = o->sample_end ? o->sample_end : o->spp;
-    ctx->x0 = o->crop ? o->crop_x0 : 0;
-    ctx->y0 = o->crop ? o->crop_y0 : 0;
-    ctx->x1 = o->crop ? o->crop_x1 : o->width;
-    ctx->y1 = o->crop ? o->crop_y1 : o->height;
-}
 
 rng render_rng(const render_ctx *ctx, int x, int y, int sample)
 {
@@ -47,7 +28,7 @@ rng render_rng(const render_ctx *ctx, int x, int y, int sample)
     return rng_for_sample(ctx->opts->seed, pixel, (uint64_t)sample);
 }
 
-/* Seam functions (framework/seam.h): with a trace on this thread (trace.h) they log what they
+/* Seam functions (framework/seam.h): with a trace on this thread (trace_hook.h) they log what they
  * return, and the parts' functions are called through SEAM_RGB, which logs the call and its result. */
 bool render_intersect(const render_ctx *ctx, ray *r, hit *h)
 {
@@ -60,6 +41,8 @@ bool render_occluded(const render_ctx *ctx, const ray *r)
 
 #define SEAM_RGB(fn, ctx, r, h, call) \
     (pl_trace ? trace_leave(PL_SEAM_##fn, (trace_enter(PL_SEAM_##fn, ctx, r, h), (call))) : (call))
+
+/* ---- direct light at one vertex -------------------------------------------------------------- */
 
 /* Light at a mirror or glass vertex (material_is_delta). No light sample can land on the one
  * direction a delta BSDF reflects or bends light into (material_f is 0 for all of them), so the
@@ -89,11 +72,14 @@ static rgb delta_light(const render_ctx *ctx, const ray *r, const hit *h, rng *g
     return rgb_mul(Le, rgb_scale(fr, cos_i / pdf));
 }
 
+/* Part 3's two samplers of the direct light, by the setting (-H). A test of one settled bool, not
+ * a pointer to the sampler: part 4 asks here at every vertex, and a call through a pointer keeps
+ * link-time optimisation from inlining part 3's estimator (measured: 17 instructions more a vertex). */
 static rgb direct_light(const render_ctx *ctx, const ray *r, const hit *h, rng *g)
 {
     if (material_is_delta(&ctx->scene->materials[h->material])) return delta_light(ctx, r, h, g);
-    return ctx->opts->hemisphere ? SEAM_RGB(direct_hemisphere, ctx, r, h, direct_hemisphere(ctx, r, h, g))
-                                 : SEAM_RGB(direct_importance, ctx, r, h, direct_importance(ctx, r, h, g));
+    return ctx->settings.hemisphere ? SEAM_RGB(direct_hemisphere, ctx, r, h, direct_hemisphere(ctx, r, h, g))
+                                    : SEAM_RGB(direct_importance, ctx, r, h, direct_importance(ctx, r, h, g));
 }
 
 rgb one_bounce_radiance(const render_ctx *ctx, const ray *r, const hit *h, rng *g)
@@ -104,54 +90,135 @@ rgb one_bounce_radiance(const render_ctx *ctx, const ray *r, const hit *h, rng *
 int render_light_samples(const render_ctx *ctx, const ray *r)
 {
     PL_CHECK(r->depth >= 0);
-    int asked = ctx->opts->light_samples;
-    return r->depth == 0 && asked > 1 ? asked : 1;
+    return r->depth == 0 ? ctx->settings.light_samples : 1;
 }
 
-rgb radiance_estimate(const render_ctx *ctx, ray *r, rng *g)
+/* ---- the estimators of one camera ray, one of which render_ctx_init makes ctx->estimate -------- */
+
+/* Normal shading reads h->n only and spawns no ray: the hit's refinement is skipped (the trace
+ * keeps its own path, which describes the hit in full). */
+static rgb estimate_normals(const render_ctx *ctx, ray *r, rng *g)
 {
+    (void)g;
     /* Zeroed: a hit is filled only on a hit, and with parts 2-4 stubbed link-time optimisation
      * cannot prove the shaders read it only then (it warned "used uninitialized"). */
     hit h = {0};
-    const options *o = ctx->opts;
-    /* Normal shading reads h->n only and spawns no ray: the hit's refinement is skipped (the trace
-     * keeps its own path, which describes the hit in full). */
-    bool found = o->normals && !pl_trace ? accel_intersect_bare(ctx->accel, r, &h) : render_intersect(ctx, r, &h);
-    if (o->normals) return found ? SEAM_RGB(normal_shade, ctx, r, &h, normal_shade(&h)) : rgb_gray(0.0f);
-    /* A ray that leaves the scene sees the environment map, if any: emission seen directly, counted
-     * when zero_bounce_radiance's would be. */
-    if (!found)
-        return ctx->scene->env && (o->accumulate || o->max_depth == 0) ? envmap_radiance(ctx->scene->env, r->d)
-                                                                      : rgb_gray(0.0f);
+    bool found = pl_trace ? render_intersect(ctx, r, &h) : accel_intersect_bare(ctx->accel, r, &h);
+    return found ? SEAM_RGB(normal_shade, ctx, r, &h, normal_shade(&h)) : rgb_gray(0.0f);
+}
 
-    /* Emission seen directly counts when bounces accumulate, or when it is the only bounce asked for. */
-    rgb L = (o->accumulate || o->max_depth == 0) ? SEAM_RGB(zero_bounce_radiance, ctx, r, &h, zero_bounce_radiance(ctx, r, &h))
-                                                   : rgb_gray(0.0f);
-    if (o->max_depth == 1)
+/* What a camera ray sees: emission seen directly (bounce 0, when `seen`: the bounces accumulate,
+ * or bounce 0 is the one asked for), the environment map where it leaves the scene (counted as
+ * bounce 0), and the light reflected at its first hit: none, one bounce of direct light, or part
+ * 4's paths. Called with constants only (below), so each estimator is this body with its
+ * decisions made: no sample tests a setting. */
+enum { REFLECTED_NONE, REFLECTED_DIRECT, REFLECTED_PATHS };
+
+static inline rgb estimate_surface(const render_ctx *ctx, ray *r, rng *g, bool seen, int reflected)
+{
+    hit h = {0};  /* zeroed: see estimate_normals */
+    if (!render_intersect(ctx, r, &h))
+        return seen && ctx->scene->env ? envmap_radiance(ctx->scene->env, r->d) : rgb_gray(0.0f);
+    rgb L = seen ? SEAM_RGB(zero_bounce_radiance, ctx, r, &h, zero_bounce_radiance(ctx, r, &h)) : rgb_gray(0.0f);
+    if (reflected == REFLECTED_DIRECT)
         L = rgb_add(L, one_bounce_radiance(ctx, r, &h, g));
-    else if (o->max_depth >= 2)
+    else if (reflected == REFLECTED_PATHS)
         L = rgb_add(L, SEAM_RGB(at_least_one_bounce_radiance, ctx, r, &h, at_least_one_bounce_radiance(ctx, r, &h, g)));
     return L;
 }
 
+static rgb estimate_emission(const render_ctx *ctx, ray *r, rng *g)       /* -m 0 */
+{
+    return estimate_surface(ctx, r, g, true, REFLECTED_NONE);
+}
+static rgb estimate_direct(const render_ctx *ctx, ray *r, rng *g)         /* -m 1 */
+{
+    return estimate_surface(ctx, r, g, true, REFLECTED_DIRECT);
+}
+static rgb estimate_direct_alone(const render_ctx *ctx, ray *r, rng *g)   /* -m 1 -o 0 */
+{
+    return estimate_surface(ctx, r, g, false, REFLECTED_DIRECT);
+}
+static rgb estimate_paths(const render_ctx *ctx, ray *r, rng *g)          /* -m 2 and deeper */
+{
+    return estimate_surface(ctx, r, g, true, REFLECTED_PATHS);
+}
+static rgb estimate_paths_last(const render_ctx *ctx, ray *r, rng *g)     /* -m 2 and deeper, -o 0 */
+{
+    return estimate_surface(ctx, r, g, false, REFLECTED_PATHS);
+}
+
+rgb radiance_estimate(const render_ctx *ctx, ray *r, rng *g)
+{
+    return ctx->estimate(ctx, r, g);
+}
+
+/* ---- the context: settings and estimators, decided once --------------------------------------- */
+
+static render_estimator choose_estimator(const options *o)
+{
+    if (o->normals) return estimate_normals;
+    if (o->max_depth <= 0) return estimate_emission;
+    if (o->max_depth == 1) return o->accumulate ? estimate_direct : estimate_direct_alone;
+    return o->accumulate ? estimate_paths : estimate_paths_last;
+}
+
+void render_ctx_init(render_ctx *ctx, const scene *s, const accel *a, const options *o)
+{
+    memset(ctx, 0, sizeof *ctx);
+    ctx->scene = s;
+    ctx->accel = a;
+    ctx->opts = o;
+    ctx->settings = (render_settings){.max_depth = o->max_depth > 0 ? o->max_depth : 0,
+                                      .accumulate = o->accumulate,
+                                      .roulette = !o->no_roulette,
+                                      .hemisphere = o->hemisphere,
+                                      .light_samples = o->light_samples > 1 ? o->light_samples : 1};
+    ctx->estimate = choose_estimator(o);
+    ctx->width = o->width;
+    ctx->height = o->height;
+    ctx->camera = camera_for_render(s, o);
+    ctx->sample_begin = o->sample_end ? o->sample_begin : 0;  /* --samples A:B, else all of -s */
+    ctx->sample_end = o->sample_end ? o->sample_end : o->spp;
+    ctx->x0 = o->crop ? o->crop_x0 : 0;
+    ctx->y0 = o->crop ? o->crop_y0 : 0;
+    ctx->x1 = o->crop ? o->crop_x1 : o->width;
+    ctx->y1 = o->crop ? o->crop_y1 : o->height;
+}
+
+/* ---- the pixel loop --------------------------------------------------------------------------- */
+
+ray render_lens_ray(const camera *c, ray pinhole, vec2 u)
+{
+#ifdef PL_HAS_PART9
+    return thin_lens_ray(c, pinhole, u);
+#else
+    (void)c, (void)u;
+    return pinhole;
+#endif
+}
+
 /* Part 5's stopping rule on the pixel's luminance sums, through the seam. */
-static bool converged(const options *o, const film_pixel *p)
+static bool converged(const options *o, const film_pixel *p, bool traced)
 {
     double s1 = film_sum_value(p->sum[3]), s2 = film_sum_value(p->sum_sq[3]);
     bool stop = adaptive_converged((int)p->n, s1, s2, o->adaptive_tol);
-    return pl_trace ? trace_converged((int)p->n, s1, s2, o->adaptive_tol, stop) : stop;
+    return traced ? trace_converged((int)p->n, s1, s2, o->adaptive_tol, stop) : stop;
 }
 
-void render_pixel(const render_ctx *ctx, int x, int y, film_pixel *p)
+/* The loop of render_pixel, and of render_pixel_traced with `traced` (a constant in each: the
+ * render's copy has no hook in it, and the trace runs the same statements with them). */
+static inline void pixel_loop(const render_ctx *ctx, int x, int y, film_pixel *p, bool traced)
 {
     const options *o = ctx->opts;
     PL_CHECK(x >= 0 && x < ctx->width && y >= 0 && y < ctx->height && ctx->sample_begin <= ctx->sample_end);
-    int batch = o->adaptive_batch > 0 ? o->adaptive_batch : 1;
+    const bool centre = o->spp == 1;  /* one sample: the pixel's centre */
+    const uint32_t batch = o->adaptive ? (uint32_t)(o->adaptive_batch > 0 ? o->adaptive_batch : 1) : 0;
     for (int s = ctx->sample_begin; s < ctx->sample_end; s++) {
         /* Everything sample s draws comes from its own stream: no dependence on threads or ranges. */
         rng g = render_rng(ctx, x, y, s);
-        vec2 u = o->spp == 1 ? vec2_make(0.5f, 0.5f) : rng_uniform2(&g);  /* one sample: the centre */
-        if (pl_trace) trace_sample_begin(s, u);
+        vec2 u = centre ? vec2_make(0.5f, 0.5f) : rng_uniform2(&g);
+        if (traced) trace_sample_begin(s, u);
         ray r = pixel_sample_ray(&ctx->camera, x, y, ctx->width, ctx->height, u);
 #ifdef PL_HAS_PART9
         /* A lens of some radius (-b): the pinhole ray through the lens. Its point on the lens is drawn
@@ -159,18 +226,28 @@ void render_pixel(const render_ctx *ctx, int x, int y, film_pixel *p)
         if (ctx->camera.lens_radius > 0.0f) {
             vec2 lens_u = rng_uniform2(&g);
             ray pinhole = r;
-            r = thin_lens_ray(&ctx->camera, pinhole, lens_u);
-            if (pl_trace) r = trace_lens_ray(&ctx->camera, pinhole, lens_u, r);
+            r = render_lens_ray(&ctx->camera, pinhole, lens_u);
+            if (traced) r = trace_lens_ray(&ctx->camera, pinhole, lens_u, r);
         }
 #endif
-        if (pl_trace) r = trace_camera_ray(r);
+        if (traced) r = trace_camera_ray(r);
         /* A ray spanning no distance is no camera ray: task 1.1 or 1.4 is still a stub (or broken).
          * Show magenta, as every missing part does, rather than a black picture. */
-        rgb L = r.max_t > r.min_t ? radiance_estimate(ctx, &r, &g) : rgb_magenta();
-        if (pl_trace) trace_sample_end(L);
+        rgb L = r.max_t > r.min_t ? ctx->estimate(ctx, &r, &g) : rgb_magenta();
+        if (traced) trace_sample_end(L);
         film_pixel_add(p, L);
-        if (o->adaptive && p->n % (uint32_t)batch == 0 && converged(o, p)) break;
+        if (batch && p->n % batch == 0 && converged(o, p, traced)) break;
     }
+}
+
+void render_pixel(const render_ctx *ctx, int x, int y, film_pixel *p)
+{
+    pixel_loop(ctx, x, y, p, false);
+}
+
+void render_pixel_traced(const render_ctx *ctx, int x, int y, film_pixel *p)
+{
+    pixel_loop(ctx, x, y, p, true);
 }
 
 /* ---- the tiled loop ------------------------------------------------------------------------- */
@@ -181,15 +258,32 @@ typedef struct {
     image *image;           /* ... its mean colour and ... */
     int *samples;           /* ... its sample count (may be NULL) */
     int tiles_x, tiles_total;
-    atomic_int next_tile;   /* tiles are handed out in order; any thread may take any tile */
     atomic_int tiles_done;
-    atomic_uint_fast64_t rays, node_visits, prim_tests, camera_samples;
+    atomic_flag reporting;  /* held by the one thread reporting progress just now */
+    _Atomic double next_report;  /* clock_seconds() before which nobody reports again */
+    atomic_uint_fast64_t camera_samples;
     atomic_int bad_pixels;
     atomic_int first_bad;   /* image index of the lowest bad pixel, INT32_MAX if none */
 } render_job;
 
-static void render_tile(render_job *job, int tile)
+/* Every PROGRESS_SECONDS at most, the thread that finishes a tile says how far the render is; one
+ * thread at a time (the flag), so a progress line is never printed twice at once. */
+#define PROGRESS_SECONDS 0.1
+
+static void report_progress(render_job *job, int done)
 {
+    const render_ctx *ctx = job->ctx;
+    double now = clock_seconds();
+    if (now < atomic_load(&job->next_report) || atomic_flag_test_and_set(&job->reporting)) return;
+    atomic_store(&job->next_report, now + PROGRESS_SECONDS);
+    if (done < job->tiles_total) ctx->on_progress(ctx->progress_user, done, job->tiles_total);
+    atomic_flag_clear(&job->reporting);
+}
+
+/* One tile's pixels, rendered by whichever thread parallel_for hands it to. */
+static void render_tile(void *arg, int tile)
+{
+    render_job *job = arg;
     const render_ctx *ctx = job->ctx;
     int x0 = ctx->x0 + (tile % job->tiles_x) * TILE, y0 = ctx->y0 + (tile / job->tiles_x) * TILE;
     int x1 = x0 + TILE < ctx->x1 ? x0 + TILE : ctx->x1;
@@ -215,66 +309,40 @@ static void render_tile(render_job *job, int tile)
             samples += p->n - before;
         }
     atomic_fetch_add(&job->camera_samples, samples);
+    int done = atomic_fetch_add(&job->tiles_done, 1) + 1;
+    if (ctx->on_progress) report_progress(job, done);
 }
 
-static void *render_worker(void *arg)
-{
-    render_job *job = arg;
-    (void)counters_take();  /* start this thread's counts from zero */
-    for (;;) {
-        int tile = atomic_fetch_add(&job->next_tile, 1);
-        if (tile >= job->tiles_total) break;
-        render_tile(job, tile);
-        atomic_fetch_add(&job->tiles_done, 1);
-    }
-    work_counts work = counters_take();
-    atomic_fetch_add(&job->rays, work.rays);
-    atomic_fetch_add(&job->node_visits, work.node_visits);
-    atomic_fetch_add(&job->prim_tests, work.prim_tests);
-    return NULL;
-}
-
-/* The loop behind render_film and render_image: into a film, or straight into an image. */
+/* The loop behind render_film and render_image: into a film, or straight into an image, on -t
+ * threads (parallel_for_threads: the calling thread renders too). */
 static pl_status render_run(render_job job, render_stats *stats, pl_diag *diag)
 {
+    (void)diag;
     const render_ctx *ctx = job.ctx;
     int w = ctx->x1 - ctx->x0, h = ctx->y1 - ctx->y0;
     job.tiles_x = (w + TILE - 1) / TILE;
     job.tiles_total = job.tiles_x * ((h + TILE - 1) / TILE);
-    atomic_init(&job.next_tile, 0);
     atomic_init(&job.tiles_done, 0);
-    atomic_init(&job.rays, 0);
-    atomic_init(&job.node_visits, 0);
-    atomic_init(&job.prim_tests, 0);
+    atomic_flag_clear(&job.reporting);
+    atomic_init(&job.next_report, 0.0);
     atomic_init(&job.camera_samples, 0);
     atomic_init(&job.bad_pixels, 0);
     atomic_init(&job.first_bad, INT32_MAX);
 
-    int nthreads = ctx->opts->threads > 0 ? ctx->opts->threads : 1;
-    pthread_t *threads = calloc((size_t)nthreads, sizeof *threads);
-    if (!threads) return pl_fail(diag, PL_ERR_NOMEM, "render: out of memory");
+    /* The work the render counts is what this thread's counters gain: parallel_for adds each
+     * helper's to them after the join. */
+    work_counts before = counters_peek();
     double t0 = clock_seconds();
-    int started = 0;
-    for (; started < nthreads; started++)
-        if (pthread_create(&threads[started], NULL, render_worker, &job) != 0) break;
-    if (started == 0) render_worker(&job);  /* no thread could start: render on this one */
-
-    /* The calling thread reports progress until the workers finish. */
-    while (ctx->on_progress && atomic_load(&job.tiles_done) < job.tiles_total && started > 0) {
-        ctx->on_progress(ctx->progress_user, atomic_load(&job.tiles_done), job.tiles_total);
-        struct timespec pause = {0, 100 * 1000 * 1000};
-        nanosleep(&pause, NULL);
-    }
-    for (int i = 0; i < started; i++) pthread_join(threads[i], NULL);
-    free(threads);
+    parallel_for_threads(ctx->opts->threads, job.tiles_total, render_tile, &job);
     if (ctx->on_progress) ctx->on_progress(ctx->progress_user, job.tiles_total, job.tiles_total);
+    work_counts after = counters_peek();
 
     if (stats) {
         memset(stats, 0, sizeof *stats);
         stats->seconds = clock_seconds() - t0;
-        stats->rays = atomic_load(&job.rays);
-        stats->node_visits = atomic_load(&job.node_visits);
-        stats->prim_tests = atomic_load(&job.prim_tests);
+        stats->rays = after.rays - before.rays;
+        stats->node_visits = after.node_visits - before.node_visits;
+        stats->prim_tests = after.prim_tests - before.prim_tests;
         stats->samples = atomic_load(&job.camera_samples);
         stats->bad_pixels = atomic_load(&job.bad_pixels);
         int first = atomic_load(&job.first_bad);

@@ -2,8 +2,9 @@
  * Streams are selected by the increment; (seed, pixel, sample) are mixed with SplitMix64 first so
  * that neighbouring pixels and samples get unrelated sequences. */
 #include "rng.h"
-#include "trace.h"
+#include "trace_hook.h"
 #include "check.h"
+#include <stddef.h>
 
 static uint64_t splitmix64(uint64_t x)
 {

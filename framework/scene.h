@@ -66,7 +66,7 @@ typedef enum {
     LIGHT_ENVIRONMENT   /* -e's map, at infinity in every direction: radiance per texel (envmap.h) */
 } light_kind;
 
-typedef struct {
+typedef struct light {
     light_kind kind;
     rgb radiance;          /* see light_kind for the unit of each kind */
     vec3 position;         /* point, spot: position; area: centre */

@@ -8,7 +8,8 @@
 # 3, 4, 6, 7, 8 and 9's correct alternatives (course/alternatives: other draw orders, roulette
 # conventions, a recursion, CS184's radiance scale through glass, another disc mapping) traced over a sweep of renders (-o 0 and -o 1, -H, one and
 # several light samples, a thin lens, every course scene) print no "!!" line. Last, the grader's pointer: a failing case's --trace-pixel command
-# shows the bug.
+# shows the bug. The rows from part7-pdf-missing-jacobian on, and part 8's and part 9's density rows, are
+# marked by the density checks (framework/trace_density.c): a sampler's pdf against its own samples.
 # Usage: course/mutants/trace.sh           (make trace-mutants)
 set -u
 root=$(cd "$(dirname "$0")/../.." && pwd)
@@ -20,6 +21,7 @@ mkdir -p "$scratch"
 failed=0
 # patch | flags of the trace (scene relative to the root) | text the mark must contain. The row
 # "stub:FILE" strips FILE's solutions as the student release does (a half-written tree) instead.
+# The rows are one single-quoted string: no row may hold a quote (an apostrophe ends the list).
 rows='stub:parts/part3_direct/direct.c|-r 64 48 -m 1 --trace-pixel 32 30 scenes/cornell_spheres.dae|stub: Part 3, task 3.3: zero_bounce_radiance() is not implemented yet
 part3-emission-signed-cosine|-r 64 48 -m 0 --trace-pixel 32 41 scenes/cornell_spheres.dae|radiance must be finite and not negative
 part3-pdf-zero-with-f|-r 64 48 -m 2 --trace-pixel 20 10 scenes/cornell_spheres.dae|pdf is 0 but f is
@@ -40,8 +42,18 @@ stub:parts/part6_specular/specular.c|-r 64 48 -m 1 --trace-pixel 24 20 scenes/co
 part6-mirror-f-keeps-the-cosine|-r 64 48 -s 4 -m 2 --trace-pixel 24 20 scenes/cornell_mirror_glass.dae|this reflection weighs
 part6-glass-pdf-not-scaled|-r 64 48 -s 4 -m 2 --trace-pixel 43 14 scenes/cornell_mirror_glass.dae|this refraction weighs
 stub:parts/part7_microfacet/microfacet.c|-r 64 48 -m 1 --trace-pixel 42 18 scenes/cornell_microfacet.dae|stub: Part 7, task 7.4: microfacet_f() is not implemented yet
-part8-pdf-missing-sine|-r 32 24 -s 1 -m 1 -l 3 -e scenes/sky.exr --trace-pixel 6 3 scenes/env_shapes.dae|is not the density of its direction
-part8-conditional-row-stride-width|-r 32 24 -s 4 -m 1 -l 16 -e scenes/sky.exr --trace-pixel 28 2 scenes/env_shapes.dae|is not the density of its direction'
+part8-pdf-missing-sine|-r 32 24 -s 1 -m 1 -l 3 -e scenes/sky.exr --trace-pixel 6 3 scenes/env_shapes.dae|the samples of env_sample_importance do not follow env_pdf
+part8-conditional-row-stride-width|-r 32 24 -s 4 -m 1 -l 16 -e scenes/sky.exr --trace-pixel 28 2 scenes/env_shapes.dae|is not the density of its direction
+part8-row-search-one-off|-r 32 24 -s 1 -m 1 -l 3 -e scenes/sky.exr --trace-pixel 6 3 scenes/env_shapes.dae|is not the density of its direction
+part8-texel-corner-not-within|-r 32 24 -s 1 -m 1 -l 3 -e scenes/sky.exr --trace-pixel 6 3 scenes/env_shapes.dae|the samples of env_sample_importance do not follow env_pdf
+part8-uniform-theta-crowds-poles|-r 32 24 -s 1 -m 1 -l 3 --env-uniform -e scenes/studio.exr --trace-pixel 6 3 scenes/env_shapes.dae|the samples of env_sample_uniform do not follow the uniform density
+part7-pdf-missing-jacobian|-r 64 48 -s 4 -m 5 --trace-pixel 20 10 scenes/cornell_microfacet.dae|microfacet_pdf integrates to
+part7-sampled-theta-alpha-not-squared|-r 64 48 -s 4 -m 5 --trace-pixel 20 10 scenes/cornell_microfacet.dae|the samples of microfacet_sample_f do not follow microfacet_pdf
+part7-half-azimuths-of-h|-r 64 48 -s 4 -m 5 --trace-pixel 20 10 scenes/cornell_microfacet.dae|the samples of microfacet_sample_f do not follow microfacet_pdf
+part7-beckmann-cos-squared|-r 64 48 -s 4 -m 5 --trace-pixel 20 10 scenes/cornell_microfacet.dae|the samples of microfacet_sample_f do not follow microfacet_pdf
+part3-sampler-disagrees-with-pdf|-r 64 48 -m 2 --trace-pixel 20 10 scenes/cornell_spheres.dae|the samples of bsdf_sample_f do not follow bsdf_pdf
+part9-disc-radius-not-square-rooted|-r 64 48 -s 2 -m 0 -b 0.1 -d 2.8 --trace-pixel 5 5 scenes/cornell_spheres.dae|lens points do not follow the uniform density over the lens
+part9-lens-direction-not-unit|-r 64 48 -s 2 -m 0 -b 0.1 -d 2.8 --trace-pixel 5 5 scenes/cornell_spheres.dae|direction has length'
 # A scratch copy of the tree in $1 (the release objects reused: make rebuilds what changes).
 fresh_copy() {
     rm -rf "$1" && mkdir -p "$1"

@@ -29,6 +29,7 @@
 #include "../../framework/clock.h"
 #include "../../framework/exr.h"
 #include "../../framework/file.h"
+#include "../../framework/parallel.h"
 #include <dirent.h>
 #include <errno.h>
 #include <jansson.h>
@@ -323,57 +324,42 @@ static bool merge_case(const ref_case *rc)
     return ok;
 }
 
-/* ---- local runs: a pool of workers over every missing range of every case --------------------- */
+/* ---- local runs: every missing range of every case, on parallel_for_threads ------------------ */
+
+/* One range to render, and the run they share: the list is made before any starts (a range is
+ * missing or not when the run begins), the progress line and the verdict under the lock. */
+typedef struct {
+    const ref_case *rc;
+    int range;
+} ref_range;
 
 typedef struct {
-    ref_case *cases;
-    int num_cases;
-    int next_case, next_range, done, total;  /* the queue; ranges rendered, of all */
+    ref_range *todo;
+    int done, total;
     double start;
     bool failed;
     pthread_mutex_t lock;
 } pool;
 
-static void *worker(void *arg)
+static void render_one(void *arg, int i)
 {
     pool *p = arg;
-    for (;;) {
-        pthread_mutex_lock(&p->lock);
-        const ref_case *rc = NULL;
-        int r = -1;
-        while (p->next_case < p->num_cases && !rc) {
-            ref_case *c = &p->cases[p->next_case];
-            if (p->next_range >= c->num_ranges) {
-                p->next_case++;
-                p->next_range = 0;
-                continue;
-            }
-            char path[1200];
-            range_path(c, p->next_range, path, sizeof path);
-            if (!exists(path)) {
-                rc = c;
-                r = p->next_range;
-            }
-            p->next_range++;
-        }
-        pthread_mutex_unlock(&p->lock);
-        if (!rc) return NULL;
-        command cmd;
-        range_command(rc, r, &cmd);
-        char log[1300];
-        snprintf(log, sizeof log, "%s/%d.log", rc->range_dir, r);
-        bool ok = run_logged(cmd.argv, log);
-        pthread_mutex_lock(&p->lock);
-        p->done++;
-        if (!ok) {
-            p->failed = true;
-            fprintf(stderr, "\nreferences: %s range %d failed; see %s\n", rc->spec->name, r, log);
-        }
-        double elapsed = clock_seconds() - p->start, eta = elapsed / p->done * (p->total - p->done);
-        fprintf(stderr, "\r  %d/%d ranges (%s), %.0f s, about %.0f s to go   ", p->done, p->total, rc->spec->name,
-                elapsed, eta);
-        pthread_mutex_unlock(&p->lock);
+    const ref_case *rc = p->todo[i].rc;
+    int r = p->todo[i].range;
+    command cmd;
+    range_command(rc, r, &cmd);
+    char log[1300];
+    snprintf(log, sizeof log, "%s/%d.log", rc->range_dir, r);
+    bool ok = run_logged(cmd.argv, log);
+    pthread_mutex_lock(&p->lock);
+    p->done++;
+    if (!ok) {
+        p->failed = true;
+        fprintf(stderr, "\nreferences: %s range %d failed; see %s\n", rc->spec->name, r, log);
     }
+    double elapsed = clock_seconds() - p->start, eta = elapsed / p->done * (p->total - p->done);
+    fprintf(stderr, "\r  %d/%d ranges (%s), %.0f s, about %.0f s to go   ", p->done, p->total, rc->spec->name, elapsed, eta);
+    pthread_mutex_unlock(&p->lock);
 }
 
 /* ---- Slurm ------------------------------------------------------------------------------------ */
@@ -549,18 +535,28 @@ static void print_queue(void)
         printf("  (squeue failed: no cluster reachable)\n");
 }
 
-/* Every missing range of the n cases, rendered by a pool of `jobs` threads; false if any failed. */
+/* Every missing range of the n cases, rendered `jobs` at a time; false if any failed. */
 static bool render_ranges(ref_case *cases, int n, int jobs)
 {
-    pool p = {cases, n, 0, 0, 0, 0, clock_seconds(), false, PTHREAD_MUTEX_INITIALIZER};
+    pool p = {NULL, 0, 0, clock_seconds(), false, PTHREAD_MUTEX_INITIALIZER};
     for (int i = 0; i < n; i++) p.total += cases[i].num_ranges - ranges_done(&cases[i]);
     fprintf(stderr, "references: %d case(s), %d range(s) of %d samples to render on %d job(s)\n", n, p.total,
             RANGE_SAMPLES, jobs);
-    pthread_t threads[64];
-    int started = 0;
-    for (; started < jobs && started < 64; started++)
-        if (pthread_create(&threads[started], NULL, worker, &p) != 0) break;
-    for (int i = 0; i < started; i++) pthread_join(threads[i], NULL);
+    p.todo = calloc((size_t)(p.total > 0 ? p.total : 1), sizeof *p.todo);
+    if (!p.todo) {
+        fprintf(stderr, "references: out of memory\n");
+        return false;
+    }
+    int count = 0;
+    for (int i = 0; i < n; i++)
+        for (int r = 0; r < cases[i].num_ranges && count < p.total; r++) {
+            char path[1200];
+            range_path(&cases[i], r, path, sizeof path);
+            if (!exists(path)) p.todo[count++] = (ref_range){&cases[i], r};
+        }
+    p.total = count;
+    parallel_for_threads(jobs, count, render_one, &p);
+    free(p.todo);
     fprintf(stderr, "\n");
     return !p.failed;
 }

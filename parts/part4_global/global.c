@@ -38,7 +38,8 @@ bool russian_roulette(rgb *beta, int next_depth, rng *g)
  *   beta_1 = 1,  beta_{k+1} = beta_k * f(wo, wi) |cos(theta_i)| / pdf(wi)
  * with wi, f and pdf from material_sample_f (framework/material.h: part 3's bsdf_sample_f for the
  * diffuse materials of parts 1-5, and whatever BSDF a later part gives a material of its own).
- * With -o 0 (!opts->accumulate) only the k = max_depth term is kept. Loop or recurse, as you like.
+ * The settings are ctx->settings (framework/render.h): max_depth, accumulate, roulette. With -o 0
+ * (!accumulate) only the k = max_depth term is kept. Loop or recurse, as you like.
  * The framework spends the -l light samples at the first vertex and one per light deeper, where
  * the path's own noise dominates (render_light_samples reads the depth of the ray that reached the
  * vertex: give each bounce ray its depth; handout/part4.md, 4.1).
@@ -46,22 +47,22 @@ bool russian_roulette(rgb *beta, int next_depth, rng *g)
  * Out: radiance towards r's origin; the emission of h itself is NOT included (the framework adds
  *      it at the camera), nor the emission of any surface a bounce ray hits (see part4.h).
  * Must: bounce rays leave the surface through spawn_ray (framework/spawn.h), never from the raw
- *       hit point (they would hit their own surface); a path that misses ends; with
- *       opts->no_roulette every path goes on to max_depth; otherwise call russian_roulette.
+ *       hit point (they would hit their own surface); a path that misses ends; without
+ *       settings.roulette (--no-rr) every path goes on to max_depth; with it, call russian_roulette.
  * Test: make test-part4
  * =================================================================================== */
 rgb at_least_one_bounce_radiance(const struct render_ctx *ctx, const ray *r, const hit *h, rng *g)
 {
     /* BEGIN SOLUTION */
-    const options *o = ctx->opts;
+    const render_settings *s = &ctx->settings;
     rgb L = rgb_gray(0.0f);
     rgb beta = rgb_gray(1.0f);
     ray cur = *r;
     hit at = *h;
     for (int depth = 1;; depth++) {
-        if (o->accumulate || depth == o->max_depth)
+        if (s->accumulate || depth == s->max_depth)
             L = rgb_add(L, rgb_mul(beta, one_bounce_radiance(ctx, &cur, &at, g)));
-        if (depth >= o->max_depth)
+        if (depth >= s->max_depth)
             break;
 
         /* Sample the next direction from the material's BSDF and fold f |cos| / pdf into the
@@ -76,7 +77,7 @@ rgb at_least_one_bounce_radiance(const struct render_ctx *ctx, const ray *r, con
         if (!(pdf > 0.0f) || rgb_is_black(fr) || cos_i == 0.0f)
             break;
         beta = rgb_mul(beta, rgb_scale(fr, cos_i / pdf));
-        if (!o->no_roulette && !russian_roulette(&beta, depth + 1, g))
+        if (s->roulette && !russian_roulette(&beta, depth + 1, g))
             break;
 
         ray next = spawn_ray(&cur, &at, frame_to_world(&f, wi));  /* next.depth = depth */

@@ -19,9 +19,11 @@
 
 struct render_ctx;
 
-/* TASK 4.1: radiance reflected at h towards r's origin, bounces 1 .. opts->max_depth (-m >= 2):
- * all of them with opts->accumulate (-o 1), only bounce max_depth without (-o 0). Russian roulette
- * (unless opts->no_roulette) ends paths early without changing the mean. */
+/* TASK 4.1: radiance reflected at h towards r's origin, bounces 1 .. max_depth (-m >= 2), as
+ * ctx->settings says (framework/render.h: render_settings, never the options ctx->opts points to):
+ * all of them with settings.accumulate (-o 1), only bounce max_depth without (-o 0). Russian
+ * roulette (when settings.roulette, that is without --no-rr) ends paths early without changing
+ * the mean. */
 rgb at_least_one_bounce_radiance(const struct render_ctx *ctx, const ray *r, const hit *h, rng *g);
 
 /* TASK 4.2: the Russian roulette rule for a path about to take bounce `next_depth` with

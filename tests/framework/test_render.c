@@ -125,15 +125,40 @@ static void test_pathtracer__bad_input_exits_2_and_writes_nothing(void **state)
 /* The framework's light-sample policy: -l where camera rays land, one at deeper vertices. */
 static void test_render_light_samples__all_at_the_first_vertex_one_deeper(void **state)
 {
-    options o = options_default();
-    render_ctx ctx = {.opts = &o};
+    (void)state;
+    render_ctx ctx = {.settings = {.light_samples = 8}};
     ray first = ray_make(vec3_make(0, 0, 0), vec3_make(0, 0, -1), 0.0f, INFINITY), bounce = first;
     bounce.depth = 3;
-    o.light_samples = 8;
     assert_int_equal(8, render_light_samples(&ctx, &first));
     assert_int_equal(1, render_light_samples(&ctx, &bounce));
-    o.light_samples = 1;
+    ctx.settings.light_samples = 1;
     assert_int_equal(1, render_light_samples(&ctx, &first));
+}
+
+/* The settings the estimators read are the options', copied once (render.h): -l 0 reads as 1, and
+ * --no-rr as no roulette; the estimator is chosen by them, and a change of options afterwards
+ * changes nothing until the context is made again. */
+static void test_render_ctx_init__settings_from_the_options(void **state)
+{
+    (void)state;
+    scene s;
+    build_scene(&s);
+    options o = options_default();
+    o.max_depth = 5, o.accumulate = false, o.no_roulette = true, o.hemisphere = true, o.light_samples = 0;
+    render_ctx ctx;
+    render_ctx_init(&ctx, &s, NULL, &o);
+    assert_int_equal(5, ctx.settings.max_depth);
+    assert_false(ctx.settings.accumulate);
+    assert_false(ctx.settings.roulette);
+    assert_true(ctx.settings.hemisphere);
+    assert_int_equal(1, ctx.settings.light_samples);
+    assert_non_null(ctx.estimate);
+    render_estimator paths_last = ctx.estimate;
+    o.accumulate = true;
+    assert_true(ctx.estimate == paths_last);
+    render_ctx_init(&ctx, &s, NULL, &o);
+    assert_true(ctx.estimate != paths_last);
+    scene_free(&s);
 }
 
 int render_tests(void)
@@ -144,6 +169,7 @@ int render_tests(void)
         cmocka_unit_test_setup(test_render_image__stores_bottom_row_last, test_setup),
         cmocka_unit_test(test_pathtracer__bad_input_exits_2_and_writes_nothing),
         cmocka_unit_test(test_render_light_samples__all_at_the_first_vertex_one_deeper),
+        cmocka_unit_test(test_render_ctx_init__settings_from_the_options),
     };
     return cmocka_run_group_tests_name("render", tests, NULL, NULL);
 }

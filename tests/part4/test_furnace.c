@@ -4,7 +4,7 @@
  *   k-th bounce alone (-m k -o 0):       rho^k Le
  *   bounces 0..m (-m m -o 1):            Le (1 - rho^(m+1)) / (1 - rho)
  *   everything (-m 64):                  Le / (1 - rho)
- * Task 4.1's furnace runs with --no-rr (opts.no_roulette): it judges the path loop alone, so a
+ * Task 4.1's furnace runs with --no-rr (ctx->settings.roulette false): it judges the path loop alone, so a
  * roulette bug costs task 4.2's share, not 4.1's (test_roulette.c plays roulette in the furnace).
  * Each case is a t test on radiance_estimate from the centre of the box. Paths of two bounces or
  * more use hemisphere sampling (-H) for their direct light: sampling the box's area lights from a
@@ -13,6 +13,8 @@
  * alpha. Light sampling is t-tested where the shading point is fixed (the first hit, -m 1); part 3
  * tests it thoroughly. Any NaN, Inf or negative sample fails naming the sample.
  * alpha: each t test runs at PART4_CHECK_ALPHA (part4_alpha.h: Sidak share of the suite's 1e-3).
+ * The cases set the options as the command line would and make the context from them
+ * (tiny_world_refresh: render_ctx_init), which hands part 4 its settings (render.h).
  * Seeds fixed and printed. */
 #include <stdio.h>
 #include "../common/test.h"

@@ -1,7 +1,7 @@
 /* Test machinery: not part of any assignment.
  * Russian roulette: it must end paths (fewer rays) and change the noise, but never the mean.
  * - the rule alone: E[beta after, 0 when ended] = beta before, per channel (t test);
- * - in the furnace at -m 12: the estimate with roulette and with opts->no_roulette both match
+ * - in the furnace at -m 12: the estimate with roulette and without (--no-rr: settings.roulette false) both match
  *   Le (1 - rho^13) / (1 - rho) (direct light by -H, see test_furnace.c), and roulette traces fewer rays. The two variances are printed
  *   (roulette's is the larger: E[(X / q)^2 q] >= E[X^2]) but not judged: how much larger depends
  *   on the rule a student picks.
@@ -115,7 +115,7 @@ static void test_roulette__saves_work_without_changing_the_mean(void **state)
                                    : "");
     if (!(rr.rays < all.rays))
         PL_FAIL("wrong: roulette should end paths early: %llu rays with it, %llu without (does the path loop "
-                "honour opts->no_roulette?)", (unsigned long long)rr.rays, (unsigned long long)all.rays);
+                "honour ctx->settings.roulette?)", (unsigned long long)rr.rays, (unsigned long long)all.rays);
 }
 
 int roulette_tests(void)
