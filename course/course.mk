@@ -60,8 +60,10 @@ test-grade-local: release $(BIN)/grade  ## make grade without the sandbox: the a
 	$(Q)sh course/platform/grade_local.sh
 
 # ---- references: the solution's renders of every grading case, locally or as a Slurm job array ---
+# course/shared/: what the reference maker and the class grader both use (content keys, Slurm arrays).
+COURSE_SHARED_OBJ := $(BUILD)/course/shared/key.o $(BUILD)/course/shared/slurm.o
 REF_OBJ := $(BUILD)/course/references/references.o $(BUILD)/grader/grade_cases.o $(BUILD)/grader/grade_run.o \
-           $(BUILD)/grader/grade_fmt.o \
+           $(BUILD)/grader/grade_fmt.o $(COURSE_SHARED_OBJ) \
            $(BUILD)/grader/sandbox_$(SANDBOX_IMPL).o $(LIB_OBJ)
 $(BIN)/references: $(REF_OBJ)
 	$(say) LD $@
@@ -116,3 +118,4 @@ bench-grade: $(BIN)/grade  ## time to grade the solution as a submission, all fi
 .PHONY: test-fresh-build
 test-fresh-build:  ## builds follow content and compiler: a part dated in the past is rebuilt, CC=clang after gcc links
 	$(Q)sh course/platform/fresh_build.sh
+
