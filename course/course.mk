@@ -119,3 +119,36 @@ bench-grade: $(BIN)/grade  ## time to grade the solution as a submission, all fi
 test-fresh-build:  ## builds follow content and compiler: a part dated in the past is rebuilt, CC=clang after gcc links
 	$(Q)sh course/platform/fresh_build.sh
 
+# ---- a whole class graded (course/class/README.md): locally or as a Slurm job array ---------------
+# bin/grade-class links libarchive (zip and folder reading) and libcrypto (the seeds' HMAC), which
+# the student never needs: `make grade-class` and `make test-grade-class` install them (as root,
+# Debian's libarchive-dev and libssl-dev) before building it (course/class/need.sh).
+CLASS_OBJ := $(patsubst %.c,$(BUILD)/%.o,$(wildcard course/class/*.c)) $(COURSE_SHARED_OBJ) \
+             $(BUILD)/grader/grade_cases.o $(BUILD)/grader/grade_tree.o $(BUILD)/grader/grade_run.o \
+             $(BUILD)/grader/grade_fmt.o $(BUILD)/grader/sandbox_$(SANDBOX_IMPL).o $(LIB_OBJ)
+CLASS_LIBS = $(shell pkg-config --libs libarchive libcrypto)
+$(BUILD)/course/class/%.o: CPPFLAGS += $(shell pkg-config --cflags libarchive libcrypto 2>/dev/null)
+$(BIN)/grade-class: $(CLASS_OBJ)
+	$(say) LD $@
+	@mkdir -p $(dir $@)
+	$(Q)$(CC) $(LDFLAGS) -o $@ $^ $(LDLIBS) $(GRADER_LIBS) $(CLASS_LIBS)
+# nftw (removing a grading's folders without following links) is an X/Open interface.
+$(BUILD)/course/class/class_unit.o: FEATURES += -D_XOPEN_SOURCE=700
+class_comma := ,
+class_space := $(subst ,, )
+CLASS_PARTS = $(or $(PARTS),$(subst $(class_space),$(class_comma),$(strip $(COURSE_PARTS))))
+.PHONY: grade-class test-grade-class
+## grade-class SUBMISSIONS=DIR OUT=DIR: grade every submission of DIR (a folder or .zip each) into OUT/gradebook.csv and OUT/report/ (ROSTER=, SECRET=, PARTS=1,2, JOBS=, SLURM=1 SBATCH="...")
+grade-class:
+	$(Q)sh course/class/need.sh
+	$(Q)$(MAKE) --no-print-directory $(BIN)/grade-class $(BIN)/grade $(BIN)/pathtracer
+	$(Q)$(BIN)/grade-class --submissions '$(SUBMISSIONS)' --out '$(OUT)' --parts $(CLASS_PARTS) $(if $(ROSTER),--roster '$(ROSTER)') \
+	    $(if $(SECRET),--secret '$(SECRET)') $(if $(JOBS),--jobs $(JOBS)) $(if $(SLURM),--slurm $(if $(SBATCH),--sbatch '$(SBATCH)'))
+
+# A small class (the solution, catalogued bugs and alternatives, hostile submissions) graded locally,
+# killed half way and resumed, re-graded after a case changed, on a real Slurm cluster, and its
+# report read in headless Chromium; as root (the sandbox, the cluster). About 4 minutes.
+test-grade-class:  ## the class grader end to end: resume, re-grade, Slurm equal to local byte for byte, the report in Chromium
+	$(Q)sh course/class/need.sh
+	$(Q)$(MAKE) --no-print-directory $(BIN)/grade-class $(BIN)/grade $(BIN)/pathtracer
+	$(Q)bash course/class/test.sh

@@ -1,0 +1,78 @@
+#!/bin/bash
+# Benchmark: not part of any assignment. The class grader's throughput and memory (bench/RESULTS.md):
+# a class of N submissions made from the catalogues (the solution, every correct alternative of parts
+# 1-5, then catalogued bugs of parts 1-5 in name order), graded on parts 1-5 (the first assignment,
+# COURSE_PARTS' default: what a course grades), locally with the default jobs; with SLURM_N > 0 the
+# first SLURM_N of them again on a one-node Slurm cluster (course/shared/slurm_cluster.sh). Prints
+# submissions per hour and each grading's peak memory (the resident memory of bin/grade and all its
+# children, sampled every half second). As root, from the course's root, after make bin/grade-class.
+#   course/class/bench.sh [N (40)] [SLURM_N (0)]
+set -u
+cd "$(dirname "$0")/../.." || exit 2
+n=${1:-40} slurm_n=${2:-0}
+tmp=$(mktemp -d /tmp/pathlab-class-bench.XXXXXX) && chmod 755 "$tmp"
+cluster=
+cleanup() { [ -n "$cluster" ] && sh course/shared/slurm_cluster.sh down "$cluster" >/dev/null 2>&1; rm -rf "$tmp"; }
+trap cleanup EXIT
+names=$( { echo solution; ls course/alternatives/part[1-5]-*.patch; ls course/mutants/part[1-5]-*.patch |
+          grep -v part5-wrong-statistic-red-channel; } | xargs -n1 basename | sed 's/\.patch$//' | head -n "$n")
+sh course/class/make_class.sh "$tmp/subs" $names || exit 1
+echo "class: $(ls "$tmp/subs" | wc -l) submissions, parts 1-5; $(nproc) cores"
+
+# Each grading's peak memory: every bin/grade --submission and its descendants, summed, each 0.5 s.
+sample_memory() {
+    python3 - "$1" <<'PY'
+import os, sys, time
+out = open(sys.argv[1], 'w')
+peak = {}
+def children():
+    kids = {}
+    for p in filter(str.isdigit, os.listdir('/proc')):
+        try:
+            ppid = int(open('/proc/%s/stat' % p).read().rsplit(')', 1)[1].split()[1])
+            kids.setdefault(ppid, []).append(int(p))
+        except Exception: pass
+    return kids
+def rss(pid):
+    try: return int(open('/proc/%d/statm' % pid).read().split()[1]) * os.sysconf('SC_PAGE_SIZE')
+    except Exception: return 0
+while True:
+    kids = children()
+    for p in [q for ps in kids.values() for q in ps]:
+        try: cmd = open('/proc/%d/cmdline' % p, 'rb').read().split(b'\0')
+        except Exception: continue
+        if cmd[:2] != [b'bin/grade', b'--submission']: continue
+        total, todo = 0, [p]
+        while todo:
+            q = todo.pop(); total += rss(q); todo += kids.get(q, [])
+        key = b' '.join(cmd[2:7])
+        peak[key] = max(peak.get(key, 0), total)
+    out.seek(0); out.truncate(); out.write('\n'.join(str(v) for v in peak.values())); out.flush()
+    time.sleep(0.5)
+PY
+}
+report_memory() {
+    sort -n "$1" | awk '{ v[NR] = $1 / 1048576 } END { if (NR) printf "memory per grading (one part, peak RSS of bin/grade and its children): median %.0f MB, max %.0f MB over %d gradings\n", v[int((NR + 1) / 2)], v[NR], NR }'
+}
+
+sample_memory "$tmp/memory.txt" &
+sampler=$!
+start=$(date +%s.%N)
+nice bin/grade-class --submissions "$tmp/subs" --out "$tmp/out" --secret "$tmp/secret" --parts 1,2,3,4,5 >"$tmp/local.log" 2>&1
+end=$(date +%s.%N)
+kill "$sampler" 2>/dev/null
+grep -E '^grade-class: [0-9]+ submission' "$tmp/local.log"
+awk -v n="$(ls "$tmp/subs" | wc -l)" -v s="$start" -v e="$end" 'BEGIN { printf "local: %d submissions in %.0f s: %.0f submissions per hour\n", n, e - s, n * 3600 / (e - s) }'
+report_memory "$tmp/memory.txt"
+
+if [ "$slurm_n" -gt 0 ]; then
+    mkdir -p "$tmp/slurm-subs" && for s in $(ls "$tmp/subs" | head -n "$slurm_n"); do mv "$tmp/subs/$s" "$tmp/slurm-subs/"; done
+    cluster=$tmp/cluster
+    eval "$(sh course/shared/slurm_cluster.sh up "$cluster")" && export SLURM_CONF || exit 1
+    start=$(date +%s.%N)
+    bin/grade-class --submissions "$tmp/slurm-subs" --out "$tmp/slurm" --secret "$tmp/secret" --parts 1,2,3,4,5 --slurm >"$tmp/submit.log" 2>&1
+    final=$(sed -n 's/.*report as job \([0-9]*\).*/\1/p' "$tmp/submit.log")
+    while squeue -h -j "${final:-0}" 2>/dev/null | grep -q .; do sleep 1; done
+    end=$(date +%s.%N)
+    awk -v n="$slurm_n" -v s="$start" -v e="$end" 'BEGIN { printf "Slurm (one node, %d CPUs): %d submissions in %.0f s: %.0f submissions per hour\n", '"$(nproc)"', n, e - s, n * 3600 / (e - s) }'
+fi
