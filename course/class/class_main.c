@@ -18,6 +18,7 @@
 #include <dirent.h>
 #include <errno.h>
 #include <fcntl.h>
+#include <locale.h>
 #include <signal.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -189,6 +190,14 @@ static int task_student(const class_run *r)
     return strcmp(hex, end + 1) ? -1 : (int)i;
 }
 
+/* Whether a student is graded and has a part that is not current. */
+static bool has_todo(const class_student *s)
+{
+    bool todo = false;
+    for (int u = 0; u < s->num_units; u++) todo |= !s->units[u].current;
+    return todo && !strcmp(s->status, "ok");
+}
+
 /* ---- Slurm: one array task per student with a part to grade, the report once they all ended ---- */
 
 /* argv of this command with the mode's flags replaced by `mode` (and its value). */
@@ -218,9 +227,7 @@ static int submit_slurm(class_run *r, int argc, char **argv)
     /* One task a student with a part to grade, named by index and by its name's key. */
     for (int i = 0; i < r->num_students; i++) {
         const class_student *s = &r->students[i];
-        bool todo = false;
-        for (int u = 0; u < s->num_units; u++) todo |= !s->units[u].current;
-        if (strcmp(s->status, "ok") || !todo) continue;
+        if (!has_todo(s)) continue;
         char hex[17];
         key_hex(key_str(KEY_START, s->entry), hex);
         snprintf(task, sizeof task, "%d:%s", i, hex);
@@ -260,6 +267,14 @@ static int write_outputs(const class_run *r)
     return 0;
 }
 
+/* Students with a part to grade. */
+static int todo_count(const class_run *r)
+{
+    int n = 0;
+    for (int i = 0; i < r->num_students; i++) n += has_todo(&r->students[i]);
+    return n;
+}
+
 /* Counts for the first line: students to grade, up to date, refused. */
 static void announce(const class_run *r)
 {
@@ -296,7 +311,7 @@ static int run(class_run *r, int argc, char **argv)
         if (!strcmp(r->students[i].status, "ok") && class_record_complete(&r->students[i])) class_record_write(r, &r->students[i]);
     announce(r);
     if (r->o->report_only) return write_outputs(r);
-    if (!prebuild(r)) return 1;
+    if (todo_count(r) && !prebuild(r)) return 1;
     if (r->o->slurm) return submit_slurm(r, argc, argv);
     bool graded = class_pool_run(r);
     int code = write_outputs(r);
@@ -305,6 +320,9 @@ static int run(class_run *r, int argc, char **argv)
 
 int main(int argc, char **argv)
 {
+    /* Zip entry names flagged UTF-8 reach us as they are only in a UTF-8 locale (libarchive converts
+     * names to the locale's charset); other names pass as raw bytes either way, shown escaped. */
+    if (!setlocale(LC_CTYPE, "C.UTF-8")) setlocale(LC_CTYPE, "en_US.UTF-8");
     static char secret[1024];
     class_options o;
     const char *bad = parse_args(argc, argv, &o, secret, sizeof secret);

@@ -239,31 +239,50 @@ static void cases(FILE *f, const class_run *r, const part_view *v)
     tally_free(&failed), tally_free(&causes);
 }
 
-static void first_causes(FILE *f, const class_run *r, const part_view *v)
+/* Each scored student's first cause of the part, into t (most frequent first). */
+static void count_firsts(const class_run *r, const part_view *v, tally *t)
 {
-    tally firsts = {0};
     for (int i = 0; i < r->num_students; i++) {
         char cause[200];
         if (!scored(&r->students[i], v->part)) continue;
         first_cause(unit_of(&r->students[i], v->part), v->facts[i], cause, sizeof cause);
-        if (cause[0]) tally_add(&firsts, cause, i);
+        if (cause[0]) tally_add(t, cause, i);
     }
+    tally_sort(t);
+}
+
+static void first_causes(FILE *f, const class_run *r, const part_view *v)
+{
+    tally firsts = {0};
+    count_firsts(r, v, &firsts);
     fputs("<h3>First causes, most frequent first</h3>\n<table class=\"firsts\"><tr><th>first cause</th><th>students</th>"
           "<th></th></tr>\n", f);
     tally_rows(f, r, v, &firsts, "points lost");
     tally_free(&firsts);
 }
 
+/* Each student's facts of part p, read once for every table; false when out of memory. */
+static bool view_load(const class_run *r, int p, part_view *v)
+{
+    *v = (part_view){.part = p, .facts = calloc((size_t)r->num_students, sizeof *v->facts)};
+    for (int i = 0; v->facts && i < r->num_students; i++) {
+        const class_unit *u = unit_of(&r->students[i], p);
+        v->graded += scored(&r->students[i], p);
+        if (scored(&r->students[i], p)) v->facts[i] = class_unit_facts(r, &r->students[i], u);
+    }
+    return v->facts != NULL;
+}
+
+static void view_free(const class_run *r, part_view *v)
+{
+    for (int i = 0; v->facts && i < r->num_students; i++) json_decref(v->facts[i]);
+    free(v->facts);
+}
+
 static void part_section(FILE *f, const class_run *r, int p)
 {
-    /* Each student's facts of the part, read once for every table. */
-    part_view v = {.part = p, .facts = calloc((size_t)r->num_students, sizeof *v.facts)};
-    if (!v.facts) return;
-    for (int i = 0; i < r->num_students; i++) {
-        const class_unit *u = unit_of(&r->students[i], p);
-        v.graded += scored(&r->students[i], p);
-        if (scored(&r->students[i], p)) v.facts[i] = class_unit_facts(r, &r->students[i], u);
-    }
+    part_view v;
+    if (!view_load(r, p, &v)) return;
     fprintf(f, "<section id=\"part%d\" data-part=\"%d\"><h2>Part %d</h2>\n", p, p, p);
     distribution(f, r, &v);
     tasks(f, r, &v);
@@ -271,8 +290,33 @@ static void part_section(FILE *f, const class_run *r, int p)
     cases(f, r, &v);
     first_causes(f, r, &v);
     fputs("</section>\n", f);
-    for (int i = 0; i < r->num_students; i++) json_decref(v.facts[i]);
-    free(v.facts);
+    view_free(r, &v);
+}
+
+/* The page's first table: per part, how many lost points and the three most frequent first causes,
+ * each linking to the part's section. */
+static void overview(FILE *f, const class_run *r, const int *parts, int n)
+{
+    fputs("<table class=\"overview\"><tr><th>part</th><th>lost points</th><th>most frequent first causes</th></tr>\n", f);
+    for (int k = 0; k < n; k++) {
+        part_view v;
+        tally firsts = {0};
+        if (!view_load(r, parts[k], &v)) continue;
+        count_firsts(r, &v, &firsts);
+        int lost = 0;
+        for (int i = 0; i < firsts.num; i++) lost += firsts.items[i].count;
+        fprintf(f, "<tr data-part=\"%d\"><td><a href=\"#part%d\">part %d</a></td>", parts[k], parts[k], parts[k]);
+        share_cells(f, lost, v.graded);
+        fputs("<td>", f);
+        for (int i = 0; i < firsts.num && i < 3; i++) {
+            fputs(i ? "; " : "", f), class_text_html(f, firsts.items[i].label);
+            fprintf(f, " (%d)", firsts.items[i].count);
+        }
+        fputs("</td></tr>\n", f);
+        tally_free(&firsts);
+        view_free(r, &v);
+    }
+    fputs("</table>\n", f);
 }
 
 /* ---- the class -------------------------------------------------------------------------------- */
@@ -361,8 +405,9 @@ bool class_report_write(const class_run *r)
     fprintf(f, "<!DOCTYPE html>\n<html lang=\"en\"><head><meta charset=\"utf-8\"><title>pathlab: class report</title>"
                "<style>%s</style></head><body>\n<h1>Class report</h1>\n", report_style);
     summary(f, r);
-    for (int i = 0; i < n; i++) part_section(f, r, parts[i]);
+    overview(f, r, parts, n);
     refused(f, r);
+    for (int i = 0; i < n; i++) part_section(f, r, parts[i]);
     students(f, r, parts, n);
     fputs("</body></html>\n", f);
     fclose(f);

@@ -11,8 +11,9 @@
  * Outcomes: graded (bin/grade's facts.json, whatever the score); timed_out (over --timeout: the
  * grading is stopped, the part scores 0, as run_autograder does when the platform's time runs out);
  * grader_failed (bin/grade ended without its facts: graded again on the next run). bin/grade's exit
- * status 2 or 3 is the course's own problem (its cases, references or set-up): the class run stops
- * there, and no student is given anything for it. */
+ * status 2 or 3 is the course's own problem (its cases, references or set-up), and so is a bin/grade
+ * that could not be run (126, 127: rebuilt or removed meanwhile): the class run stops there, and no
+ * student is given anything for it. */
 #include "class.h"
 #include "../../framework/file.h"
 #include <errno.h>
@@ -132,8 +133,8 @@ static bool outcome(const class_run *r, class_unit *u, const class_job *job, int
         snprintf(u->status, sizeof u->status, "timed_out");
         snprintf(u->why, sizeof u->why, "its grading ran past %d s (--timeout) and was stopped", r->o->timeout);
     }
-    else if (exited && (WEXITSTATUS(status) == 2 || WEXITSTATUS(status) == 3))
-        return false;
+    else if (exited && (WEXITSTATUS(status) == 2 || WEXITSTATUS(status) == 3 || WEXITSTATUS(status) >= 126))
+        return false;  /* the course's cases or set-up, or bin/grade could not be run at all (126, 127) */
     else if (exited && WEXITSTATUS(status) <= 1 && (p = facts_part(facts, u->part))) {
         snprintf(u->status, sizeof u->status, "graded");
         u->score = json_number_value(json_object_get(p, "score"));

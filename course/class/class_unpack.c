@@ -55,6 +55,7 @@ typedef struct {
     struct archive *a;
     bool disk;
     size_t prefix;            /* a folder's entries are named "FOLDER/...": this many bytes */
+    int unnamed;              /* entries whose name libarchive could not convert: skipped */
     const class_student *s;
 } source;
 
@@ -140,9 +141,14 @@ static int source_next(source *src, struct archive_entry **e, char rel[CLASS_PAT
         int rc = archive_read_next_header(src->a, e);
         if (rc == ARCHIVE_EOF) return 0;
         if (rc < ARCHIVE_WARN) return refuse(why, "bad_zip", "libarchive cannot read it", NULL), -1;
+        /* A name libarchive cannot convert (a UTF-8 name where no UTF-8 locale exists) is skipped,
+         * and said so: it cannot be checked, so it is never written. */
         const char *raw = archive_entry_pathname(*e);
         if (!raw) raw = archive_entry_pathname_utf8(*e);
-        if (!raw) return refuse(why, "bad_zip", "an entry's name cannot be read", NULL), -1;
+        if (!raw) {
+            src->unnamed++;
+            continue;
+        }
         if (src->disk) raw = strlen(raw) > src->prefix ? raw + src->prefix : "";
         if (!normalise(raw, rel, why)) return -1;
         bool dir = archive_entry_filetype(*e) == AE_IFDIR;
@@ -350,10 +356,11 @@ void class_unpack(const class_run *r, class_student *s, const char *dest)
             ok = refuse(&why, "bad_zip", "the staging folder cannot be made", NULL);
         ok = ok && (source_open(&src, s, path) || refuse(&why, "bad_zip", "libarchive cannot open it", NULL));
         ok = ok && walk_parts(&src, &c, &why);
+        if (pass) c.left_out += src.unnamed;
         source_close(&src);
     }
     if (c.left_out)
-        snprintf(s->left_out, sizeof s->left_out, "%d entr%s left out (links, devices or pipes): %s%s", c.left_out,
+        snprintf(s->left_out, sizeof s->left_out, "%d entr%s left out (links, devices, pipes, unreadable names): %s%s", c.left_out,
                  c.left_out == 1 ? "y" : "ies", c.left_names, c.left_out > 3 ? ", ..." : "");
     if (!ok) {
         snprintf(s->status, sizeof s->status, "%s", why.status);
