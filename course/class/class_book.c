@@ -1,7 +1,8 @@
 /* Instructor tooling: not part of any assignment.
  * The grade book, OUT/gradebook.csv, in the layout of Canvas's gradebook import: the identity
  * columns Canvas matches students by (Student, ID, SIS User ID, SIS Login ID, Section: the id goes
- * in SIS User ID, the roster's name in Student), a "Points Possible" row under the header, then
+ * in SIS Login ID, which with Student and Section is what Canvas needs to match a row, the roster's
+ * name in Student), a "Points Possible" row under the header, then
  * one column per graded item: the total, each part, each task of each part; and a last column,
  * Notes, that says in words why a row is not a plain score. Gradescope imports no grades for an
  * assignment it did not grade, so Canvas's layout is the one to meet (its import previews each
@@ -113,9 +114,9 @@ static void notes(FILE *f, const class_student *s)
 
 static void row(FILE *f, const class_run *r, const class_student *s, const int *parts, int n)
 {
-    /* Identity: the roster's name (else the id) as Student, the id as SIS User ID. */
+    /* Identity: the roster's name (else the id) as Student, the id as SIS Login ID. */
     class_text_csv(f, s->name[0] ? s->name : s->shown);
-    cell(f, ""), cell(f, s->shown), cell(f, ""), cell(f, "");
+    cell(f, ""), cell(f, ""), cell(f, s->shown), cell(f, "");
     bool ok = !strcmp(s->status, "ok"), zero = zero_refusal(s->status), whole = ok;
     /* The total only when every part has a score: a part still to grade leaves it empty. */
     double total = 0.0;

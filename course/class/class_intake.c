@@ -63,6 +63,14 @@ static bool roster_parse(char *line, roster_line *l, const char **why)
     return true;
 }
 
+/* Whether an earlier line names the same submission (then why says so: which line counts?). */
+static bool roster_named(const roster_line *lines, int n, const char *entry, const char **why)
+{
+    for (int i = 0; i < n; i++)
+        if (!strcmp(lines[i].entry, entry)) return *why = "names a submission an earlier line names", true;
+    return false;
+}
+
 /* The roster's lines into *lines (malloc'd); -1 with a located message when it cannot be used. */
 static int roster_read(const char *path, roster_line **lines)
 {
@@ -83,7 +91,7 @@ static int roster_read(const char *path, roster_line **lines)
         else if (line[strspn(line, " \t\r\n")] == '\0' || line[0] == '#') continue;
         else if (number == 1 && !strncasecmp(line, "submission,", 11)) continue;  /* a header line */
         else if (n == CLASS_MAX_STUDENTS) why = "more lines than CLASS_MAX_STUDENTS (4096)";
-        else if (roster_parse(line, &(*lines)[n], &why)) n++;
+        else if (roster_parse(line, &(*lines)[n], &why) && !roster_named(*lines, n, (*lines)[n].entry, &why)) n++;
     }
     fclose(f);
     if (!*lines) return fprintf(stderr, "grade-class: out of memory\n"), -1;
@@ -98,6 +106,7 @@ static int roster_read(const char *path, roster_line **lines)
 /* The roster's line for a submission: its name, or its name less ".zip". */
 static roster_line *roster_find(roster_line *lines, int n, const char *entry, bool is_zip)
 {
+    /* A roster may name "alice" or "alice.zip" for the submission alice.zip. */
     size_t len = strlen(entry) - (is_zip ? 4 : 0);
     for (int i = 0; i < n; i++)
         if (!strcmp(lines[i].entry, entry) || (strlen(lines[i].entry) == len && !strncmp(lines[i].entry, entry, len)))

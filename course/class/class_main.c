@@ -175,7 +175,7 @@ static void prepare(class_run *r, int i)
     for (const char *c = r->o->parts; *c; c++)
         if (*c >= '1' && *c <= '9') s->units[s->num_units++].part = *c - '0';
     class_key_units(r, s, dest);
-    if (!r->o->force) class_record_read(r, s);
+    if (!r->o->force || r->o->report_only) class_record_read(r, s);  /* --force: grade again, never report nothing */
 }
 
 /* --task I:KEY: the student at index I, whose submission's name has key KEY; -1 when the folder
@@ -203,14 +203,14 @@ static bool has_todo(const class_student *s)
 /* argv of this command with the mode's flags replaced by `mode` (and its value). */
 static void command_for(int argc, char **argv, const char *mode, const char *value, char **out)
 {
-    /* The task runs this very command but for its mode: the same folders, secret, parts, deadline
-     * (--jobs goes: a task grades its parts one after another; --force too: the submit step decided). */
+    /* The task runs this very command but for its mode: the same folders, secret, parts, deadline,
+     * --force (--jobs goes: a task grades its parts one after another). */
     int n = 0;
     out[n++] = "bin/grade-class";
     out[n++] = (char *)mode;
     if (value) out[n++] = (char *)value;
     for (int i = 1; i < argc; i++) {
-        if (!strcmp(argv[i], "--slurm") || !strcmp(argv[i], "--force")) continue;
+        if (!strcmp(argv[i], "--slurm")) continue;
         if (!strcmp(argv[i], "--sbatch") || !strcmp(argv[i], "--jobs")) { i++; continue; }
         out[n++] = argv[i];
     }

@@ -52,6 +52,8 @@ static bool scored(const class_student *s, int p)
     return !strcmp(s->status, "ok") && u && (!strcmp(u->status, "graded") || !strcmp(u->status, "timed_out"));
 }
 
+/* The student's id, linked to their own report of part p when it was graded (a part out of time
+ * has no report: the id alone). The path is made of this tool's names only. */
 static void link_to(FILE *f, const class_student *s, int p)
 {
     const class_unit *u = unit_of(s, p);
@@ -107,6 +109,7 @@ static void first_cause(const class_unit *u, json_t *facts, char *out, size_t si
 
 /* ---- one part ------------------------------------------------------------------------------------ */
 
+/* The part's scores in REPORT_BINS bins of its maximum, with the mean, full marks and zeros. */
 static void distribution(FILE *f, const class_run *r, const part_view *v)
 {
     /* Each score as a share of its maximum (a part out of time: 0 of the part's points). */
@@ -143,6 +146,8 @@ static void share_cells(FILE *f, int count, int of)
             of ? (100 * count + of / 2) / of : 0);
 }
 
+/* Every task of the part (cases.json's), with how many lost it: a task's share is earned whole
+ * or not at all, so "lost" is any score below its points. */
 static void tasks(FILE *f, const class_run *r, const part_view *v)
 {
     fputs("<h3>Tasks</h3>\n<table><tr><th>task</th><th>writes</th><th>points</th><th>lost by</th><th>students</th></tr>\n", f);
@@ -251,6 +256,7 @@ static void count_firsts(const class_run *r, const part_view *v, tally *t)
     tally_sort(t);
 }
 
+/* The part's first causes: what to teach again, most frequent first. */
 static void first_causes(FILE *f, const class_run *r, const part_view *v)
 {
     tally firsts = {0};
@@ -339,6 +345,7 @@ static void summary(FILE *f, const class_run *r)
     if (r->ignored[0]) fputs("<p class=\"muted\">Ignored (neither a folder nor a .zip): ", f), class_text_html(f, r->ignored), fputs("</p>\n", f);
 }
 
+/* One line per submission not graded: its name and id as shown, and why, in this tool's words. */
 static void refused(FILE *f, const class_run *r)
 {
     fputs("<h2 id=\"refused\">Submissions not graded</h2>\n<table class=\"refused\"><tr><th>submission</th><th>id</th>"
@@ -383,6 +390,7 @@ static void student_row(FILE *f, const class_run *r, const class_student *s, con
     fputs("</tr>\n", f);
 }
 
+/* Every student in the folder's order, refused ones included (their parts say "not graded"). */
 static void students(FILE *f, const class_run *r, const int *parts, int n)
 {
     fputs("<h2 id=\"students\">Students</h2>\n<table class=\"students\"><tr><th>id</th><th>name</th>", f);
@@ -394,6 +402,7 @@ static void students(FILE *f, const class_run *r, const int *parts, int n)
 
 bool class_report_write(const class_run *r)
 {
+    /* The graded parts in order, from --parts ("1,3"). */
     int parts[GRADE_MAX_PART], n = 0;
     for (const char *c = r->o->parts; *c; c++)
         if (*c >= '1' && *c <= '9') parts[n++] = *c - '0';
