@@ -21,7 +21,7 @@ echo "class: $(ls "$tmp/subs" | wc -l) submissions, parts 1-5; $(nproc) cores"
 
 # Each grading's peak memory: every bin/grade --submission and its descendants, summed, each 0.5 s.
 sample_memory() {
-    python3 - "$1" <<'PY'
+    exec python3 - "$1" <<'PY'
 import os, sys, time
 out = open(sys.argv[1], 'w')
 peak = {}
@@ -58,11 +58,19 @@ report_memory() {
 sample_memory "$tmp/memory.txt" &
 sampler=$!
 start=$(date +%s.%N)
-nice bin/grade-class --submissions "$tmp/subs" --out "$tmp/out" --secret "$tmp/secret" --parts 1,2,3,4,5 >"$tmp/local.log" 2>&1
+/usr/bin/time -f '%U %S' -o "$tmp/cpu.txt" nice bin/grade-class --submissions "$tmp/subs" --out "$tmp/out" \
+    --secret "$tmp/secret" --parts 1,2,3,4,5 >"$tmp/local.log" 2>&1
 end=$(date +%s.%N)
 kill "$sampler" 2>/dev/null
 grep -E '^grade-class: [0-9]+ submission' "$tmp/local.log"
-awk -v n="$(ls "$tmp/subs" | wc -l)" -v s="$start" -v e="$end" 'BEGIN { printf "local: %d submissions in %.0f s: %.0f submissions per hour\n", n, e - s, n * 3600 / (e - s) }'
+tail -n 2 "$tmp/local.log"
+# Wall time (this machine as it was, other work included) and CPU time (all processes of the run:
+# what an idle machine's cores would have to give, the best it could do).
+read -r user sys <"$tmp/cpu.txt"
+awk -v n="$(ls "$tmp/subs" | wc -l)" -v s="$start" -v e="$end" -v u="$user" -v y="$sys" -v c="$(nproc)" 'BEGIN {
+    printf "local: %d submissions in %.0f s wall: %.0f submissions per hour; CPU %.0f s (%.1f s a submission: at most %.0f an hour on %d idle cores)\n",
+           n, e - s, n * 3600 / (e - s), u + y, (u + y) / n, c * 3600 * n / (u + y), c }'
+echo "load average at the end: $(cut -d' ' -f1-3 /proc/loadavg)"
 report_memory "$tmp/memory.txt"
 
 if [ "$slurm_n" -gt 0 ]; then

@@ -54,11 +54,12 @@ void class_unit_folder(const class_run *r, const class_student *s, const class_u
 /* The child: its own process group (the pool stops it whole), stopped with this process (Linux:
  * a class run killed outright takes its gradings with it, and their janitors clean up), its
  * output to the log. Never returns. */
-static void child_exec(char *const argv[], const char *log)
+static void child_exec(char *const argv[], const char *log, pid_t parent)
 {
     setpgid(0, 0);
 #ifdef __linux__
     prctl(PR_SET_PDEATHSIG, SIGTERM);
+    if (getppid() != parent) _exit(126);  /* the class run died before the line above: no grading */
 #endif
     struct rlimit fsize = {UNIT_LOG_BYTES, UNIT_LOG_BYTES};
     int in = open("/dev/null", O_RDONLY), out = open(log, O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0600);
@@ -85,8 +86,9 @@ bool class_unit_start(const class_run *r, const class_student *s, int u, const c
                     "--seed", seed, "--threads", threads, NULL};
     /* Nothing buffered is written twice by the child. */
     fflush(NULL);
+    pid_t parent = getpid();
     job->pid = fork();
-    if (job->pid == 0) child_exec(argv, log);
+    if (job->pid == 0) child_exec(argv, log, parent);
     if (job->pid > 0) setpgid(job->pid, job->pid);  /* from both sides: no race with a first kill */
     return job->pid > 0;
 }

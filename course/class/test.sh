@@ -13,12 +13,16 @@
 #      none;
 #   5. the report in headless Chromium: its figures in the DOM match the class, nothing a name held
 #      became markup; a screenshot is kept (CLASS_TEST_KEEP=1 keeps the whole folder).
-# Prints "N passed, M failed". Skips (says so) when not root. About 4 minutes on 2 cores.
+# Prints "N passed, M failed". Skips (says so) when not root. About 5 minutes on 2 cores with the
+# machine to itself (CI): a part's deadline is 90 s (--timeout), 9 times what the slowest part here
+# takes; a machine busy with other work (a load of 10 or more on 2 cores) can push a correct part
+# past it, and the load is printed first for that reason.
 set -u
 cd "$(dirname "$0")/../.." || exit 2
 repo=$PWD
 say() { echo "test-grade-class: $*"; }
 if [ "$(id -u)" != 0 ]; then say "SKIPPED: needs root (the grader's sandbox, the Slurm daemons)"; exit 0; fi
+say "load average $(cut -d' ' -f1-3 /proc/loadavg) on $(nproc) cores"
 passed=0 failed=0
 expect() {  # expect DESCRIPTION COMMAND...: one check
     local what=$1; shift
@@ -98,7 +102,7 @@ need python3 python3 test-grade-class
 
 # ---- 1. graded locally, killed half way, run again -------------------------------------------------
 out=$tmp/local
-args=(--submissions "$subs" --secret "$secret" --parts 1,3 --timeout 60)
+args=(--submissions "$subs" --secret "$secret" --parts 1,3 --timeout 90)
 say "1. $n_graded graded and 9 hostile submissions on parts 1 and 3, locally; kill -9 half way, then again"
 t0=$(date +%s)
 bin/grade-class "${args[@]}" --out "$out" >"$tmp/run1.log" 2>&1 &
@@ -158,7 +162,7 @@ expect "part1-camera-y-not-flipped loses points on part 1 only ($(row part1-came
     awk -v a="$(field part1-camera-y-not-flipped 3)" -v b="$(field part1-camera-y-not-flipped 4)" -v m="$max1" -v n="$max3" 'BEGIN { exit !(a < m && b == n) }'
 expect "part3-bsdf-without-pi loses points on part 3 only ($(row part3-bsdf-without-pi))" \
     awk -v a="$(field part3-bsdf-without-pi 3)" -v b="$(field part3-bsdf-without-pi 4)" -v m="$max1" -v n="$max3" 'BEGIN { exit !(a == m && b < n) }'
-expect "hangs: part 1 stopped at --timeout, 0 points ($(row hangs))" bash -c "grep -F 'row hangs 0 ' '$tmp/book.txt' | grep -q 'ran past 60 s'"
+expect "hangs: part 1 stopped at --timeout, 0 points ($(row hangs))" bash -c "grep -F 'row hangs 0 ' '$tmp/book.txt' | grep -q 'ran past 90 s'"
 expect "floods: full marks on part 1 all the same ($(row floods))" test "$(field floods 3)" = "$max1"
 expect "floods: its grading's log is bounded" test "$(cat "$out"/students/floods/part1-*/grade.log | wc -c)" -lt 1000000
 expect "withlink: graded, its link left out and said so ($(row withlink))" bash -c "row_=\$(grep -F 'row withlink ' '$tmp/book.txt'); [[ \$row_ == *'left out'*secret.c* && \$row_ == 'row withlink $max1 '* ]]"
@@ -326,7 +330,7 @@ for r in rows[2:]:
     print('|'.join([r[col['Student']], r[col['SIS Login ID']], r[col['pathlab part 1']], r[col['Notes']][:40]]))
 PY
 expect "the roster's id and name for alice, graded ($(grep s001 "$tmp/roster.txt"))" grep -qx 'Doe, Alice|s001|20|' "$tmp/roster.txt"
-expect "bob, in the roster without a submission ($(grep s002 "$tmp/roster.txt"))" grep -qx 'Bob|s002||not graded (no_submission): the roster na' "$tmp/roster.txt"
+expect "bob, in the roster without a submission ($(grep s002 "$tmp/roster.txt"))" grep -q '^Bob|s002||not graded (no_submission)' "$tmp/roster.txt"
 expect "stranger, a submission the roster does not name" grep -q '^stranger|stranger||not graded (not_in_roster)' "$tmp/roster.txt"
 printf 'alice,s001\ncarol\n' >"$tmp/bad-roster.csv"
 bin/grade-class --submissions "$rsubs" --out "$tmp/roster" --secret "$secret" --parts 1 --roster "$tmp/bad-roster.csv" >"$tmp/bad-roster.log" 2>&1
