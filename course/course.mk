@@ -15,7 +15,7 @@ export COURSE_PARTS
 
 COURSE_TOOL_OBJ := $(addprefix $(BUILD)/framework/,image.o file.o status.o) $(BUILD)/third_party/lodepng/lodepng.o
 
-## test-course: the course's own tools' suite (the release stripper's rules)
+## test-course: the course's own tools' suite (the release stripper's rules, the class grader's escaping)
 
 # ---- the release: release/student (solutions -> stubs) and release/autograder.zip --------------
 # The stripper's rules are a library, so the course suite (course/release/test_strip.c) tests them.
@@ -26,7 +26,7 @@ $(BIN)/strip_solutions: $(BUILD)/course/release/strip_solutions.o $(STRIP_OBJ) $
 	$(say) LD $@
 	@mkdir -p $(dir $@)
 	$(Q)$(CC) $(LDFLAGS) -o $@ $^ $(LDLIBS)
-$(BIN)/test-course: $(STRIP_OBJ)
+$(BIN)/test-course: $(STRIP_OBJ) $(BUILD)/course/class/class_text.o
 
 # bin/release_points: each part's points, read by the grader's own case loader (classroom.yml's steps).
 $(BIN)/release_points: $(BUILD)/course/release/release_points.o $(BUILD)/grader/grade_cases.o $(BUILD)/framework/status.o
@@ -123,7 +123,7 @@ test-fresh-build:  ## builds follow content and compiler: a part dated in the pa
 # bin/grade-class links libarchive (zip and folder reading) and libcrypto (the seeds' HMAC), which
 # the student never needs: `make grade-class` and `make test-grade-class` install them (as root,
 # Debian's libarchive-dev and libssl-dev) before building it (course/class/need.sh).
-CLASS_OBJ := $(patsubst %.c,$(BUILD)/%.o,$(wildcard course/class/*.c)) $(COURSE_SHARED_OBJ) \
+CLASS_OBJ := $(patsubst %.c,$(BUILD)/%.o,$(filter-out course/class/test_%,$(wildcard course/class/*.c))) $(COURSE_SHARED_OBJ) \
              $(BUILD)/grader/grade_cases.o $(BUILD)/grader/grade_tree.o $(BUILD)/grader/grade_run.o \
              $(BUILD)/grader/grade_fmt.o $(BUILD)/grader/sandbox_$(SANDBOX_IMPL).o $(LIB_OBJ)
 CLASS_LIBS = $(shell pkg-config --libs libarchive libcrypto)

@@ -2,8 +2,9 @@
 # Test machinery: the class grader end to end (make test-grade-class), as root, in a scratch copy of
 # the course (so that a case can be edited). The class: the solution, catalogued alternatives (full
 # marks) and bugs (points lost on their part, for their known first cause), and hostile submissions
-# (empty, a zip leaving its folder, absolute paths, a zip bomb, too many entries, two submissions with
-# one id, a link, names that are not UTF-8 or hold HTML or a formula, one that hangs, one that floods).
+# (empty, a zip leaving its folder, absolute paths, zip bombs (one whose headers lie), too many
+# entries, two submissions with one id, a link, names that are not UTF-8 or hold HTML or a formula,
+# one that hangs, one that floods).
 #   1. graded locally on parts 1 and 3, killed (kill -9) half way, then run again: only what was
 #      missing is graded, the records written before are untouched, nothing of the killed run is left;
 #   2. the grade book and the records say what each submission is known to do;
@@ -83,6 +84,14 @@ with zipfile.ZipFile(os.path.join(d, 'bomb.zip'), 'w', zipfile.ZIP_DEFLATED) as 
         block = bytes(1 << 20)
         for _ in range(300):          # 300 MiB of zeros: about 300 KB compressed
             w.write(block)
+# a zip bomb whose headers lie: they declare 1000 bytes of what inflates to 100 MiB
+with zipfile.ZipFile(os.path.join(d, 'liar.zip'), 'w', zipfile.ZIP_DEFLATED) as f:
+    f.writestr('parts/part1_raygen/zeros.c', bytes(100 << 20))
+import struct
+data = bytearray(open(os.path.join(d, 'liar.zip'), 'rb').read())
+struct.pack_into('<I', data, data.find(b'PK\x03\x04') + 22, 1000)   # the local header's size
+struct.pack_into('<I', data, data.find(b'PK\x01\x02') + 24, 1000)   # the central directory's
+open(os.path.join(d, 'liar.zip'), 'wb').write(bytes(data))
 z('many.zip', [('parts/part1_raygen/f%05d.c' % i, '') for i in range(20001)])
 # a link inside a part folder: left out, said so; the rest graded
 src = 'parts/part1_raygen'
@@ -103,7 +112,7 @@ need python3 python3 test-grade-class
 # ---- 1. graded locally, killed half way, run again -------------------------------------------------
 out=$tmp/local
 args=(--submissions "$subs" --secret "$secret" --parts 1,3 --timeout 90)
-say "1. $n_graded graded and 9 hostile submissions on parts 1 and 3, locally; kill -9 half way, then again"
+say "1. $n_graded graded and 10 hostile submissions on parts 1 and 3, locally; kill -9 half way, then again"
 t0=$(date +%s)
 bin/grade-class "${args[@]}" --out "$out" >"$tmp/run1.log" 2>&1 &
 pid=$!
@@ -166,7 +175,8 @@ expect "hangs: part 1 stopped at --timeout, 0 points ($(row hangs))" bash -c "gr
 expect "floods: full marks on part 1 all the same ($(row floods))" test "$(field floods 3)" = "$max1"
 expect "floods: its grading's log is bounded" test "$(cat "$out"/students/floods/part1-*/grade.log | wc -c)" -lt 1000000
 expect "withlink: graded, its link left out and said so ($(row withlink))" bash -c "row_=\$(grep -F 'row withlink ' '$tmp/book.txt'); [[ \$row_ == *'left out'*secret.c* && \$row_ == 'row withlink $max1 '* ]]"
-for s in empty:empty "<img src=x onerror=alert(1)>:empty" linked:link escapes:unsafe_path absolute:unsafe_path bomb:too_large many:too_large; do
+for s in empty:empty "<img src=x onerror=alert(1)>:empty" linked:link escapes:unsafe_path absolute:unsafe_path bomb:too_large \
+         liar:too_large many:too_large; do
     expect "${s%:*}: not graded (${s##*:})" bash -c "grep -F 'row ${s%:*} ' '$tmp/book.txt' | grep -qF 'not graded (${s##*:})'"
 done
 expect "two submissions with the id =1+1: both rows say so" test "$(grep -cF 'not graded (duplicate_id)' "$tmp/book.txt")" = 2
@@ -286,7 +296,7 @@ def check(ok, what):
 def rows(part, table): return [r for r in p.rows if r['part'] == part and r['table'] == table]
 summary = next(r for r in p.rows if r.get('id') == 'summary')
 check(summary.get('data-graded') == str(n_graded), 'summary: %s graded, expected %d' % (summary.get('data-graded'), n_graded))
-check(summary.get('data-refused') == '9', 'summary: %s refused, expected 9' % summary.get('data-refused'))
+check(summary.get('data-refused') == '10', 'summary: %s refused, expected 10' % summary.get('data-refused'))
 # What the catalogue is known to do. part3-bsdf-without-pi: spheres_direct_importance pi too bright.
 causes3 = {r.get('data-label'): r.get('count', 0) for r in rows('3', 'case-causes')}
 check(causes3.get('spheres_direct_importance: too bright by pi', 0) == 1, 'part 3 case causes: %s' % causes3)
@@ -300,7 +310,7 @@ check(full.get('1') == '7' and full.get('3') == '5', 'full marks (part 1, part 3
 tasks3 = {r.get('data-task'): r.get('count') for r in p.rows if r['part'] == '3' and 'data-task' in r}
 check(sum(1 for c in tasks3.values() if c) >= 1, 'part 3: no task lost by anyone: %s' % tasks3)
 statuses = sorted(r['data-status'] for r in rows(None, 'refused') if 'data-status' in r)
-check(statuses == sorted(['duplicate_id'] * 2 + ['unsafe_path'] * 2 + ['too_large'] * 2 + ['empty'] * 2 + ['link']),
+check(statuses == sorted(['duplicate_id'] * 2 + ['unsafe_path'] * 2 + ['too_large'] * 3 + ['empty'] * 2 + ['link']),
       'refused submissions: %s' % statuses)
 text = ''.join(p.text)
 check('<img src=x onerror=alert(1)>' in text, 'the HTML-like name is not shown as text')
