@@ -2,14 +2,14 @@
 # Benchmark: not part of any assignment. The class grader's throughput and memory (bench/RESULTS.md):
 # a class of N submissions made from the catalogues (the solution, every correct alternative of parts
 # 1-5, then catalogued bugs of parts 1-5 in name order), graded on parts 1-5 (the first assignment,
-# COURSE_PARTS' default: what a course grades), locally with the default jobs; with SLURM_N > 0 the
-# first SLURM_N of them again on a one-node Slurm cluster (course/shared/slurm_cluster.sh). Prints
+# COURSE_PARTS' default: what a course grades), locally with the default jobs, or (slurm) as a job
+# array on a one-node Slurm cluster of this machine (course/shared/slurm_cluster.sh). Prints
 # submissions per hour and each grading's peak memory (the resident memory of bin/grade and all its
 # children, sampled every half second). As root, from the course's root, after make bin/grade-class.
-#   course/class/bench.sh [N (40)] [SLURM_N (0)]
+#   course/class/bench.sh [N (40)] [local|slurm]
 set -u
 cd "$(dirname "$0")/../.." || exit 2
-n=${1:-40} slurm_n=${2:-0}
+n=${1:-40} where=${2:-local}
 tmp=$(mktemp -d /tmp/pathlab-class-bench.XXXXXX) && chmod 755 "$tmp"
 cluster=
 cleanup() { [ -n "$cluster" ] && sh course/shared/slurm_cluster.sh down "$cluster" >/dev/null 2>&1; rm -rf "$tmp"; }
@@ -55,32 +55,28 @@ report_memory() {
     sort -n "$1" | awk '{ v[NR] = $1 / 1048576 } END { if (NR) printf "memory per grading (one part, peak RSS of bin/grade and its children): median %.0f MB, max %.0f MB over %d gradings\n", v[int((NR + 1) / 2)], v[NR], NR }'
 }
 
+# One run, local or as a Slurm job array on a one-node cluster of this machine (the nodes' processes
+# are sampled all the same: they are this machine's).
 sample_memory "$tmp/memory.txt" &
 sampler=$!
+args=(--submissions "$tmp/subs" --out "$tmp/out" --secret "$tmp/secret" --parts 1,2,3,4,5)
 start=$(date +%s.%N)
-/usr/bin/time -f '%U %S' -o "$tmp/cpu.txt" nice bin/grade-class --submissions "$tmp/subs" --out "$tmp/out" \
-    --secret "$tmp/secret" --parts 1,2,3,4,5 >"$tmp/local.log" 2>&1
-end=$(date +%s.%N)
-kill "$sampler" 2>/dev/null
-grep -E '^grade-class: [0-9]+ submission' "$tmp/local.log"
-tail -n 2 "$tmp/local.log"
-# Wall time (this machine as it was, other work included) and CPU time (all processes of the run:
-# what an idle machine's cores would have to give, the best it could do).
-read -r user sys <"$tmp/cpu.txt"
-awk -v n="$(ls "$tmp/subs" | wc -l)" -v s="$start" -v e="$end" -v u="$user" -v y="$sys" -v c="$(nproc)" 'BEGIN {
-    printf "local: %d submissions in %.0f s wall: %.0f submissions per hour; CPU %.0f s (%.1f s a submission: at most %.0f an hour on %d idle cores)\n",
-           n, e - s, n * 3600 / (e - s), u + y, (u + y) / n, c * 3600 * n / (u + y), c }'
-echo "load average at the end: $(cut -d' ' -f1-3 /proc/loadavg)"
-report_memory "$tmp/memory.txt"
-
-if [ "$slurm_n" -gt 0 ]; then
-    mkdir -p "$tmp/slurm-subs" && for s in $(ls "$tmp/subs" | head -n "$slurm_n"); do mv "$tmp/subs/$s" "$tmp/slurm-subs/"; done
+if [ "$where" = slurm ]; then
     cluster=$tmp/cluster
     eval "$(sh course/shared/slurm_cluster.sh up "$cluster")" && export SLURM_CONF || exit 1
     start=$(date +%s.%N)
-    bin/grade-class --submissions "$tmp/slurm-subs" --out "$tmp/slurm" --secret "$tmp/secret" --parts 1,2,3,4,5 --slurm >"$tmp/submit.log" 2>&1
+    bin/grade-class "${args[@]}" --slurm >"$tmp/submit.log" 2>&1
     final=$(sed -n 's/.*report as job \([0-9]*\).*/\1/p' "$tmp/submit.log")
     while squeue -h -j "${final:-0}" 2>/dev/null | grep -q .; do sleep 1; done
-    end=$(date +%s.%N)
-    awk -v n="$slurm_n" -v s="$start" -v e="$end" 'BEGIN { printf "Slurm (one node, %d CPUs): %d submissions in %.0f s: %.0f submissions per hour\n", '"$(nproc)"', n, e - s, n * 3600 / (e - s) }'
+    cpu="(CPU not measured: the jobs are slurmd's children)"
+else
+    /usr/bin/time -f '%U %S' -o "$tmp/cpu.txt" nice bin/grade-class "${args[@]}" >"$tmp/local.log" 2>&1
+    cpu=$(awk -v n="$n" '{ printf "CPU %.0f s (%.1f s a submission: at most %.0f an hour on '"$(nproc)"' idle cores)", $1 + $2, ($1 + $2) / n, '"$(nproc)"' * 3600 * n / ($1 + $2) }' "$tmp/cpu.txt")
 fi
+end=$(date +%s.%N)
+kill "$sampler" 2>/dev/null
+grep -h 'students (' "$tmp/local.log" "$tmp/out/work/slurm/final.log" 2>/dev/null | tail -n 1
+awk -v n="$n" -v s="$start" -v e="$end" -v w="$where" -v c="$cpu" 'BEGIN {
+    printf "%s: %d submissions in %.0f s wall: %.0f submissions per hour; %s\n", w, n, e - s, n * 3600 / (e - s), c }'
+echo "load average at the end: $(cut -d' ' -f1-3 /proc/loadavg)"
+report_memory "$tmp/memory.txt"
