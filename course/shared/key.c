@@ -20,6 +20,7 @@ uint64_t key_str(uint64_t h, const char *s) { return key_bytes(h, s, strlen(s) +
 
 uint64_t key_file_as(uint64_t h, const char *path, const char *name)
 {
+    /* Read through the framework's reader: a FIFO or a device is "missing", never waited on. */
     char *data;
     size_t len;
     if (file_read_all(path, "file", (size_t)1 << 30, &data, &len, NULL) != PL_OK) return key_str(h, "missing");
@@ -32,6 +33,7 @@ uint64_t key_file(uint64_t h, const char *path) { return key_file_as(h, path, pa
 
 static int compare_names(const void *a, const void *b) { return strcmp(*(char *const *)a, *(char *const *)b); }
 
+/* A C source or header, by its name. */
 static bool is_source(const char *name)
 {
     size_t len = strlen(name);
@@ -48,6 +50,7 @@ static void list_sources(const char *dir, bool descend, char **names, int *n)
         char path[1300];
         snprintf(path, sizeof path, "%s/%s", dir, e->d_name);
         struct stat st;
+        /* stat follows a link: a linked folder of sources counts as the folder (the course's own tree). */
         if (stat(path, &st) == 0 && S_ISDIR(st.st_mode)) {
             if (descend) list_sources(path, false, names, n);
         }
@@ -60,6 +63,7 @@ uint64_t key_sources(uint64_t h, const char *dir)
 {
     char *names[KEY_MAX_SOURCES];
     int n = 0;
+    /* In name order: readdir's order is the file system's, and a key must not depend on it. */
     list_sources(dir, true, names, &n);
     qsort(names, (size_t)n, sizeof *names, compare_names);
     for (int i = 0; i < n; i++) {
@@ -69,4 +73,5 @@ uint64_t key_sources(uint64_t h, const char *dir)
     return h;
 }
 
+/* Fixed width: keys compare as strings and name folders of equal length. */
 void key_hex(uint64_t h, char out[17]) { snprintf(out, 17, "%016llx", (unsigned long long)h); }

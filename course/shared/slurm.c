@@ -8,6 +8,7 @@
 
 void slurm_quote(FILE *f, const char *s)
 {
+    /* Inside single quotes nothing is special but the quote itself, which ends, is escaped, reopens. */
     fputc('\'', f);
     for (; *s; s++)
         if (*s == '\'') fputs("'\\''", f);
@@ -42,6 +43,7 @@ bool slurm_begin(slurm_array *a, const char *dir)
     return true;
 }
 
+/* One command line: each argument quoted, so that a task runs exactly the argv it was given. */
 static void write_command(FILE *f, char *const argv[])
 {
     for (int i = 0; argv[i]; i++) {
@@ -61,6 +63,7 @@ bool slurm_add(slurm_array *a, char *const argv[])
 /* Runs one sbatch command line and keeps the job id it prints (--parsable: "id" or "id;cluster"). */
 static bool sbatch(const char *line, char id[64])
 {
+    /* The line is ours, every value quoted; the instructor's own sbatch arguments go as typed. */
     FILE *p = popen(line, "r");
     id[0] = '\0';
     if (!p || !fgets(id, 64, p)) {
@@ -86,6 +89,7 @@ static bool close_script(FILE *f, const char *path) { return fclose(f) == 0 && c
 static char *sbatch_line(const char *cwd, const char *name, const char *log, const char *extra, const char *args,
                          const char *script)
 {
+    /* Built in memory: the course root's and the folder's paths may be long. */
     char *line = NULL;
     size_t size = 0;
     FILE *f = open_memstream(&line, &size);
@@ -103,12 +107,14 @@ bool slurm_submit(slurm_array *a, const char *name, char *const final_argv[], co
                   const char *sbatch_args, slurm_ids *ids)
 {
     char cwd[1024], path[700], tasks[700], log[700], extra[160];
+    /* tasks.txt complete (a short write fails the submission), and the folder the jobs start in. */
     memset(ids, 0, sizeof *ids);
     bool ok = fclose(a->tasks) == 0;
     a->tasks = NULL;
     if (!ok || !getcwd(cwd, sizeof cwd)) return false;
     /* The array: each task runs its line of tasks.txt. */
     if (a->count > 0) {
+        /* SLURM_ARRAY_TASK_ID counts from 0, sed's lines from 1. */
         snprintf(path, sizeof path, "%s/array.sh", a->dir);
         snprintf(tasks, sizeof tasks, "%s/tasks.txt", a->dir);
         FILE *f = open_script(path, "one task's command, its line of tasks.txt");
@@ -130,6 +136,7 @@ bool slurm_submit(slurm_array *a, const char *name, char *const final_argv[], co
     fputs("exec ", f);
     write_command(f, final_argv);
     if (!close_script(f, path)) return false;
+    /* afterok: the final job runs only if every task succeeded; with no task it runs at once. */
     snprintf(log, sizeof log, "%s/final.log", a->dir);
     snprintf(extra, sizeof extra, "%s%s", ids->array_id[0] ? "--dependency=afterok:" : "", ids->array_id);
     char *line = sbatch_line(cwd, final_name, log, extra, sbatch_args, path);
