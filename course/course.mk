@@ -15,7 +15,7 @@ export COURSE_PARTS
 
 COURSE_TOOL_OBJ := $(addprefix $(BUILD)/framework/,image.o file.o status.o) $(BUILD)/third_party/lodepng/lodepng.o
 
-## test-course: the course's own tools' suite (the release stripper's rules)
+## test-course: the course's own tools' suite (the release stripper's rules, the class grader's escaping)
 
 # ---- the release: release/student (solutions -> stubs) and release/autograder.zip --------------
 # The stripper's rules are a library, so the course suite (course/release/test_strip.c) tests them.
@@ -26,7 +26,7 @@ $(BIN)/strip_solutions: $(BUILD)/course/release/strip_solutions.o $(STRIP_OBJ) $
 	$(say) LD $@
 	@mkdir -p $(dir $@)
 	$(Q)$(CC) $(LDFLAGS) -o $@ $^ $(LDLIBS)
-$(BIN)/test-course: $(STRIP_OBJ)
+$(BIN)/test-course: $(STRIP_OBJ) $(BUILD)/course/class/class_text.o
 
 # bin/release_points: each part's points, read by the grader's own case loader (classroom.yml's steps).
 $(BIN)/release_points: $(BUILD)/course/release/release_points.o $(BUILD)/grader/grade_spec.o $(BUILD)/framework/status.o
@@ -60,9 +60,11 @@ test-grade-local: release $(BIN)/grade  ## make grade without the sandbox: the a
 	$(Q)sh course/platform/grade_local.sh
 
 # ---- references: the solution's renders of every grading case, locally or as a Slurm job array ---
+# course/shared/: what the reference maker and the class grader both use (content keys, Slurm arrays).
+COURSE_SHARED_OBJ := $(BUILD)/course/shared/key.o $(BUILD)/course/shared/slurm.o
 REF_OBJ := $(BUILD)/course/references/references.o $(BUILD)/grader/grade_spec.o $(BUILD)/grader/grade_plan.o $(BUILD)/grader/grade_run.o \
            $(BUILD)/grader/grade_rate.o \
-           $(BUILD)/grader/grade_fmt.o \
+           $(BUILD)/grader/grade_fmt.o $(COURSE_SHARED_OBJ) \
            $(BUILD)/grader/sandbox_$(SANDBOX_IMPL).o $(LIB_OBJ)
 $(BIN)/references: $(REF_OBJ)
 	$(say) LD $@
@@ -117,3 +119,37 @@ bench-grade: $(BIN)/grade  ## time to grade the solution as a submission, all fi
 .PHONY: test-fresh-build
 test-fresh-build:  ## builds follow content and compiler: a part dated in the past is rebuilt, CC=clang after gcc links
 	$(Q)sh course/platform/fresh_build.sh
+
+# ---- a whole class graded (course/class/README.md): locally or as a Slurm job array ---------------
+# bin/grade-class links libarchive (zip and folder reading) and libcrypto (the seeds' HMAC), which
+# the student never needs: `make grade-class` and `make test-grade-class` install them (as root,
+# Debian's libarchive-dev and libssl-dev) before building it (course/class/need.sh).
+CLASS_OBJ := $(patsubst %.c,$(BUILD)/%.o,$(filter-out course/class/test_%,$(wildcard course/class/*.c))) $(COURSE_SHARED_OBJ) \
+             $(BUILD)/grader/grade_spec.o $(BUILD)/grader/grade_plan.o $(BUILD)/grader/grade_run.o \
+             $(BUILD)/grader/grade_fmt.o $(BUILD)/grader/sandbox_$(SANDBOX_IMPL).o $(LIB_OBJ)
+CLASS_LIBS = $(shell pkg-config --libs libarchive libcrypto)
+$(BUILD)/course/class/%.o: CPPFLAGS += $(shell pkg-config --cflags libarchive libcrypto 2>/dev/null)
+$(BIN)/grade-class: $(CLASS_OBJ)
+	$(say) LD $@
+	@mkdir -p $(dir $@)
+	$(Q)$(CC) $(LDFLAGS) -o $@ $^ $(LDLIBS) $(GRADER_LIBS) $(CLASS_LIBS)
+# nftw (removing a grading's folders without following links) is an X/Open interface.
+$(BUILD)/course/class/class_unit.o: FEATURES += -D_XOPEN_SOURCE=700
+class_comma := ,
+class_space := $(subst ,, )
+CLASS_PARTS = $(or $(PARTS),$(subst $(class_space),$(class_comma),$(strip $(COURSE_PARTS))))
+.PHONY: grade-class test-grade-class
+## grade-class SUBMISSIONS=DIR OUT=DIR: grade every submission of DIR (a folder or .zip each) into OUT/gradebook.csv and OUT/report/ (ROSTER=, SECRET=, PARTS=1,2, JOBS=, SLURM=1 SBATCH="...")
+grade-class:
+	$(Q)sh course/class/need.sh
+	$(Q)$(MAKE) --no-print-directory $(BIN)/grade-class $(BIN)/grade $(BIN)/pathtracer
+	$(Q)$(BIN)/grade-class --submissions '$(SUBMISSIONS)' --out '$(OUT)' --parts $(CLASS_PARTS) $(if $(ROSTER),--roster '$(ROSTER)') \
+	    $(if $(SECRET),--secret '$(SECRET)') $(if $(JOBS),--jobs $(JOBS)) $(if $(SLURM),--slurm $(if $(SBATCH),--sbatch '$(SBATCH)'))
+
+# A small class (the solution, catalogued bugs and alternatives, hostile submissions) graded locally,
+# killed half way and resumed, re-graded after a case changed, on a real Slurm cluster, and its
+# report read in headless Chromium; as root (the sandbox, the cluster). About 4 minutes.
+test-grade-class:  ## the class grader end to end: resume, re-grade, Slurm equal to local byte for byte, the report in Chromium
+	$(Q)sh course/class/need.sh
+	$(Q)$(MAKE) --no-print-directory $(BIN)/grade-class $(BIN)/grade $(BIN)/pathtracer
+	$(Q)bash course/class/test.sh

@@ -30,6 +30,8 @@
 #include "../../framework/exr.h"
 #include "../../framework/file.h"
 #include "../../framework/parallel.h"
+#include "../shared/key.h"
+#include "../shared/slurm.h"
 #include <dirent.h>
 #include <errno.h>
 #include <jansson.h>
@@ -44,66 +46,7 @@
 #define REFERENCE_SEED 1000000000000ull  /* above every grading seed (grade draws them below 10^12) */
 #define RENDER_SECONDS 3600.0
 
-/* ---- the key: what a reference was made from ------------------------------------------------ */
-
-static uint64_t fnv(uint64_t h, const void *data, size_t len)
-{
-    const unsigned char *p = data;
-    for (size_t i = 0; i < len; i++) h = (h ^ p[i]) * 1099511628211ull;
-    return h;
-}
-
-static uint64_t fnv_str(uint64_t h, const char *s) { return fnv(h, s, strlen(s) + 1); }
-
-static uint64_t fnv_file(uint64_t h, const char *path)
-{
-    char *data;
-    size_t len;
-    if (file_read_all(path, "file", (size_t)1 << 30, &data, &len, NULL) != PL_OK) return fnv_str(h, "missing");
-    h = fnv(fnv_str(h, path), data, len);
-    free(data);
-    return h;
-}
-
-static int compare_names(const void *a, const void *b) { return strcmp(*(char *const *)a, *(char *const *)b); }
-
-/* Every .c and .h under dir (one level of subfolders), in name order. */
-static uint64_t fnv_sources(uint64_t h, const char *dir)
-{
-    char *names[512];
-    int n = 0;
-    DIR *d = opendir(dir);
-    for (struct dirent *e; d && (e = readdir(d)) && n < 512;) {
-        if (e->d_name[0] == '.') continue;
-        char path[1024];
-        snprintf(path, sizeof path, "%s/%s", dir, e->d_name);
-        struct stat st;
-        if (stat(path, &st) == 0 && S_ISDIR(st.st_mode)) {
-            DIR *sub = opendir(path);
-            for (struct dirent *f; sub && (f = readdir(sub)) && n < 512;) {
-                size_t len = strlen(f->d_name);
-                if (len > 2 && (!strcmp(f->d_name + len - 2, ".c") || !strcmp(f->d_name + len - 2, ".h"))) {
-                    char sp[1300];
-                    snprintf(sp, sizeof sp, "%s/%s", path, f->d_name);
-                    names[n++] = strdup(sp);
-                }
-            }
-            if (sub) closedir(sub);
-        }
-        else {
-            size_t len = strlen(e->d_name);
-            if (len > 2 && (!strcmp(e->d_name + len - 2, ".c") || !strcmp(e->d_name + len - 2, ".h")))
-                names[n++] = strdup(path);
-        }
-    }
-    if (d) closedir(d);
-    qsort(names, (size_t)n, sizeof *names, compare_names);
-    for (int i = 0; i < n; i++) {
-        h = fnv_file(h, names[i]);
-        free(names[i]);
-    }
-    return h;
-}
+/* ---- the key: what a reference was made from (course/shared/key.h) ------------------------------- */
 
 /* The flags a case's reference renders with. */
 static char *const *ref_flags(const grade_case *c, int *count)
@@ -114,15 +57,14 @@ static char *const *ref_flags(const grade_case *c, int *count)
 
 static void case_key(const grade_case *c, uint64_t code, char out[17])
 {
-    uint64_t h = fnv_file(code, c->scene);
+    uint64_t h = key_file(code, c->scene);
     int n;
     char *const *flags = ref_flags(c, &n);
-    for (int i = 0; i < n; i++) h = fnv_str(h, flags[i]);
+    for (int i = 0; i < n; i++) h = key_str(h, flags[i]);
     /* The case's own render too: the provenance records the course's figures for it (probe_case). */
-    for (int i = 0; i < c->num_flags; i++) h = fnv_str(h, c->flags[i]);
+    for (int i = 0; i < c->num_flags; i++) h = key_str(h, c->flags[i]);
     int numbers[4] = {c->width, c->height, c->reference_samples, c->samples};
-    h = fnv(h, numbers, sizeof numbers);
-    snprintf(out, 17, "%016llx", (unsigned long long)h);
+    key_hex(key_bytes(h, numbers, sizeof numbers), out);
 }
 
 /* ---- one case's jobs -------------------------------------------------------------------------- */
@@ -364,19 +306,14 @@ static void render_one(void *arg, int i)
 
 /* ---- Slurm ------------------------------------------------------------------------------------ */
 
-/* One task per missing range: the array's tasks read their command from tasks.txt. A dependent job
- * merges when every task has succeeded. */
+/* One task per missing range (course/shared/slurm.h); the final job merges when every task has
+ * succeeded. */
 static int submit_slurm(ref_case *cases, int n, const char *sbatch_args, const char *out_dir, const char *work_dir)
 {
-    char dir[600], tasks[700], script[700], cmdline[8192];
+    char dir[600];
+    slurm_array array;
     snprintf(dir, sizeof dir, "%s/slurm", work_dir);
-    snprintf(tasks, sizeof tasks, "%s/tasks.txt", dir);
-    snprintf(script, sizeof script, "%s/array.sh", dir);
-    snprintf(cmdline, sizeof cmdline, "mkdir -p '%s'", dir);
-    if (system(cmdline) != 0) return fprintf(stderr, "references: cannot create %s\n", dir), 1;
-    FILE *f = fopen(tasks, "w");
-    if (!f) return fprintf(stderr, "references: cannot write %s\n", tasks), 1;
-    int count = 0;
+    if (!slurm_begin(&array, dir)) return 1;
     for (int i = 0; i < n; i++)
         for (int r = 0; r < cases[i].num_ranges; r++) {
             char path[1200];
@@ -384,44 +321,16 @@ static int submit_slurm(ref_case *cases, int n, const char *sbatch_args, const c
             if (exists(path)) continue;
             command cmd;
             range_command(&cases[i], r, &cmd);
-            for (char **a = cmd.argv; *a; a++) fprintf(f, "'%s' ", *a);
-            fprintf(f, "\n");
-            count++;
+            if (!slurm_add(&array, cmd.argv)) return fprintf(stderr, "references: cannot write %s\n", dir), 1;
         }
-    fclose(f);
-    char names[4096] = "";
-    for (int i = 0; i < n; i++) {
-        strncat(names, " ", sizeof names - strlen(names) - 1);
-        strncat(names, cases[i].spec->name, sizeof names - strlen(names) - 1);
-    }
-    f = fopen(script, "w");
-    if (!f) return 1;
-    fprintf(f, "#!/bin/sh\n# One reference range per array task (written by bin/references --slurm).\n"
-               "line=$(sed -n \"$((SLURM_ARRAY_TASK_ID + 1))p\" %s)\neval \"exec $line\"\n", tasks);
-    fclose(f);
-    char cwd[1024];
-    if (!getcwd(cwd, sizeof cwd)) return 1;
-    char array_id[64] = "";
-    if (count > 0) {
-        snprintf(cmdline, sizeof cmdline,
-                 "sbatch --parsable --chdir=%s --job-name=pl-ref --array=0-%d --output=%s/task-%%a.log %s %s", cwd,
-                 count - 1, dir, sbatch_args, script);
-        FILE *p = popen(cmdline, "r");
-        if (!p || !fgets(array_id, sizeof array_id, p)) return fprintf(stderr, "references: sbatch failed\n"), 1;
-        pclose(p);
-        array_id[strcspn(array_id, ";\n")] = '\0';
-    }
-    snprintf(cmdline, sizeof cmdline,
-             "sbatch --parsable --chdir=%s --job-name=pl-ref-merge --output=%s/merge.log %s%s %s --wrap "
-             "'bin/references --merge-only --out %s --work %s%s'", cwd, dir, array_id[0] ? "--dependency=afterok:" : "",
-             array_id, sbatch_args, out_dir, work_dir, names);
-    FILE *p = popen(cmdline, "r");
-    char merge_id[64] = "";
-    if (!p || !fgets(merge_id, sizeof merge_id, p)) return fprintf(stderr, "references: sbatch failed\n"), 1;
-    pclose(p);
-    merge_id[strcspn(merge_id, ";\n")] = '\0';
-    printf("submitted %d range task(s) as job array %s, and the merge as job %s\n", count,
-           array_id[0] ? array_id : "(none)", merge_id);
+    char *merge[GRADE_MAX_PART * GRADE_MAX_CASES + 8] = {"bin/references", "--merge-only", "--out", (char *)out_dir,
+                                                          "--work", (char *)work_dir};
+    for (int i = 0; i < n; i++) merge[6 + i] = (char *)cases[i].spec->name;
+    merge[6 + n] = NULL;
+    slurm_ids ids;
+    if (!slurm_submit(&array, "pl-ref", merge, "pl-ref-merge", sbatch_args, &ids)) return 1;
+    printf("submitted %d range task(s) as job array %s, and the merge as job %s\n", array.count,
+           ids.array_id[0] ? ids.array_id : "(none)", ids.final_id);
     printf("follow it with: bin/references --status\n");
     return 0;
 }
@@ -486,7 +395,7 @@ static void ref_case_init(ref_case *rc, const grade_case *c, int part, uint64_t 
     memset(rc, 0, sizeof *rc);
     rc->spec = c;
     rc->part = part;
-    rc->seed = REFERENCE_SEED + fnv_str(1469598103934665603ull, c->name) % 1000000ull;
+    rc->seed = REFERENCE_SEED + key_str(KEY_START, c->name) % 1000000ull;
     case_key(c, code, rc->key);
     snprintf(rc->range_dir, sizeof rc->range_dir, "%s/part%d/%s/%s", o->work_dir, rc->part, c->name, rc->key);
     snprintf(rc->out_base, sizeof rc->out_base, "%s/%spart%d/%s", o->out_dir, c->hidden ? "hidden/" : "", rc->part,
@@ -498,7 +407,7 @@ static void ref_case_init(ref_case *rc, const grade_case *c, int part, uint64_t 
  * made; with --status each is printed instead. Returns how many, or -1 when a folder cannot be made. */
 static int cases_to_render(const grade_spec *spec, const ref_options *o, ref_case *cases)
 {
-    uint64_t code = fnv_sources(fnv_sources(1469598103934665603ull, "framework"), "parts");
+    uint64_t code = key_sources(key_sources(KEY_START, "framework"), "parts");
     int n = 0;
     for (int k = 0; k < GRADE_MAX_PART; k++)
         for (int i = 0; i < spec->parts[k].num_cases; i++) {
@@ -522,17 +431,6 @@ static int cases_to_render(const grade_spec *spec, const ref_options *o, ref_cas
             n++;
         }
     return n;
-}
-
-/* On a cluster, what the scheduler still holds: pending or running range tasks and the merge. A
- * range that is neither done nor queued has failed: --slurm submits it again. */
-static void print_queue(void)
-{
-    if (system("command -v squeue >/dev/null 2>&1") != 0) return;
-    printf("queued on Slurm (job, task, state):\n");
-    fflush(stdout);
-    if (system("squeue -h -n pl-ref,pl-ref-merge -o '  %i %j %T' 2>/dev/null") != 0)
-        printf("  (squeue failed: no cluster reachable)\n");
 }
 
 /* Every missing range of the n cases, rendered `jobs` at a time; false if any failed. */
@@ -592,7 +490,9 @@ int main(int argc, char **argv)
     static ref_case cases[GRADE_MAX_PART * GRADE_MAX_CASES];
     int n = cases_to_render(&spec, &o, cases), code_exit = 0;
     if (n < 0) code_exit = 1;
-    else if (o.status) print_queue();
+    /* On a cluster, what the scheduler still holds: a range neither done nor queued has failed, and
+     * --slurm submits it again. */
+    else if (o.status) slurm_print_queue("pl-ref,pl-ref-merge");
     else if (n == 0) printf("references: every reference is up to date (--force renders them again)\n");
     else if (o.slurm) code_exit = submit_slurm(cases, n, o.sbatch_args, o.out_dir, o.work_dir);
     else if (!o.merge_only && !render_ranges(cases, n, o.jobs)) code_exit = 1;

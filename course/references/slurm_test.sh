@@ -1,6 +1,6 @@
 #!/bin/sh
 # Test machinery: the references from a real Slurm job array equal the local ones, byte for byte
-# (issue 12). Brings up a single-node cluster from Debian's packages (course/references/slurm_cluster.sh),
+# (issue 12). Brings up a single-node cluster from Debian's packages (course/shared/slurm_cluster.sh),
 # submits the range array and its merge job for a few small cases, waits, compares with a local
 # run on 1 job and on 2, then checks that a range deleted after the fact is rendered again alone,
 # that a truncated range file is refused at the merge, and stops the daemons it started. Needs root (it installs slurm-wlm and munge and runs the
@@ -23,9 +23,9 @@ make -s bin/pathtracer bin/references
 tmp=$(mktemp -d /tmp/pathlab-slurm.XXXXXX)
 # The daemons are waited for as they stop; a job step's helper (slurmstepd) may still write for a
 # moment after, so a first removal that finds a directory filling up is tried once more.
-cleanup() { course/references/slurm_cluster.sh down "$tmp/cluster" || true; rm -rf "$tmp" 2>/dev/null || { sleep 1; rm -rf "$tmp"; }; }
+cleanup() { course/shared/slurm_cluster.sh down "$tmp/cluster" || true; rm -rf "$tmp" 2>/dev/null || { sleep 1; rm -rf "$tmp"; }; }
 trap cleanup EXIT INT TERM
-eval "$(course/references/slurm_cluster.sh up "$tmp/cluster")"
+eval "$(course/shared/slurm_cluster.sh up "$tmp/cluster")"
 export SLURM_CONF
 
 fail() { echo "test-slurm: FAILED: $*"; exit 1; }

@@ -1,9 +1,9 @@
 #!/bin/sh
-# Test machinery: a real single-node Slurm cluster from Debian's packages, for the reference job
-# array test. Needs root: it runs munged, slurmctld and slurmd as
+# Test machinery: a real single-node Slurm cluster from Debian's packages, for the job array tests
+# (the references', the class grader's). Needs root: it runs munged, slurmctld and slurmd as
 # root in a container, with proctrack/linuxproc and task/none (no cgroups), no accounting.
-#   course/references/slurm_cluster.sh up DIR     start the daemons, state and logs under DIR; prints SLURM_CONF
-#   course/references/slurm_cluster.sh down DIR   stop exactly the daemons that `up DIR` started
+#   course/shared/slurm_cluster.sh up DIR     start the daemons, state and logs under DIR; prints SLURM_CONF
+#   course/shared/slurm_cluster.sh down DIR   stop exactly the daemons that `up DIR` started
 set -eu
 cmd=${1:?usage: cluster.sh up|down DIR}
 dir=${2:?usage: cluster.sh up|down DIR}
