@@ -1,4 +1,5 @@
-/* Axis-aligned bounding boxes. An empty box has min = +inf and max = -inf, so any union fixes it. */
+/* Axis-aligned bounding boxes. An empty box has min = +inf and max = -inf, so any union fixes it.
+ * Parts may not call: none of these (every function here is static inline). */
 #ifndef PL_AABB_H
 #define PL_AABB_H
 

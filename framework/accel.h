@@ -1,5 +1,7 @@
 /* Ray-scene queries for the renderer: part 2's BVH when it is implemented, otherwise a linear scan
- * over every primitive. The linear scan is also the oracle the BVH tests compare against. */
+ * over every primitive. The linear scan is also the oracle the BVH tests compare against.
+ * Parts may not call: accel_build, accel_free, accel_intersect_bare, accel_bvh_shape (the grader refuses
+ * them; the functions marked PL_PART_API are theirs). */
 #ifndef PL_ACCEL_H
 #define PL_ACCEL_H
 

@@ -5,6 +5,7 @@
  * code that reads it (s->triangles[i]) never sees the helper. Appending one element x:
  *
  *     if (buf_append(&list->v, &list->count, &list->cap, sizeof x, &x) < 0) return out_of_memory;
+ * Parts may not call: none of these (every function here is static inline).
  */
 #ifndef PL_BUF_H
 #define PL_BUF_H

@@ -10,7 +10,8 @@
  * - No tree is deeper than BVH_MAX_DEPTH, so a traversal can keep its to-do list in a fixed array.
  * - A traversal reads every node it enters through bvh_visit: that is where the framework counts
  *   node visits (counters.h) for the heat map, the sidecar and the complexity test; a traversal
- *   never reports its own. */
+ *   never reports its own.
+ * Parts may not call: bvh_validate (the grader refuses them; the functions marked PL_PART_API are theirs). */
 #ifndef PL_BVH_H
 #define PL_BVH_H
 

@@ -7,7 +7,8 @@
  * replaced by a -c settings file), or the default framing when the scene has none; then either
  * CS184's orbit framing (camera_uses_cs184_framing: --camera cs184, or by default a file in the
  * course's profile) or the image's aspect ratio; then the -b / -d lens flags, only when they were
- * given. */
+ * given.
+ * Parts may not call: any function declared here but the static inline ones (the grader refuses them). */
 #ifndef PL_CAMERA_H
 #define PL_CAMERA_H
 

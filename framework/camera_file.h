@@ -1,5 +1,6 @@
 /* CS184 camera settings files (-c): the camera a course saved from the original viewer. This file
- * reads and checks the numbers; camera.c turns them into a camera. */
+ * reads and checks the numbers; camera.c turns them into a camera.
+ * Parts may not call: any function declared here (the grader refuses them). */
 #ifndef PL_CAMERA_FILE_H
 #define PL_CAMERA_FILE_H
 

@@ -11,7 +11,8 @@
  * On failure pl_check_failed calls the handler: by default it prints "file:line: check failed:
  * cond" and aborts (a render or a grading stage stops at the bug); the test suites install one that
  * fails the running test with the same text (tests/common/filter.c), so the tests use PL_CHECK for
- * their own assertions too. Part code does not call PL_CHECK: the grader refuses pl_check_failed. */
+ * their own assertions too. Part code does not call PL_CHECK: the grader refuses pl_check_failed.
+ * Parts may not call: any function declared here (the grader refuses them). */
 #ifndef PL_FRAMEWORK_CHECK_H
 #define PL_FRAMEWORK_CHECK_H
 

@@ -1,6 +1,7 @@
 /* The clock every timing reads: seconds on a monotonic clock, which no change of the wall-clock
  * time (NTP, a user's date command) can make jump, so a difference of two readings is an elapsed
- * time. Only differences mean anything; the origin is unspecified. */
+ * time. Only differences mean anything; the origin is unspecified.
+ * Parts may not call: any function declared here (the grader refuses them). */
 #ifndef PL_CLOCK_H
 #define PL_CLOCK_H
 

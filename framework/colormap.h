@@ -1,4 +1,5 @@
-/* False-colour maps for teaching pictures (sample-rate maps, BVH heat maps). */
+/* False-colour maps for teaching pictures (sample-rate maps, BVH heat maps).
+ * Parts may not call: any function declared here (the grader refuses them). */
 #ifndef PL_COLORMAP_H
 #define PL_COLORMAP_H
 

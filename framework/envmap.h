@@ -9,7 +9,10 @@
  * the radiance a sampler returns and the one a ray that leaves the scene sees are the same
  * function, and a texel's share of the sphere is exactly what its solid angle says. (CS184 shows
  * rays the map filtered bilinearly; pathlab keeps the one function, which a sampler's density,
- * constant on each texel, describes exactly, and the graded references show.) */
+ * constant on each texel, describes exactly, and the graded references show.)
+ * Parts may not call: envmap_load, envmap_make_constant, envmap_free, envmap_texel_coords,
+ * env_distribution_alloc, env_distribution_free, env_distribution_check (the grader refuses them; the
+ * functions marked PL_PART_API are theirs). */
 #ifndef PL_ENVMAP_H
 #define PL_ENVMAP_H
 

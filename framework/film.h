@@ -16,7 +16,8 @@
  * Bad samples: a sample value that is NaN, infinite, negative or >= FILM_MAX_VALUE adds nothing
  * to the sums (it counts as black) and is counted in `bad`, so the render reports the pixel and a
  * grader can refuse it; the count n still includes it. FILM_MAX_VALUE = 2^31 keeps every square
- * exact in 128 bits (q < 2^63, q^2 < 2^126) and a sum of 2^31 samples below 2^125. */
+ * exact in 128 bits (q < 2^63, q^2 < 2^126) and a sum of 2^31 samples below 2^125.
+ * Parts may not call: any function declared here (the grader refuses them). */
 #ifndef PL_FILM_H
 #define PL_FILM_H
 

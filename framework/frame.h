@@ -1,6 +1,7 @@
 /* Local shading frames. At a hit, BSDFs work in a frame where the normal is +z, so cos(theta) is
  * just w.z. frame_from_normal builds an orthonormal basis (Duff et al. 2017, "Building an
- * Orthonormal Basis, Revisited"), continuous everywhere but at n = (0, 0, -1). */
+ * Orthonormal Basis, Revisited"), continuous everywhere but at n = (0, 0, -1).
+ * Parts may not call: none of these (every function here is static inline). */
 #ifndef PL_FRAME_H
 #define PL_FRAME_H
 

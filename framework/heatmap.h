@@ -1,5 +1,6 @@
 /* BVH heat map: a picture of how many BVH nodes each camera ray visits, read from the framework's
- * node-visit counter (counted in bvh_visit: counters.h). */
+ * node-visit counter (counted in bvh_visit: counters.h).
+ * Parts may not call: any function declared here (the grader refuses them). */
 #ifndef PL_HEATMAP_H
 #define PL_HEATMAP_H
 

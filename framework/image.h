@@ -1,6 +1,7 @@
 /* Float images and their files. Pixels are linear rgb, stored top row first (row 0 = top), as
  * image files are. Writers go to a temporary file in the same folder and rename it into place,
- * so a killed render never leaves a half-written image. */
+ * so a killed render never leaves a half-written image.
+ * Parts may not call: any function declared here but the static inline ones (the grader refuses them). */
 #ifndef PL_IMAGE_H
 #define PL_IMAGE_H
 

@@ -1,5 +1,7 @@
 /* Lights for direct illumination: sampling an incident direction at a shading point.
- * Radiance units per kind are in scene.h (light_kind). */
+ * Radiance units per kind are in scene.h (light_kind).
+ * Parts may not call: light_make_area, light_area_corner, light_add_environment, light_environment_pdf,
+ * light_sample_environment (the grader refuses them; the functions marked PL_PART_API are theirs). */
 #ifndef PL_LIGHT_H
 #define PL_LIGHT_H
 

@@ -1,5 +1,6 @@
 /* 4x4 affine transforms for scene loading (node transforms, camera pose).
- * Row-major storage m[row][col], acting on column vectors: p' = M p. */
+ * Row-major storage m[row][col], acting on column vectors: p' = M p.
+ * Parts may not call: none of these (every function here is marked PL_PART_API). */
 #ifndef PL_MAT4_H
 #define PL_MAT4_H
 

@@ -22,7 +22,9 @@
  * shading frame (frame.h: +z the shading normal), pointing away from the surface. f and pdf are
  * per steradian. A sampled direction may lie below the surface (cos_theta(wi) < 0: light passing
  * through glass), so whoever folds a sample into a path's throughput weighs it by
- * |cos_theta(wi)|. */
+ * |cos_theta(wi)|.
+ * Parts may not call: material_is_delta, material_has_inside, material_kind_shaded (the grader refuses
+ * them; the functions marked PL_PART_API are theirs). */
 #ifndef PL_MATERIAL_H
 #define PL_MATERIAL_H
 

@@ -1,5 +1,6 @@
 /* Render options: one struct, filled in one place (cli.c) from CS184's flags and pathlab's long
- * options, read everywhere else. Defaults are CS184's. */
+ * options, read everywhere else. Defaults are CS184's.
+ * Parts may not call: any function declared here (the grader refuses them). */
 #ifndef PL_OPTIONS_H
 #define PL_OPTIONS_H
 

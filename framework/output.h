@@ -9,7 +9,8 @@
  * After the render, output_write encodes each file into its own exclusive temporary beside it,
  * and only when every one succeeded renames them into place, the sidecar last (so a sidecar always
  * describes images that exist). On any failure (a full disk, an encoder error) every temporary is
- * removed and no final name changes. */
+ * removed and no final name changes.
+ * Parts may not call: any function declared here (the grader refuses them). */
 #ifndef PL_OUTPUT_H
 #define PL_OUTPUT_H
 

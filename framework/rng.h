@@ -1,7 +1,8 @@
 /* Random numbers with explicit state: PCG32 (O'Neill, pcg-random.org, minimal variant).
  * There is no global generator. Every (pixel, sample) pair gets its own stream, seeded from
  * (seed, pixel index, sample index), so an image is bit-identical whatever the thread count or
- * tile order, and a test can replay one pixel's sample exactly. */
+ * tile order, and a test can replay one pixel's sample exactly.
+ * Parts may not call: none of these (every function here is marked PL_PART_API or static inline). */
 #ifndef PL_RNG_H
 #define PL_RNG_H
 

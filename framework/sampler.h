@@ -1,6 +1,7 @@
 /* Samplers: pure functions from uniform numbers in [0,1)^2 to directions or points, each with a
  * pdf twin that returns the density of the same distribution (per steradian for directions, per
- * unit area for points). Directions are in the local shading frame, where +z is the normal. */
+ * unit area for points). Directions are in the local shading frame, where +z is the normal.
+ * Parts may not call: none of these (every function here is marked PL_PART_API). */
 #ifndef PL_SAMPLER_H
 #define PL_SAMPLER_H
 

@@ -11,7 +11,8 @@
  *   BSDFs, which parts 3 and 4 reach through framework/material.h) are not intercepted: the trace replays them
  *   from what it saw (framework/trace.h says how).
  * PL_SEAM_FRAMEWORK_FUNCTIONS(X): X(name, recorded) for each framework function the parts call;
- *   recorded is 1 when the function logs its result into an active trace itself. */
+ *   recorded is 1 when the function logs its result into an active trace itself.
+ * Parts may not call: none of these (it declares no function). */
 #ifndef PL_SEAM_H
 #define PL_SEAM_H
 

@@ -1,7 +1,8 @@
 /* Status codes and the diagnostics channel.
  * Library functions never print and never exit: they return a pl_status (PL_OK == 0) and put a
  * located message ("scene.dae:212: <polylist>: vcount has 5 entries, count says 6") in a pl_diag.
- * Warnings go through the same channel, so a test can collect them and the CLI can print them. */
+ * Warnings go through the same channel, so a test can collect them and the CLI can print them.
+ * Parts may not call: none of these (every function here is marked PL_PART_API). */
 #ifndef PL_STATUS_H
 #define PL_STATUS_H
 

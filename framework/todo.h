@@ -2,7 +2,9 @@
  * The release replaces each solution with a line such as `return PL_TODO_RGB("3.4", "direct_hemisphere");`.
  * A stub prints "Part 3, task 3.4: direct_hemisphere() is not implemented yet" once per function,
  * counts the call (tests read the count to say "not implemented" instead of "wrong"), and returns
- * a neutral value: magenta for radiance, so a missing part shows in the picture, never as black. */
+ * a neutral value: magenta for radiance, so a missing part shows in the picture, never as black.
+ * Parts may not call: pl_todo_count, pl_todo_reset, pl_todo_handled, pl_todo_last, pl_todo_set_quiet (the
+ * grader refuses them; the functions marked PL_PART_API are theirs). */
 #ifndef PL_TODO_H
 #define PL_TODO_H
 

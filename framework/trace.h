@@ -22,7 +22,8 @@
  * estimator consistent with itself and its samples (a wrong f that stays plausible) it cannot see:
  * the grader's images can (handout/README.md, "What a trace cannot see").
  *
- * The trace's modules and what they share: trace_internal.h. */
+ * The trace's modules and what they share: trace_internal.h.
+ * Parts may not call: any function declared here (the grader refuses them). */
 #ifndef PL_TRACE_H
 #define PL_TRACE_H
 

@@ -7,7 +7,8 @@
  * without their headers, so the random generator, the lights and the render loop include only it,
  * and no framework module the trace itself reads leads back to the trace.
  *
- * Cost when off: one thread-local load and a predicted branch per seam call. */
+ * Cost when off: one thread-local load and a predicted branch per seam call.
+ * Parts may not call: any function declared here (the grader refuses them). */
 #ifndef PL_TRACE_HOOK_H
 #define PL_TRACE_HOOK_H
 

@@ -9,7 +9,8 @@
  * The referee and the density checks judge the parts by the parts' own functions, reached through
  * the framework (material.h, light.h, the seam), never by a copy of a part's formula: a copy would
  * be a second solution to keep equal to the first, and would mark an alternative a handout allows.
- * Test machinery: not part of any assignment. */
+ * Test machinery: not part of any assignment.
+ * Parts may not call: any function declared here (the grader refuses them). */
 #ifndef PL_TRACE_INTERNAL_H
 #define PL_TRACE_INTERNAL_H
 

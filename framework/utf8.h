@@ -1,6 +1,7 @@
 /* UTF-8 text that came from a file pathlab did not write (a film's header, a test's message): how
  * much of it is valid, and a copy of it that is. JSON must be valid UTF-8 (jansson refuses a string
- * that is not, and a refused string would silently drop its entry), and so must any message shown. */
+ * that is not, and a refused string would silently drop its entry), and so must any message shown.
+ * Parts may not call: any function declared here (the grader refuses them). */
 #ifndef PL_UTF8_H
 #define PL_UTF8_H
 

@@ -1,7 +1,8 @@
 /* Vectors and colours: small value types passed by copy.
  * vec3 is a point or direction in metres (world or local shading frame: the caller says which);
  * rgb is linear radiance or reflectance per channel. They are distinct types on purpose, so adding
- * a colour to a position does not compile. */
+ * a colour to a position does not compile.
+ * Parts may not call: none of these (every function here is static inline). */
 #ifndef PL_VEC_H
 #define PL_VEC_H
 

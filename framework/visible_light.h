@@ -22,7 +22,8 @@
  * counts them once. Light sampling finds the light; a shadow ray ends short of it along its normal
  * (spawn.h), so its own triangles never shadow it; a path's later vertices add no emission they
  * land on (part 4); hemisphere sampling (-H) and a mirror's or glass's sample (render.c's
- * one_bounce_radiance) see the triangles' Le instead, as they see a file's quad. */
+ * one_bounce_radiance) see the triangles' Le instead, as they see a file's quad.
+ * Parts may not call: any function declared here (the grader refuses them). */
 #ifndef PL_VISIBLE_LIGHT_H
 #define PL_VISIBLE_LIGHT_H
 

@@ -1,7 +1,8 @@
 /* Test machinery: not part of any assignment.
  * One allow-list, said three times and kept equal: the PL_PART_API marks in the framework's headers
  * (framework/part_api.h), the grader's list (grader/grade_allow.c) and the handout's "What your part
- * may call" (handout/README.md). Run from the repository's top, as make test-grader does. */
+ * may call" (handout/README.md); and each header's own word on what a part may not call. Run from
+ * the repository's top, as make test-grader does. */
 #include "../common/test.h"
 #include "../../grader/grade_allow.h"
 #include <ctype.h>
@@ -127,6 +128,141 @@ static bool mentions(const char *text, const char *name)
     return false;
 }
 
+/* ---- what each header says a part may not call --------------------------------------------- */
+
+/* The header's code alone: comments and preprocessor lines blanked (a line continued by '\' too). */
+static void code_only(char *t)
+{
+    for (char *p = t; *p; p++) {
+        if (p[0] == '/' && p[1] == '*') {
+            char *end = strstr(p + 2, "*/");
+            char *stop = end ? end + 2 : p + strlen(p);
+            for (; p < stop; p++) if (*p != '\n') *p = ' ';
+            p--;
+        } else if (p[0] == '/' && p[1] == '/') {
+            for (; *p && *p != '\n'; p++) *p = ' ';
+            p--;
+        } else if (*p == '#' && (p == t || p[-1] == '\n')) {
+            for (; *p && !(*p == '\n' && p[-1] != '\\'); p++) *p = ' ';
+            p--;
+        }
+    }
+}
+
+/* The functions with external linkage a header declares, split by their PL_PART_API mark, and
+ * whether it has a static inline one. A top-level statement (ended by ';' or by a body's closing
+ * brace; what is inside braces skipped) that is no typedef and holds a '(' declares the identifier
+ * before its first '('. */
+static void header_functions(const char *text, name_list *marked, name_list *unmarked, bool *has_inline)
+{
+    char *t = strdup(text);
+    if (!t) fail_msg("out of memory");
+    code_only(t);
+    *has_inline = false;
+    int depth = 0;
+    char *start = t;
+    for (char *p = t; *p; p++) {
+        if (*p == '{') depth++;
+        if (*p == '}') depth--;
+        bool ends = depth == 0 && (*p == ';' || *p == '}');
+        if (!ends) continue;
+        char *open = memchr(start, '(', (size_t)(p - start));
+        while (start < p && isspace((unsigned char)*start)) start++;
+        char *brace = memchr(start, '{', (size_t)(p - start));
+        if (brace && (!open || brace < open)) open = NULL;  /* a struct's or an enum's body */
+        if (open && strncmp(start, "typedef", 7)) {
+            char *end = open;
+            while (end > start && isspace((unsigned char)end[-1])) end--;
+            char *name = end;
+            while (name > start && (isalnum((unsigned char)name[-1]) || name[-1] == '_')) name--;
+            bool is_static = false, is_marked = false;
+            for (char *w = start; w < name; w++) {
+                if (!strncmp(w, "static", 6)) is_static = true;
+                if (!strncmp(w, "PL_PART_API", 11)) is_marked = true;
+            }
+            if (name == end || name == start || !strncmp(name, "__attribute__", 13)) {
+                /* not a declaration of a named function */
+            } else if (is_static) *has_inline = true;
+            else add_name(is_marked ? marked : unmarked, name, (size_t)(end - name));
+        }
+        start = p + 1;
+    }
+    free(t);
+}
+
+/* The names listed after "Parts may not call: " up to the parenthesis that ends them, with the
+ * comment's line breaks and stars taken out; or the whole phrase when it is not a list. */
+static void said_not_callable(const char *path, const char *text, char *phrase, size_t size, name_list *listed_names)
+{
+    const char *at = strstr(text, "Parts may not call: ");
+    const char *code = strstr(text, "*/");
+    if (!at || (code && at > code))
+        fail_msg("%s: its opening comment never says \"Parts may not call: ...\" (tests/grader/test_allow.c says how)", path);
+    at += strlen("Parts may not call: ");
+    size_t n = 0;
+    for (; *at && *at != '(' && n + 1 < size; at++) {
+        if (*at == '\n') {
+            while (at[1] == ' ' || at[1] == '*') at++;
+            phrase[n++] = ' ';
+        } else phrase[n++] = *at;
+    }
+    while (n > 0 && phrase[n - 1] == ' ') n--;
+    phrase[n] = '\0';
+    for (const char *p = phrase; *p;) {
+        size_t len = strcspn(p, ",");
+        add_name(listed_names, p, len);
+        p += len;
+        while (*p == ',' || *p == ' ') p++;
+    }
+}
+
+/* Every framework header says in its opening comment which of its functions a part may not call,
+ * and says it truly: "none of these" where every function is marked or static inline, "any function
+ * declared here" where none is marked, else the unmarked ones by name, each of them. So a student
+ * reading envmap.h learns that envmap_texel_coords is the framework's, before the grader says so. */
+static void test_allowlist__every_header_says_what_parts_may_not_call(void **state)
+{
+    DIR *d = opendir("framework");
+    if (!d) fail_msg("cannot open framework/ (run from the repository's top)");
+    int headers = 0;
+    for (struct dirent *e; (e = readdir(d));) {
+        size_t n = strlen(e->d_name);
+        if (n < 3 || strcmp(e->d_name + n - 2, ".h")) continue;
+        char path[300];
+        snprintf(path, sizeof path, "framework/%s", e->d_name);
+        char *text = slurp(path);
+        name_list marked = {0}, unmarked = {0}, said = {0};
+        bool has_inline;
+        header_functions(text, &marked, &unmarked, &has_inline);
+        char phrase[2048];
+        said_not_callable(path, text, phrase, sizeof phrase, &said);
+        free(text);
+        if (unmarked.count == 0) {
+            if (strcmp(phrase, "none of these"))
+                fail_msg("%s: every function it declares is marked PL_PART_API or static inline, so it should say "
+                         "\"Parts may not call: none of these\", not \"%s\"", path, phrase);
+        } else if (marked.count == 0) {
+            if (strncmp(phrase, "any function declared here", strlen("any function declared here")))
+                fail_msg("%s: no function it declares is marked PL_PART_API (%s is one), so it should say \"Parts may "
+                         "not call: any function declared here\", not \"%s\"", path, unmarked.name[0], phrase);
+            if (!has_inline && strcmp(phrase, "any function declared here"))
+                fail_msg("%s: it has no static inline function, yet says \"%s\"", path, phrase);
+        } else {
+            for (int i = 0; i < unmarked.count; i++)
+                if (!listed(&said, unmarked.name[i]))
+                    fail_msg("%s declares %s without PL_PART_API, but its \"Parts may not call:\" list leaves it out",
+                             path, unmarked.name[i]);
+            for (int i = 0; i < said.count; i++)
+                if (!listed(&unmarked, said.name[i]))
+                    fail_msg("%s: its \"Parts may not call:\" list names %s, which it does not declare unmarked", path,
+                             said.name[i]);
+        }
+        headers++;
+    }
+    closedir(d);
+    if (headers < 20) fail_msg("only %d headers found in framework/", headers);
+}
+
 /* ---- the tests ------------------------------------------------------------------------------ */
 
 /* The grader's framework list is exactly the marked declarations: a mark without an entry would
@@ -172,11 +308,34 @@ static void test_allowlist__the_handout_names_what_exists(void **state)
     if (stale[0]) fail_msg("handout/README.md's \"What your part may call\" names what no framework header has:%s", stale);
 }
 
+/* The reader of declarations above, on a header made to hold each shape it must tell apart: had it
+ * missed a declaration, the test above would pass a header that hides one. */
+static void test_allowlist__the_declaration_reader_sees_each_shape(void **state)
+{
+    const char *text = "/* x */\n#define M(a) f(a)\ntypedef struct { int (*cb)(void); } s;\n"
+                       "PL_PART_API bool marked_one(int a);\nPL_PART_API\nfloat marked_two(void);\n"
+                       "void plain(const s *x,\n           int y) __attribute__((nonnull));\n"
+                       "static inline int helper(int a) { return g(a); }\nenum { A, B };\nextern int counter;\n"
+                       "/* void commented(void); */\nint *pointer_back(void);\n";
+    name_list marked = {0}, unmarked = {0};
+    bool has_inline = false;
+    header_functions(text, &marked, &unmarked, &has_inline);
+    assert_int_equal(2, marked.count);
+    assert_string_equal("marked_one", marked.name[0]);
+    assert_string_equal("marked_two", marked.name[1]);
+    assert_int_equal(2, unmarked.count);
+    assert_string_equal("plain", unmarked.name[0]);
+    assert_string_equal("pointer_back", unmarked.name[1]);
+    assert_true(has_inline);
+}
+
 int allow_tests(void)
 {
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(test_allowlist__equals_the_part_api_marks),
         cmocka_unit_test(test_allowlist__the_handout_names_what_exists),
+        cmocka_unit_test(test_allowlist__every_header_says_what_parts_may_not_call),
+        cmocka_unit_test(test_allowlist__the_declaration_reader_sees_each_shape),
     };
     return cmocka_run_group_tests_name("grader: one allow-list (PL_PART_API, grade_allow.c, the handout)", tests,
                                        NULL, NULL);
