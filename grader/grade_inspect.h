@@ -1,7 +1,7 @@
 /* Grader machinery: not part of any assignment.
  * The object inspection: a part's compiled objects read as data, by allow-list, before anything
  * links or runs them (grade_inspect.c says what is allowed and why). The grader runs it on a
- * submission, confined (grade_inspect_part); a student's own `make test-partN` runs the same checks
+ * submission, confined (grade_inspect_part); a student's own `make test-part<N>` runs the same checks
  * on their objects in their own tree (bin/inspect-part), with the same words. */
 #ifndef PL_GRADE_INSPECT_H
 #define PL_GRADE_INSPECT_H

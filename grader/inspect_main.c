@@ -1,6 +1,6 @@
 /* Grader machinery: not part of any assignment.
  * bin/inspect-part: the autograder's object inspection (grade_inspect.c), on a student's own tree,
- * so that `make test-partN` refuses what the grader refuses, with the grader's words, before the
+ * so that `make test-part<N>` refuses what the grader refuses, with the grader's words, before the
  * suite runs. make compiles the part's files once more as the grader does (no link-time
  * optimisation, so the objects hold machine code) and runs
  *

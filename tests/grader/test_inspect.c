@@ -113,7 +113,7 @@ static void test_inspect__a_local_name_never_defines_an_external_one(void **stat
     grade_inspect_verdict v = inspect(objs, 2, words, sizeof words);
     assert_int_equal(GRADE_INSPECT_CALL, v.code);
     assert_int_equal(0, v.object);
-    if (!strstr(words, "parts/p/a.c: calls 'open', a C library function"))
+    if (!strstr(words, "parts" "/p/a.c: calls 'open', a C library function"))
         fail_msg("expected the words to name the library's open, got '%s'", words);
 }
 

@@ -574,7 +574,7 @@ static void test_layout__each_check_refuses_a_planted_break(void **state)
 /* ---- the repository's layout (README.md) -------------------------------------------------------- */
 
 /* The root README's Layout section comes right after its two commands, and its block lists exactly the
- * top-level folders of this tree (a release's too: course/ is the instructor's paragraph's, which a
+ * top-level folders of this tree (a release's too: course/ has a paragraph of its own, which a
  * release drops with the folder; what make builds is nobody's to list). */
 static void test_layout__the_readme_lists_every_top_level_folder(void **state)
 {

@@ -99,7 +99,7 @@ static double sah_cost(const bvh *b)
  * the bunny, then a 20,000-primitive soup at leaf sizes 4 and 1: the solution's binned SAH 0.48,
  * 0.69, 0.74; a full-sweep SAH 0.41, 0.68, 0.72; the object median 1.00 (this very split). A tree
  * that keeps every invariant but splits in the primitives' order, not in space, costs 6.2 times the
- * median's on the bunny (course/mutants/part2-splits-in-index-order.patch). */
+ * median's on the bunny. */
 #define SAH_WORSE_THAN_MEDIAN 1.5
 
 static void check_sah_cost(const scene *s, int max_leaf_size, const char *what)
