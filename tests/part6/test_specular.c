@@ -115,7 +115,7 @@ static bool close_vec(vec3 a, vec3 b)
 
 /* ---- the solution's own earlier tasks, to judge a later one with --------------------------------- */
 /* Tasks 6.2, 6.4 and 6.5 call 6.1, 6.3, 6.2 and 6.4 in the same file, so no test can hand them the
- * course's versions. A sample that is not the closed form's passes when it is what this solution's
+ * course's versions. A sample that is not the closed form's passes when it is what the candidate's
  * own earlier task gives for the same wo: a mistake of 6.1 or 6.3 costs that task alone, and the
  * later task is judged on how it uses it. Asked once per wo, and only where the closed form fails. */
 typedef struct {
@@ -153,7 +153,7 @@ static const own_tasks *ask_own(own_tasks *o)
     return o;
 }
 
-/* Whether wi is the refraction this solution's own refract (6.3) gives for o's wo. */
+/* Whether wi is the refraction the candidate's own refract (6.3) gives for o's wo. */
 static bool own_refraction(own_tasks *o, vec3 wi) { return ask_own(o)->refracts && close_vec(wi, o->refracted); }
 
 /* ---- 6.1, 6.2: the mirror ------------------------------------------------------------------- */

@@ -229,7 +229,7 @@ static double half_angle(vec3 wo, vec3 wi)
     return acos(h[2]) * 180.0 / M_PI;
 }
 
-/* microfacet_f as this solution's own tasks 7.1-7.3 make it, channel c: a mistake of theirs is theirs
+/* microfacet_f as the candidate's own tasks 7.1-7.3 make it, channel c: a mistake of theirs is theirs
  * alone, and 7.4 is judged on how it puts them together. Called only where the closed form fails. */
 static double own_f(const material *m, vec3 wo, vec3 wi, int c)
 {
@@ -313,7 +313,7 @@ static void test_microfacet_pdf__matches_the_closed_form(void **state)
             assert_implemented();
             double want = ref_pdf(alphas[a], wo, wi), peak = ref_pdf(alphas[a], wo, vec3_make(-wo.x, -wo.y, wo.z));
             if (near(got, want, 2e-4, 1e-6 * peak)) continue;
-            /* This solution's own D (task 7.1) put together right is 7.5's part done. */
+            /* The candidate's own D (task 7.1) put together right is 7.5's part done. */
             double h[3];
             half_vector(wo, wi, h);
             float D = beckmann_d(m.alpha, vec3_make((float)h[0], (float)h[1], (float)h[2]));
@@ -439,7 +439,7 @@ static void check_sampler(double alpha, double theta_o_deg, uint64_t seed)
             PL_FAIL("wrong: microfacet_sample_f's pdf %g and f %g for its wi (wi.z %.4f) are not microfacet_pdf's %g and "
                     "microfacet_f's %g there (handout/part7.md, 7.6)", (double)pdf, (double)f.g, (double)wi.z,
                     (double)own_pdf, (double)own_f.g);
-        /* The weight by the closed forms, not by this solution's f and pdf (checked above against its
+        /* The weight by the closed forms, not by the candidate's f and pdf (checked above against its
          * own tasks 7.4 and 7.5): the furnace judges the directions 7.6 draws, and a mistake in 7.1-7.5
          * costs their own points, not 7.6's. */
         double ref = ref_pdf(alpha, wo, wi);

@@ -571,7 +571,7 @@ static void test_env_sample_importance__pdf_and_radiance_are_the_directions(void
         /* sin(theta) from the direction itself: acos loses its digits near a pole. */
         double sin_theta = hypot(wi.x, wi.z) / vec3_length(wi);
         double want = texel_p(&d, x, y) * 16.0 * 8.0 / (2.0 * M_PI * M_PI * sin_theta);
-        /* The closed form, or this solution's own env_pdf at the direction, as the contract allows: a
+        /* The closed form, or the candidate's own env_pdf at the direction, as the contract allows: a
          * mistake of task 8.3's is its own. */
         double slack = 1e-3 + pole_rounding(sin_theta);
         if (!(fabs(pdf - want) <= slack * want) && !(fabs(pdf - env_pdf(&e, &d, wi)) <= slack * fabs(pdf))) {
