@@ -15,7 +15,7 @@
  *   pdf of two atoms).
  * Tasks 6.2, 6.4 and 6.5 call earlier ones in the same file (reflect, refract, mirror_sample_f,
  * refraction_sample_f), so no test can give them the course's: a sample that is not the closed form's
- * passes when it is what the solution's own earlier task gives for the same wo (own_tasks), and a
+ * passes when it is what the candidate's own earlier task gives for the same wo (own_tasks), and a
  * mistake of 6.1 or 6.3 costs that task alone.
  * Only weights f |cos| / pdf are checked, never f or pdf alone: a mirror sample with pdf 1 or any
  * other pdf and the matching f is the same sample. The radiance scale of a refraction may be eta^2
@@ -113,7 +113,7 @@ static bool close_vec(vec3 a, vec3 b)
     return close_dir(a, c);
 }
 
-/* ---- the solution's own earlier tasks, to judge a later one with --------------------------------- */
+/* ---- the candidate's own earlier tasks, to judge a later one with --------------------------------- */
 /* Tasks 6.2, 6.4 and 6.5 call 6.1, 6.3, 6.2 and 6.4 in the same file, so no test can hand them the
  * course's versions. A sample that is not the closed form's passes when it is what the candidate's
  * own earlier task gives for the same wo: a mistake of 6.1 or 6.3 costs that task alone, and the
@@ -292,7 +292,7 @@ static void check_refraction_weight(const char *fn, own_tasks *o, rgb w, rgb t, 
     if (fabs(eta - 1.0) > 1e-3) *convention = c;
 }
 
-/* Checks one refracted sample: the direction (Snell's, or the solution's own refract's) and its
+/* Checks one refracted sample: the direction (Snell's, or the candidate's own refract's) and its
  * weight. */
 static void check_refracted(const char *fn, own_tasks *o, vec3 wi, rgb w, rgb t, int *convention)
 {

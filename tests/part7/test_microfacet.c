@@ -18,7 +18,7 @@
  *   over the hemisphere (a furnace test: a sampler whose directions do not average to the albedo
  *   adds or loses energy), by t test.
  * Tasks 7.4 and 7.5 put earlier tasks together; the same file holds them, so no test can hand them
- * the course's D, F and G. A value that matches what the solution's own 7.1-7.3 return, put
+ * the course's D, F and G. A value that matches what the candidate's own 7.1-7.3 return, put
  * together right, passes as well as the closed form: a mistake in 7.1-7.3 costs only its own task.
  * Nothing depends on the order of a sampler's draws or on which of u.x and u.y picks the angle: the
  * samples are judged as a distribution.

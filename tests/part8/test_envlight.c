@@ -13,7 +13,7 @@
  * in (theta, phi) within a texel (chi-square over 2 x 2 cells of each texel; the messages compare
  * each direction with the texel its u draws by the contract, to tell the texel choice from the point
  * within it, a texel's corner and rows in reverse order); the pdf and radiance it returns are those
- * of the direction (the pdf the closed form's, or the solution's own env_pdf's there: the contract
+ * of the direction (the pdf the closed form's, or the candidate's own env_pdf's there: the contract
  * lets 8.4 call 8.3, whose mistakes are then 8.3's alone); weighed by the closed forms, its
  * directions give the irradiance of a constant map and of a map with a sun, and on the sun's map a
  * variance far below uniform sampling's.
