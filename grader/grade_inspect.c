@@ -224,6 +224,11 @@ static int section_kind(const GElf_Shdr *sh, const char *name)
         return GRADE_INSPECT_BEFORE_MAIN;
     if (starts(name, ".gnu.lto_") || starts(name, ".gnu.debuglto_") || starts(name, ".llvm.lto") || !strcmp(name, ".llvmbc"))
         return GRADE_INSPECT_BYTECODE;
+    /* Clang's address-significance table (the symbols whose address is taken, read by the linker
+     * to fold identical code safely) is marked SHF_EXCLUDE and nothing else: data for the linker,
+     * never part of a program. That table, with exactly that flag, is the one use of it let through. */
+    if (sh->sh_type == SHT_LLVM_ADDRSIG)
+        return !strcmp(name, ".llvm_addrsig") && sh->sh_flags == SHF_EXCLUDE ? GRADE_INSPECT_OK : GRADE_INSPECT_SECTION;
     if (sh->sh_flags & ~(GElf_Xword)PLAIN_FLAGS) return GRADE_INSPECT_SECTION;
     bool code = named(name, ".text");
     if ((sh->sh_flags & SHF_EXECINSTR) && (!code || (sh->sh_flags & SHF_WRITE))) return GRADE_INSPECT_SECTION;
@@ -243,7 +248,6 @@ static int section_kind(const GElf_Shdr *sh, const char *name)
     case SHT_STRTAB: ok = !strcmp(name, ".strtab") || !strcmp(name, ".shstrtab"); break;
     case SHT_GROUP: ok = !strcmp(name, ".group"); break;
     case SHT_X86_64_UNWIND: ok = !strcmp(name, ".eh_frame"); break;
-    case SHT_LLVM_ADDRSIG: ok = !strcmp(name, ".llvm_addrsig"); break;
     default: ok = false;
     }
     return ok ? GRADE_INSPECT_OK : GRADE_INSPECT_SECTION;

@@ -16,7 +16,7 @@ fail() { echo "test-fresh-build: FAILED: $*"; exit 1; }
 need clang clang test-fresh-build
 rm -rf "$scratch"
 mkdir -p "$scratch"
-(cd "$root" && cp -a Makefile framework parts tests scenes third_party tools "$scratch"/)
+(cd "$root" && cp -a Makefile framework grader parts tests scenes third_party tools "$scratch"/)  # grader: make test-part<N> inspects the part first (bin/inspect-part)
 cd "$scratch" || exit 1
 file=parts/part5_adaptive/adaptive.c
 cp -p "$file" right.c

@@ -28,9 +28,9 @@ static const grade_inspect_course *the_course(void)
     return &course;
 }
 
-/* Compiles source (one file's text) into scratch/<name>.o with the graded build's kind of flags
- * (no LTO unless extra says so); fails the test when the compiler refuses it. */
-static const char *compile(const char *name, const char *source, const char *extra)
+/* Compiles source (one file's text) into scratch/<name>.o with compiler cc and the graded build's
+ * kind of flags (no LTO unless extra says so); fails the test when the compiler refuses it. */
+static const char *compile_with(const char *cc, const char *name, const char *source, const char *extra)
 {
     static char objects[8][300];
     static int next;
@@ -39,10 +39,15 @@ static const char *compile(const char *name, const char *source, const char *ext
     snprintf(src, sizeof src, "%s/%s.c", scratch, name);
     snprintf(obj, 300, "%s/%s.o", scratch, name);
     scratch_write(src, source);
-    snprintf(cmd, sizeof cmd, "cc -std=c11 -O2 -g -Wno-attributes %s -c %s -o %s 2>%s/%s.log", extra ? extra : "", src,
-             obj, scratch, name);
+    snprintf(cmd, sizeof cmd, "%s -std=c11 -O2 -g -Wno-attributes %s -c %s -o %s 2>%s/%s.log", cc, extra ? extra : "",
+             src, obj, scratch, name);
     if (system(cmd) != 0) fail_msg("the compiler refused %s (%s/%s.log)", name, scratch, name);
     return obj;
+}
+
+static const char *compile(const char *name, const char *source, const char *extra)
+{
+    return compile_with("cc", name, source, extra);
 }
 
 /* The verdict on the given objects, and its words in *words. */
@@ -86,6 +91,25 @@ static void test_inspect__plain_c_of_every_usual_kind_passes(void **state)
                "static double g(double *a, int n) { qsort(a, (size_t)n, sizeof *a, 0); return a[0]; }\n"
                "double (*use_g)(double *, int) = g;\n",
                NULL, GRADE_INSPECT_OK, NULL);
+}
+
+/* Clang's objects of plain C pass too: a student's laptop may build with it (macOS's cc is clang),
+ * and make test-part<N> inspects what it built. Clang adds an address-significance table
+ * (.llvm_addrsig, marked SHF_EXCLUDE) that GCC's objects never hold. Skipped without clang. */
+static void test_inspect__plain_c_compiled_by_clang_passes(void **state)
+{
+    (void)state;
+    if (system("command -v clang >/dev/null 2>&1") != 0) skip();
+    const char *obj = compile_with("clang", "plain_clang",
+                                   "#include <math.h>\n#include <stdlib.h>\n#include <string.h>\n"
+                                   "static int counter;\nint helper(int x) { return x * 2; }\n"
+                                   "float f(float x) { counter++; char *p = malloc(16); memset(p, 0, 16); free(p);\n"
+                                   "  return sqrtf(x) + (float)helper(counter); }\n"
+                                   "static int g(int a) { return a + 1; }\nint (*use_g)(int) = g;\n",
+                                   "-g");
+    char words[768];
+    grade_inspect_verdict v = inspect(&obj, 1, words, sizeof words);
+    if (v.code != GRADE_INSPECT_OK) fail_msg("clang's object of plain C was refused: %s", words);
 }
 
 /* A global of one file is the part's own for the others: a helper shared by two files. */
@@ -202,6 +226,13 @@ static void test_inspect__sections_of_other_kinds_are_refused(void **state)
     /* Executable data, by flags spliced into the assembler's directive. */
     expect_one("exec_data", "__attribute__((section(\".data.x,\\\"awx\\\",@progbits#\"), used)) static int x = 1;\n",
                NULL, GRADE_INSPECT_SECTION, NULL);
+    /* Clang's table's name on data of another kind, or on data the program would load: the name
+     * alone earns nothing (the table is let through by its type and its flag, excluded from links). */
+    expect_one("fake_addrsig", "__attribute__((section(\".llvm_addrsig\"), used)) static int x = 1;\n", NULL,
+               GRADE_INSPECT_SECTION, NULL);
+    expect_one("fake_addrsig_loaded",
+               "__asm__(\".section .llvm_addrsig,\\\"ae\\\",@0x6fff4c03\\n.long 1\\n.text\");\n", NULL,
+               GRADE_INSPECT_SECTION, NULL);
     expect_one("lto", "int f(int x) { return x + 1; }\n", "-flto", GRADE_INSPECT_BYTECODE, "bytecode");
 }
 
@@ -239,6 +270,7 @@ int inspect_tests(void)
 {
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(test_inspect__plain_c_of_every_usual_kind_passes),
+        cmocka_unit_test(test_inspect__plain_c_compiled_by_clang_passes),
         cmocka_unit_test(test_inspect__a_global_of_another_file_of_the_part_may_be_called),
         cmocka_unit_test(test_inspect__a_local_name_never_defines_an_external_one),
         cmocka_unit_test(test_inspect__an_unknown_name_is_described_never_quoted),
