@@ -96,7 +96,7 @@ int grade_calibrate(const grade_env *env, const grade_run_plan *rp, const grade_
         char why[512] = "out of memory";
         /* This tree's own plan (no submission): its cases render with its own renderer. */
         if (!plan || !grade_plan_part(env, rp, &spec->parts[n - 1], NULL, 0, plan, why, sizeof why) ||
-            !grade_guard_child_dir(plan->work, NULL, false)) {
+            !grade_guard_own_dir(plan->work)) {
             fprintf(stderr, "grade: part %d: %s\n", n, plan && plan->work[0] ? plan->work : why);
             grade_plan_free(plan);
             free(plan);

@@ -51,6 +51,11 @@ bool grade_guard_child_dir(const char *path, const grade_sandbox *s, bool contai
     return !(contained && s->as_other_user) || chown(path, s->uid, s->gid) == 0;
 }
 
+bool grade_guard_own_dir(const char *path)
+{
+    return grade_guard_child_dir(path, NULL, false) && chmod(path, 0700) == 0;
+}
+
 int grade_guard_open_child_file(const char *path, long max_bytes)
 {
     int fd = open(path, O_RDONLY | O_NOFOLLOW | O_NONBLOCK | O_CLOEXEC);

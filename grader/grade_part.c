@@ -68,7 +68,7 @@ void grade_part_case(const grade_plan *plan, const grade_env *env, const grade_s
 /* The part's own folder (its logs and films): the grader's alone; the children get the sandbox's. */
 static bool part_folder(const grade_plan *plan)
 {
-    return grade_guard_child_dir(plan->work, NULL, false) && chmod(plan->work, 0700) == 0;
+    return grade_guard_own_dir(plan->work);
 }
 
 void grade_part(const grade_env *env, const grade_run_plan *rp, const grade_spec *spec, const grade_part_spec *p,
