@@ -4,6 +4,7 @@
  * may call" (handout/README.md); and each header's own word on what a part may not call. Run from
  * the repository's top, as make test-grader does. */
 #include "../common/test.h"
+#include "../common/c_text.h"
 #include "../../grader/grade_allow.h"
 #include <ctype.h>
 #include <dirent.h>
@@ -130,34 +131,14 @@ static bool mentions(const char *text, const char *name)
 
 /* ---- what each header says a part may not call --------------------------------------------- */
 
-/* The header's code alone: comments and preprocessor lines blanked (a line continued by '\' too). */
-static void code_only(char *t)
-{
-    for (char *p = t; *p; p++) {
-        if (p[0] == '/' && p[1] == '*') {
-            char *end = strstr(p + 2, "*/");
-            char *stop = end ? end + 2 : p + strlen(p);
-            for (; p < stop; p++) if (*p != '\n') *p = ' ';
-            p--;
-        } else if (p[0] == '/' && p[1] == '/') {
-            for (; *p && *p != '\n'; p++) *p = ' ';
-            p--;
-        } else if (*p == '#' && (p == t || p[-1] == '\n')) {
-            for (; *p && !(*p == '\n' && p[-1] != '\\'); p++) *p = ' ';
-            p--;
-        }
-    }
-}
-
 /* The functions with external linkage a header declares, split by their PL_PART_API mark, and
  * whether it has a static inline one. A top-level statement (ended by ';' or by a body's closing
  * brace; what is inside braces skipped) that is no typedef and holds a '(' declares the identifier
  * before its first '('. */
 static void header_functions(const char *text, name_list *marked, name_list *unmarked, bool *has_inline)
 {
-    char *t = strdup(text);
+    char *t = c_text_code(text, true);
     if (!t) fail_msg("out of memory");
-    code_only(t);
     *has_inline = false;
     int depth = 0;
     char *start = t;

@@ -4,6 +4,7 @@
  * rule is a test here. The sources are read with comments and string contents blanked where a rule
  * is about code (a comment that mentions grade_path is not a call). */
 #include "../common/test.h"
+#include "../common/c_text.h"
 #include "../../framework/file.h"
 #include <ctype.h>
 #include <dirent.h>
@@ -91,28 +92,8 @@ static bool quiet;
 /* text with comments, strings and character constants blanked (their quotes kept), the same length. */
 static char *code_of(const char *text)
 {
-    char *c = strdup(text);
+    char *c = c_text_code(text, false);
     assert_non_null(c);
-    for (char *p = c; *p; p++) {
-        if (p[0] == '/' && p[1] == '*') {
-            char *end = strstr(p + 2, "*/");
-            char *stop = end ? end + 2 : p + strlen(p);
-            for (; p < stop; p++) if (*p != '\n') *p = ' ';
-            p--;
-        }
-        else if (p[0] == '/' && p[1] == '/') {
-            for (; *p && *p != '\n'; p++) *p = ' ';
-            p--;
-        }
-        else if (*p == '"' || *p == '\'') {
-            char q = *p++;
-            for (; *p && *p != q; p++) {
-                if (*p == '\\' && p[1]) *p++ = ' ';
-                if (*p != '\n') *p = ' ';
-            }
-            if (!*p) break;
-        }
-    }
     return c;
 }
 
